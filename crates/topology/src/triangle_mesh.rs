@@ -1,0 +1,120 @@
+//! `TriangleMesh`: a polyhedral shape of triangular facets (section 4.2,
+//! "Triangle mesh").
+
+use crate::mesh::check_shape_closure;
+use crate::{validate_points, Facet, PolygonMesh, TopologyError};
+use robust_arith::Point3;
+
+/// A polyhedral shape as vertices and triangles. Each triangle `[a, b, c]`
+/// has the half-edges `a->b`, `b->c`, `c->a` and faces the side from which
+/// they run anticlockwise.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct TriangleMesh {
+    /// The vertex positions.
+    pub vertices: Vec<Point3>,
+    /// The triangles, as vertex indices.
+    pub triangles: Vec<[u32; 3]>,
+}
+
+impl TriangleMesh {
+    /// A mesh from vertices and triangles (unchecked).
+    pub fn new(vertices: Vec<Point3>, triangles: Vec<[u32; 3]>) -> Self {
+        TriangleMesh {
+            vertices,
+            triangles,
+        }
+    }
+
+    /// Checks the data definitions and shape boundary closure (section 4.2).
+    /// The triangular facet loop constraint holds by construction.
+    pub fn check_topology(&self) -> Result<(), TopologyError> {
+        let n = self.vertices.len() as u32;
+        for (ti, t) in self.triangles.iter().enumerate() {
+            for &v in t {
+                if v >= n {
+                    return Err(TopologyError::DanglingIndex {
+                        entity: "triangle",
+                        entity_index: ti as u32,
+                        vertex: v,
+                        vertex_count: n,
+                    });
+                }
+            }
+        }
+        check_shape_closure(
+            self.triangles
+                .iter()
+                .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])]),
+        )
+    }
+
+    /// Checks every coordinate (finite, at most `f64::MAX / 4`).
+    pub fn validate_coordinates(&self) -> Result<(), TopologyError> {
+        validate_points(&self.vertices)
+    }
+
+    /// The same shape as a polygon mesh with one facet per triangle.
+    pub fn to_polygon_mesh(&self) -> PolygonMesh {
+        PolygonMesh::new(
+            self.vertices.clone(),
+            self.triangles.iter().map(|t| Facet::from_loop(t)).collect(),
+        )
+    }
+
+    /// The signed volume (divergence theorem, f64; positive for a closed
+    /// outward-facing shape).
+    pub fn signed_volume(&self) -> f64 {
+        let mut six = 0.0;
+        for t in &self.triangles {
+            let [a, b, c] = t.map(|i| self.vertices[i as usize]);
+            six += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                + a[2] * (b[0] * c[1] - b[1] * c[0]);
+        }
+        six / 6.0
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn tetra() -> TriangleMesh {
+        TriangleMesh::new(
+            vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]],
+            vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+        )
+    }
+
+    #[test]
+    fn tetrahedron_is_closed_with_volume_one_sixth() {
+        let t = tetra();
+        assert_eq!(t.check_topology(), Ok(()));
+        assert_eq!(t.signed_volume(), 1.0 / 6.0);
+        assert_eq!(t.to_polygon_mesh().check_topology(), Ok(()));
+    }
+
+    #[test]
+    fn flipped_triangle_is_rejected() {
+        let mut t = tetra();
+        t.triangles[0] = [0, 1, 2];
+        assert!(matches!(
+            t.check_topology(),
+            Err(TopologyError::ShapeClosure3 { .. })
+        ));
+    }
+
+    #[test]
+    fn dangling_triangle_index_is_named() {
+        let mut t = tetra();
+        t.triangles[3][1] = 9;
+        assert!(matches!(
+            t.check_topology(),
+            Err(TopologyError::DanglingIndex {
+                entity: "triangle",
+                entity_index: 3,
+                vertex: 9,
+                ..
+            })
+        ));
+    }
+}
