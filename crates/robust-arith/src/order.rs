@@ -17,7 +17,9 @@ use std::cmp::Ordering;
 #[inline]
 pub fn lex_cmp<const N: usize>(a: &[f64; N], b: &[f64; N]) -> Ordering {
     for i in 0..N {
-        let o = a[i].partial_cmp(&b[i]).unwrap_or_else(|| a[i].total_cmp(&b[i]));
+        let o = a[i]
+            .partial_cmp(&b[i])
+            .unwrap_or_else(|| a[i].total_cmp(&b[i]));
         if o != Ordering::Equal {
             return o;
         }

@@ -161,9 +161,15 @@ mod tests {
         assert_eq!(w([1.0, -1.0]), 0);
         // Clockwise square: -1.
         let cw: Vec<_> = sq.iter().map(|&(s, e)| (e, s)).collect();
-        assert_eq!(x02(&[1.0, 1.0], cw.iter().copied()).unwrap().unwrap().value, -1);
+        assert_eq!(
+            x02(&[1.0, 1.0], cw.iter().copied()).unwrap().unwrap().value,
+            -1
+        );
         // X20 of the same square and vertex agrees in the interior.
-        assert_eq!(x20(sq.iter().copied(), &[1.0, 1.0]).unwrap().unwrap().value, 1);
+        assert_eq!(
+            x20(sq.iter().copied(), &[1.0, 1.0]).unwrap().unwrap().value,
+            1
+        );
     }
 
     #[test]
@@ -201,7 +207,9 @@ mod tests {
     fn x02_in_3d_interpolates_the_facet_height() {
         let tri = [[0.0, 0.0, 1.0], [4.0, 0.0, 1.0], [0.0, 4.0, 3.0]];
         let facet: Vec<_> = (0..3).map(|i| (tri[i], tri[(i + 1) % 3])).collect();
-        let h = x02(&[1.0, 1.0, 0.0], facet.iter().copied()).unwrap().unwrap();
+        let h = x02(&[1.0, 1.0, 0.0], facet.iter().copied())
+            .unwrap()
+            .unwrap();
         assert_eq!(h.value, 1);
         assert_eq!(h.a, [1.0, 1.0, 0.0]);
         assert_eq!([h.b[0], h.b[1]], [1.0, 1.0]);

@@ -72,18 +72,16 @@ impl Facet {
             let mut ring = vec![start];
             let mut at = self.half_edges[first].end;
             while at != start {
-                let next = outgoing
-                    .get_mut(&at)
-                    .and_then(|l| {
-                        while let Some(&i) = l.last() {
-                            if used[i] {
-                                l.pop();
-                            } else {
-                                return Some(i);
-                            }
+                let next = outgoing.get_mut(&at).and_then(|l| {
+                    while let Some(&i) = l.last() {
+                        if used[i] {
+                            l.pop();
+                        } else {
+                            return Some(i);
                         }
-                        None
-                    });
+                    }
+                    None
+                });
                 match next {
                     Some(i) => {
                         used[i] = true;

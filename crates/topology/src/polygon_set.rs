@@ -412,7 +412,16 @@ mod tests {
         .iter()
         .map(|&q| s.add_vertex(q))
         .collect();
-        for (a, b) in [(0, 1), (1, 2), (2, 3), (3, 4), (4, 5), (5, 2), (2, 6), (6, 0)] {
+        for (a, b) in [
+            (0, 1),
+            (1, 2),
+            (2, 3),
+            (3, 4),
+            (4, 5),
+            (5, 2),
+            (2, 6),
+            (6, 0),
+        ] {
             s.add_edge(v[a], v[b]);
         }
         assert!(s.check_topology().is_ok());

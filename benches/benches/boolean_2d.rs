@@ -1,0 +1,2 @@
+//! 2D Boolean benchmarks (being written).
+fn main() {}

@@ -1,0 +1,2 @@
+//! The `umbra` command-line tool (being written).
+fn main() {}

@@ -1,0 +1,1 @@
+//! Umbra facade (being written).

@@ -1,0 +1,2 @@
+//! Umbra developer tasks (being written).
+fn main() {}
