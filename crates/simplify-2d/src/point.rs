@@ -1,0 +1,64 @@
+//! The point key of the sweep: a 2D point with the lexicographic order of
+//! section 7.1.2 as a total order, usable as a map key.
+
+use std::cmp::Ordering;
+use std::hash::{Hash, Hasher};
+
+/// A point ordered lexicographically (x first, then y). Constructed through
+/// [`Pt::new`], which turns `-0.0` into `+0.0` so that the IEEE total order
+/// used for comparison agrees with `==` on finite values. Coordinates are
+/// validated finite before any `Pt` is built.
+#[derive(Clone, Copy, Debug)]
+pub(crate) struct Pt {
+    pub(crate) x: f64,
+    pub(crate) y: f64,
+}
+
+impl Pt {
+    /// A normalised point (`-0.0 + 0.0 == +0.0` in round-to-nearest).
+    #[inline]
+    pub(crate) fn new(p: [f64; 2]) -> Pt {
+        Pt {
+            x: p[0] + 0.0,
+            y: p[1] + 0.0,
+        }
+    }
+
+    /// The coordinates as an array.
+    #[inline]
+    pub(crate) fn arr(self) -> [f64; 2] {
+        [self.x, self.y]
+    }
+}
+
+impl PartialEq for Pt {
+    #[inline]
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl Eq for Pt {}
+
+impl PartialOrd for Pt {
+    #[inline]
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl Ord for Pt {
+    #[inline]
+    fn cmp(&self, other: &Self) -> Ordering {
+        self.x
+            .total_cmp(&other.x)
+            .then_with(|| self.y.total_cmp(&other.y))
+    }
+}
+
+impl Hash for Pt {
+    fn hash<H: Hasher>(&self, state: &mut H) {
+        self.x.to_bits().hash(state);
+        self.y.to_bits().hash(state);
+    }
+}
