@@ -29,6 +29,31 @@ use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::{interpolate, y_at_x};
 use std::collections::{BTreeMap, HashMap};
+use std::hash::{BuildHasherDefault, Hasher};
+
+/// A small multiplicative hasher for point keys (two `u64` bit patterns):
+/// the vertex map is on the hot path and needs no DoS resistance.
+#[derive(Default)]
+struct PointHasher(u64);
+
+impl Hasher for PointHasher {
+    #[inline]
+    fn finish(&self) -> u64 {
+        self.0
+    }
+    #[inline]
+    fn write(&mut self, bytes: &[u8]) {
+        for &b in bytes {
+            self.write_u64(u64::from(b));
+        }
+    }
+    #[inline]
+    fn write_u64(&mut self, v: u64) {
+        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
+    }
+}
+
+type PointMap<V> = HashMap<Pt, V, BuildHasherDefault<PointHasher>>;
 
 /// One directed input edge `a -> b` with multiplicity `mult`, and the index
 /// of the original edge it stands for (provenance).
@@ -93,7 +118,9 @@ struct Sweep<W: Winding> {
     pending: BTreeMap<(Pt, Pt), Pending<W>>,
     line: Vec<SweepEdge<W>>,
     ends: BTreeMap<Pt, u32>,
-    vinfo: HashMap<Pt, VInfo>,
+    vinfo: PointMap<VInfo>,
+    scratch_group: Vec<SweepEdge<W>>,
+    scratch_block: Vec<(Pt, W, u32, u32)>,
     vertices: Vec<[f64; 2]>,
     edges: Vec<CellEdge<W>>,
     id_to_edge: Vec<u32>,
@@ -115,7 +142,9 @@ pub(crate) fn run<W: Winding>(
         pending: BTreeMap::new(),
         line: Vec::new(),
         ends: BTreeMap::new(),
-        vinfo: HashMap::with_capacity(n * 2),
+        vinfo: PointMap::with_capacity_and_hasher(n * 2, Default::default()),
+        scratch_group: Vec::new(),
+        scratch_block: Vec::new(),
         vertices: Vec::with_capacity(n * 2),
         edges: Vec::with_capacity(n * 2),
         id_to_edge: Vec::with_capacity(n * 2),
@@ -356,10 +385,13 @@ impl<W: Winding> Sweep<W> {
         let fan_start = self.fan_ids.len() as u32;
         // Right parts of split edges and pending edges starting at p:
         // (right point, multiplicity, k, origin).
-        let mut block: Vec<(Pt, W, u32, u32)> = Vec::new();
-        let group: Vec<SweepEdge<W>> = self.line.drain(lo..hi).collect();
+        let mut block = std::mem::take(&mut self.scratch_block);
+        block.clear();
+        let mut group = std::mem::take(&mut self.scratch_group);
+        group.clear();
+        group.extend(self.line.drain(lo..hi));
         let mut w_hi = w_lo.clone();
-        for e in group {
+        for e in group.drain(..) {
             w_hi.add_assign(&e.m);
             self.fan_ids.push(e.id);
             if e.r == p {
@@ -403,8 +435,9 @@ impl<W: Winding> Sweep<W> {
                 .then(ka.1.total_cmp(&kb.1))
                 .then(a.0.cmp(&b.0))
         });
+        self.scratch_group = group;
         let mut merged: Vec<(Pt, W, u32, u32)> = Vec::with_capacity(block.len());
-        for item in block {
+        for item in block.drain(..) {
             if let Some(last) = merged.last_mut() {
                 if last.0 == item.0 {
                     last.1.add_assign(&item.1);
@@ -414,6 +447,7 @@ impl<W: Winding> Sweep<W> {
             }
             merged.push(item);
         }
+        self.scratch_block = block;
         merged.retain(|it| !it.1.is_zero());
         let mut w = w_lo.clone();
         let mut new_edges = Vec::with_capacity(merged.len());
