@@ -1,0 +1,380 @@
+//! The public entry points: validation, the two mesh variants, and the
+//! audit mode that returns the level data behind Theorems 1-4.
+
+use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
+use crate::level3::{level3 as level3_fast, level3_brute, Level3Data, Winding};
+use crate::mesh::Flat;
+use crate::triangulate::triangulate_facet;
+use crate::{Boolean3Error, BooleanOp3, Operand};
+use rayon::prelude::*;
+use std::collections::HashMap;
+use topology::{Facet, HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
+
+/// The result of the polygon-mesh variant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct MeshOutput {
+    /// The resulting shape (level 6), always topologically valid. Facets
+    /// may have holes or several regions.
+    pub mesh: PolygonMesh,
+    /// For each facet of `mesh`, the input facet it is the retained part of
+    /// (level 5).
+    pub sources: Vec<FacetSource>,
+    /// The number of edge-facet pairs with `X12 != 0` or `X21 != 0` (the
+    /// intersection vertices of the result).
+    pub intersections: usize,
+}
+
+/// The result of the triangle-mesh variant.
+#[derive(Clone, Debug, PartialEq)]
+pub struct TriangleOutput {
+    /// The resulting shape, each retained facet triangulated by internal
+    /// edges (section 4.8); always topologically valid.
+    pub mesh: TriangleMesh,
+    /// The number of edge-facet intersection vertices.
+    pub intersections: usize,
+}
+
+/// One retained facet as the audit saw it (Theorem 3).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct FacetAudit {
+    /// The input facet it was retained from.
+    pub source: FacetSource,
+    /// Its number of half-edges.
+    pub half_edges: u32,
+    /// Whether it satisfies facet boundary closure.
+    pub closed: bool,
+}
+
+/// The level data of one Boolean, for checking Theorems 1-4 independently
+/// of the construction code (section 4.9).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Audit {
+    /// Level 3 as the fast path computed it (broad phase, one ray cast per
+    /// connected component, winding numbers propagated along edges).
+    pub level3: Level3Data,
+    /// `X03(v_A, B)` by one ray cast per vertex (independent of the
+    /// propagation identity).
+    pub x03_per_vertex: Vec<i32>,
+    /// `X30(A, v_B)` by one ray cast per vertex.
+    pub x30_per_vertex: Vec<i32>,
+    /// Start- and end-vertex counts of every composite edge as built.
+    pub composites: Vec<CompositeRecord>,
+    /// `E13`, `E22`, `E31` recomputed from the level-3 values by
+    /// eq. 4.21-4.23 for every edge of A, every facet pair with an
+    /// intersection, and every edge of B (Theorem 2 says all are 0).
+    pub net_counts: Vec<(CompositeKind, i64)>,
+    /// Every retained facet (Theorem 3).
+    pub facets: Vec<FacetAudit>,
+    /// Shape boundary closure of the polygon-mesh result (Theorem 4).
+    pub shape_closure: Result<(), TopologyError>,
+}
+
+impl Audit {
+    /// Checks Theorem 1 at level 3 (every non-zero value has its
+    /// interpolated point, and the propagated winding numbers equal the
+    /// per-vertex casts), Theorem 2 (both as built and by eq. 4.21-4.23),
+    /// Theorem 3 and Theorem 4. Levels 1-2 of Theorem 1 are checked inside
+    /// every level-2 call (a missing partner aborts with
+    /// [`Boolean3Error::Internal`]). Returns the first violation.
+    pub fn verify(&self) -> Result<(), String> {
+        for (name, hits) in [("X12", &self.level3.x12), ("X21", &self.level3.x21)] {
+            if let Some(h) = hits
+                .iter()
+                .find(|h| h.value == 0 || h.point.iter().any(|c| !c.is_finite()))
+            {
+                return Err(format!("Theorem 1: {name} hit {h:?} has no valid point"));
+            }
+        }
+        if self.level3.x03 != self.x03_per_vertex {
+            return Err("Theorem 1: propagated X03 differs from per-vertex ray casts".into());
+        }
+        if self.level3.x30 != self.x30_per_vertex {
+            return Err("Theorem 1: propagated X30 differs from per-vertex ray casts".into());
+        }
+        if let Some(c) = self.composites.iter().find(|c| c.starts != c.ends) {
+            return Err(format!("Theorem 2: composite edge {c:?} is unbalanced"));
+        }
+        if let Some(e) = self.net_counts.iter().find(|e| e.1 != 0) {
+            return Err(format!("Theorem 2: eq. 4.21-4.23 give {e:?}"));
+        }
+        if let Some(f) = self.facets.iter().find(|f| !f.closed) {
+            return Err(format!("Theorem 3: retained facet {f:?} is not closed"));
+        }
+        self.shape_closure
+            .clone()
+            .map_err(|e| format!("Theorem 4: {e}"))
+    }
+}
+
+fn validate_mesh(m: &PolygonMesh, operand: Operand) -> Result<(), Boolean3Error> {
+    m.validate_coordinates()
+        .and_then(|()| m.check_topology())
+        .map_err(|source| Boolean3Error::InvalidInput { operand, source })
+}
+
+fn validate_triangles(m: &TriangleMesh, operand: Operand) -> Result<(), Boolean3Error> {
+    m.validate_coordinates()
+        .and_then(|()| m.check_topology())
+        .map_err(|source| Boolean3Error::InvalidInput { operand, source })
+}
+
+/// Levels 3-5 on two validated operands.
+fn run(
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    op: BooleanOp3,
+    audit: bool,
+) -> Result<(Retained, Level3Data, Option<Audit>), Boolean3Error> {
+    let l3 = level3_fast(a, b, Winding::Propagate)?;
+    let retained = construct(a, b, &l3, op, audit)?;
+    let audit = if audit {
+        Some(make_audit(a, b, op, &l3, &retained)?)
+    } else {
+        None
+    };
+    Ok((retained, l3, audit))
+}
+
+fn make_audit(
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    op: BooleanOp3,
+    l3: &Level3Data,
+    r: &Retained,
+) -> Result<Audit, Boolean3Error> {
+    let cast = level3_fast(a, b, Winding::CastEach)?;
+    let (ca, cb, ci) = op.coefficients();
+    let (ca, cb, ci) = (i64::from(ca), i64::from(cb), i64::from(ci));
+    let i03 = |v: u32| ca + ci * i64::from(l3.x03[v as usize]);
+    let i30 = |v: u32| cb + ci * i64::from(l3.x30[v as usize]);
+    let ra = a.referenced();
+    let rb = b.referenced();
+    let mut net = Vec::new();
+    // eq. 4.21: E13(e_A, B) = I03(v_e) - I03(v_s) + sum_f I12(e_A, f).
+    let mut e13: Vec<i64> = a
+        .edges
+        .iter()
+        .map(|&(s, t)| {
+            let is = if ra[s as usize] { i03(s) } else { 0 };
+            let it = if ra[t as usize] { i03(t) } else { 0 };
+            it - is
+        })
+        .collect();
+    for h in &l3.x12 {
+        e13[h.edge as usize] += ci * i64::from(h.value);
+    }
+    net.extend(
+        e13.iter()
+            .enumerate()
+            .map(|(e, &v)| (CompositeKind::EdgeA(e as u32), v)),
+    );
+    // eq. 4.22: E22(f_A, f_B) = -sum_{h in f_A} I12(h, f_B) + sum_{h in
+    // f_B} I21(f_A, h), half-edge values signed by direction.
+    let mut e22: HashMap<(u32, u32), i64> = HashMap::new();
+    for h in &l3.x12 {
+        for &he in a.edge_half_edges(h.edge) {
+            let dir = if a.he_fwd[he as usize] { 1 } else { -1 };
+            *e22.entry((a.he_facet[he as usize], h.facet)).or_default() -=
+                ci * i64::from(h.value) * dir;
+        }
+    }
+    for h in &l3.x21 {
+        for &he in b.edge_half_edges(h.edge) {
+            let dir = if b.he_fwd[he as usize] { 1 } else { -1 };
+            *e22.entry((h.facet, b.he_facet[he as usize])).or_default() +=
+                ci * i64::from(h.value) * dir;
+        }
+    }
+    let mut e22: Vec<_> = e22.into_iter().collect();
+    e22.sort_unstable();
+    net.extend(
+        e22.into_iter()
+            .map(|((fa, fb), v)| (CompositeKind::FacetPair(fa, fb), v)),
+    );
+    // eq. 4.23: E31(A, e_B) = sum_f I21(f, e_B) + I30(v_e) - I30(v_s).
+    let mut e31: Vec<i64> = b
+        .edges
+        .iter()
+        .map(|&(s, t)| {
+            let is = if rb[s as usize] { i30(s) } else { 0 };
+            let it = if rb[t as usize] { i30(t) } else { 0 };
+            it - is
+        })
+        .collect();
+    for h in &l3.x21 {
+        e31[h.edge as usize] += ci * i64::from(h.value);
+    }
+    net.extend(
+        e31.iter()
+            .enumerate()
+            .map(|(e, &v)| (CompositeKind::EdgeB(e as u32), v)),
+    );
+    // Theorem 3, counted afresh from the retained half-edges.
+    let mut facets = Vec::with_capacity(r.sources.len());
+    let mut bal: HashMap<u32, i64> = HashMap::new();
+    for (k, src) in r.sources.iter().enumerate() {
+        bal.clear();
+        let hes = &r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize];
+        for &(s, e) in hes {
+            *bal.entry(e).or_default() += 1;
+            *bal.entry(s).or_default() -= 1;
+        }
+        facets.push(FacetAudit {
+            source: *src,
+            half_edges: hes.len() as u32,
+            closed: bal.values().all(|&v| v == 0),
+        });
+    }
+    let shape = to_polygon_mesh(r);
+    Ok(Audit {
+        level3: l3.clone(),
+        x03_per_vertex: cast.x03,
+        x30_per_vertex: cast.x30,
+        composites: r.composites.clone(),
+        net_counts: net,
+        facets,
+        shape_closure: shape.check_topology(),
+    })
+}
+
+fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
+    let facets = (0..r.sources.len())
+        .map(|k| Facet {
+            half_edges: r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize]
+                .iter()
+                .map(|&(start, end)| HalfEdge { start, end })
+                .collect(),
+        })
+        .collect();
+    PolygonMesh::new(r.vertices.clone(), facets)
+}
+
+fn to_triangle_mesh(r: Retained) -> TriangleMesh {
+    let idx: Vec<usize> = (0..r.sources.len()).collect();
+    let parts: Vec<Vec<[u32; 3]>> = idx
+        .par_chunks(1024)
+        .map(|chunk| {
+            let mut tris = Vec::new();
+            for &k in chunk {
+                let hes = &r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize];
+                triangulate_facet(&r.vertices, hes, &mut tris);
+            }
+            tris
+        })
+        .collect();
+    TriangleMesh::new(r.vertices, parts.concat())
+}
+
+/// The Boolean `op` of two polygon meshes (the polygon-mesh variant of
+/// chapter 4): levels 3-6 with inclusion values (eq. 4.7-4.13), composite
+/// edges (eq. 4.14-4.16) and retained facets (section 4.6).
+///
+/// Both operands are validated first (coordinates finite and at most
+/// `f64::MAX / 4`; dangling indices, facet and shape boundary closure of
+/// section 4.2); a bad operand gives [`Boolean3Error::InvalidInput`] naming
+/// the violated constraint. Any topologically valid input is accepted,
+/// including non-manifold, multi-shell, self-intersecting and inside-out
+/// shapes, and the result is always topologically valid (Theorems 1-4).
+/// The output is the same bit for bit whatever the number of threads.
+pub fn boolean_mesh(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp3,
+) -> Result<MeshOutput, Boolean3Error> {
+    boolean_mesh_impl(a, b, op, false).map(|(o, _)| o)
+}
+
+/// [`boolean_mesh`] together with the [`Audit`] of its level data.
+pub fn boolean_mesh_audit(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp3,
+) -> Result<(MeshOutput, Audit), Boolean3Error> {
+    let (o, audit) = boolean_mesh_impl(a, b, op, true)?;
+    let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
+    Ok((o, audit))
+}
+
+fn boolean_mesh_impl(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp3,
+    audit: bool,
+) -> Result<(MeshOutput, Option<Audit>), Boolean3Error> {
+    validate_mesh(a, Operand::A)?;
+    validate_mesh(b, Operand::B)?;
+    let (fa, fb) = rayon::join(|| Flat::from_polygon_mesh(a), || Flat::from_polygon_mesh(b));
+    let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let out = MeshOutput {
+        mesh: to_polygon_mesh(&r),
+        sources: r.sources.clone(),
+        intersections: l3.x12.len() + l3.x21.len(),
+    };
+    Ok((out, audit))
+}
+
+/// The Boolean `op` of two triangle meshes (the triangle-mesh variant):
+/// as [`boolean_mesh`], then every retained facet is triangulated by adding
+/// internal edges only (section 4.8).
+pub fn boolean_triangles(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp3,
+) -> Result<TriangleOutput, Boolean3Error> {
+    boolean_triangles_impl(a, b, op, false).map(|(o, _)| o)
+}
+
+/// [`boolean_triangles`] together with the [`Audit`] of its level data
+/// (Theorem 4 in the audit is checked on the polygon form; check the
+/// triangles with `TriangleMesh::check_topology`).
+pub fn boolean_triangles_audit(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp3,
+) -> Result<(TriangleOutput, Audit), Boolean3Error> {
+    let (o, audit) = boolean_triangles_impl(a, b, op, true)?;
+    let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
+    Ok((o, audit))
+}
+
+fn boolean_triangles_impl(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp3,
+    audit: bool,
+) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
+    validate_triangles(a, Operand::A)?;
+    validate_triangles(b, Operand::B)?;
+    let (fa, fb) = rayon::join(
+        || Flat::from_triangle_mesh(a),
+        || Flat::from_triangle_mesh(b),
+    );
+    let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let out = TriangleOutput {
+        mesh: to_triangle_mesh(r),
+        intersections: l3.x12.len() + l3.x21.len(),
+    };
+    Ok((out, audit))
+}
+
+/// The level-3 data of two polygon meshes by the fast path (broad phase,
+/// propagated winding numbers). Operands are validated as in
+/// [`boolean_mesh`].
+pub fn level3(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
+    validate_mesh(a, Operand::A)?;
+    validate_mesh(b, Operand::B)?;
+    level3_fast(
+        &Flat::from_polygon_mesh(a),
+        &Flat::from_polygon_mesh(b),
+        Winding::Propagate,
+    )
+}
+
+/// The level-3 data by brute force straight from Table 4.1 (every pair, no
+/// broad phase, no propagation): the oracle the fast path is tested
+/// against. Quadratic in the input size.
+pub fn level3_reference(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
+    validate_mesh(a, Operand::A)?;
+    validate_mesh(b, Operand::B)?;
+    level3_brute(&Flat::from_polygon_mesh(a), &Flat::from_polygon_mesh(b))
+}

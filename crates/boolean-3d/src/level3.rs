@@ -1,0 +1,510 @@
+//! Level 3 of the pyramid (Table 4.1): `X03(v_A, B)`, `X12(e_A, f_B)`,
+//! `X21(f_A, e_B)`, `X30(A, v_B)` and the edge-facet intersection points
+//! (eq. 4.2-4.6), with a conservative broad phase and winding-number
+//! propagation along edges.
+//!
+//! # Why the broad phase is conservative
+//!
+//! Every point a level-1 or level-2 function computes is an interpolation
+//! `p0 + lambda (p1 - p0)` with `|lambda| <= 1/2` (up to a few ulps) from
+//! the closer end (Table 7.1, footnote 1 of section 4.5). Rounding is
+//! monotone and the exact value lies strictly between the two end values,
+//! so every computed coordinate lies in the closed range of the two values
+//! it interpolates; by induction the y- and z-values a level-1 or level-2
+//! hit assigns to an entity of A (of B) lie in the closed bounding box of
+//! that entity (for `X02`/`X20`, of the facet). Now take an edge `e_A` and
+//! a facet `f_B` whose closed boxes are disjoint:
+//!
+//! - disjoint in x: every `X01`/`X10` between their vertices and edges is
+//!   0 (a vertex must lie in the half-open x-range of the edge), so every
+//!   level-2 term and `X12` is 0;
+//! - `e_A` below `f_B` in y (or z): every shadow term equals its X term
+//!   (B is above at every hit), and Theorem 1 case (2) shows the X terms
+//!   sum to 0 given facet boundary closure of `f_B`: `X12 = -X02(v_e) +
+//!   X02(v_s) - sum_h X11(e_A, h) = 0`;
+//! - `e_A` above `f_B` in y (or z): every shadow term is 0, so `X12 = 0`.
+//!
+//! The same holds for `X21`, and for the ray cast of `X03`: a facet whose
+//! box misses the vertex in x or y has `X02 = 0`, and one wholly below the
+//! vertex has `S02 = 0`. So closed-interval overlap on the exact
+//! coordinates is exactly conservative. The boxes are nevertheless widened
+//! in y and z by `4 u L` (`L` the power of two bounding all coordinates,
+//! the scale of the `y_at_x` bound of Table 8.1) as defence in depth
+//! against a rounding step this argument overlooked; that only adds
+//! candidates, never removes one.
+//!
+//! # Propagation of winding numbers
+//!
+//! Summing `X12(e_A, f)` over every facet `f` of B, the `S11` terms cancel
+//! in pairs because B satisfies shape boundary closure (`S11(e_A, h*) =
+//! -S11(e_A, h)` for the reverse `h*` of `h`), leaving
+//! `sum_f X12(e_A, f) = -X03(v_e(e_A), B) + X03(v_s(e_A), B)`, so
+//!
+//! `X03(v_e(e_A), B) = X03(v_s(e_A), B) - sum_f X12(e_A, f)`
+//!
+//! exactly, as integers; likewise `X30(A, v_e(e_B)) = X30(A, v_s(e_B)) -
+//! sum_f X21(f, e_B)`. One ray cast per connected component of each
+//! operand's edge graph therefore gives every winding number.
+
+use crate::bvh::{Aabb, Bvh};
+use crate::mesh::Flat;
+use crate::Boolean3Error;
+use rayon::prelude::*;
+use robust_arith::{power_of_two_bound, Point3, UNIT_ROUNDOFF};
+use shadow_2d::{s02, s20, x02, x11, x20, Partners};
+
+/// A non-zero level-3 edge-facet intersection: `X12(e_A, f_B)` (edge of A,
+/// facet of B) or `X21(f_A, e_B)` (edge of B, facet of A), with its
+/// intersection point (eq. 4.2-4.6).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct EdgeFacetHit {
+    /// The edge index (into `Level3Data::edges_a` or `edges_b`).
+    pub edge: u32,
+    /// The facet index in the other operand.
+    pub facet: u32,
+    /// The value of the intersection function for the edge in its forward
+    /// direction (lower vertex index to higher); never 0.
+    pub value: i32,
+    /// The intersection point.
+    pub point: Point3,
+}
+
+/// The level-3 data of section 4.9 (Theorem 1): every non-zero value with
+/// its point.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Level3Data {
+    /// A's edges as `[start, end]` vertex indices, `start <= end`.
+    pub edges_a: Vec<[u32; 2]>,
+    /// B's edges as `[start, end]` vertex indices, `start <= end`.
+    pub edges_b: Vec<[u32; 2]>,
+    /// `X03(v_A, B)` for every vertex of A (0 for vertices no half-edge
+    /// refers to).
+    pub x03: Vec<i32>,
+    /// `X30(A, v_B)` for every vertex of B (0 for unreferenced vertices).
+    pub x30: Vec<i32>,
+    /// The non-zero `X12(e_A, f_B)`, sorted by edge then facet.
+    pub x12: Vec<EdgeFacetHit>,
+    /// The non-zero `X21(f_A, e_B)`, sorted by edge (of B) then facet (of A).
+    pub x21: Vec<EdgeFacetHit>,
+    /// The number of edge-facet pairs the broad phase let through.
+    pub candidate_pairs: usize,
+    /// The number of ray casts made for `X03`/`X30`.
+    pub ray_casts: usize,
+}
+
+/// `X12(e_A, f_B) = -S02(v_e(e_A), f_B) + S02(v_s(e_A), f_B) - sum_{h in
+/// f_B} S11(e_A, h)` (Table 4.1) with its point (eq. 4.2-4.6 with `k = 2`).
+pub(crate) fn x12(
+    as_: &Point3,
+    ae: &Point3,
+    facet: impl Iterator<Item = (Point3, Point3)> + Clone,
+) -> Result<Option<(i32, Point3)>, Boolean3Error> {
+    let mut partners = Partners::<3>::new(2);
+    let mut value = 0;
+    if let Some(h) = x02(ae, facet.clone())? {
+        value += partners.offer(h.negated());
+    }
+    if let Some(h) = x02(as_, facet.clone())? {
+        value += partners.offer(h);
+    }
+    for (s, e) in facet {
+        if let Some(h) = x11(as_, ae, &s, &e)? {
+            value += partners.offer(h.negated());
+        }
+    }
+    finish(value, &partners, "X12")
+}
+
+/// `X21(f_A, e_B) = -sum_{h in f_A} S11(h, e_B) + S20(f_A, v_e(e_B)) -
+/// S20(f_A, v_s(e_B))` (Table 4.1) with its point (eq. 4.2-4.6, `k = 2`).
+pub(crate) fn x21(
+    facet: impl Iterator<Item = (Point3, Point3)> + Clone,
+    bs: &Point3,
+    be: &Point3,
+) -> Result<Option<(i32, Point3)>, Boolean3Error> {
+    let mut partners = Partners::<3>::new(2);
+    let mut value = 0;
+    for (s, e) in facet.clone() {
+        if let Some(h) = x11(&s, &e, bs, be)? {
+            value += partners.offer(h.negated());
+        }
+    }
+    if let Some(h) = x20(facet.clone(), be)? {
+        value += partners.offer(h);
+    }
+    if let Some(h) = x20(facet, bs)? {
+        value += partners.offer(h.negated());
+    }
+    finish(value, &partners, "X21")
+}
+
+fn finish(
+    value: i32,
+    partners: &Partners<3>,
+    function: &str,
+) -> Result<Option<(i32, Point3)>, Boolean3Error> {
+    if value == 0 {
+        return Ok(None);
+    }
+    // Theorem 1: a non-zero X has a partner of each shadow type; with
+    // k = 2 and N = 3 the two interpolated points agree in all coordinates.
+    match partners.interpolate() {
+        Some((a, _)) => Ok(Some((value, a))),
+        None => Err(Boolean3Error::Internal(format!(
+            "Theorem 1 violated: {function} = {value} but an interpolation partner is missing"
+        ))),
+    }
+}
+
+/// The largest coordinate magnitude of a point set.
+fn max_abs(points: &[Point3]) -> f64 {
+    points
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, &c| m.max(c.abs()))
+}
+
+/// The closed box of an edge.
+#[inline]
+fn edge_box(p: &Point3, q: &Point3) -> Aabb {
+    let mut b = Aabb::EMPTY;
+    b.add(p);
+    b.add(q);
+    b
+}
+
+/// Which operand's edges are being intersected with the other's facets.
+#[derive(Clone, Copy, PartialEq, Eq)]
+enum Side {
+    /// Edges of A against facets of B: `X12`.
+    EdgesOfA,
+    /// Edges of B against facets of A: `X21`.
+    EdgesOfB,
+}
+
+/// All non-zero edge-facet values between the edges of `edges` and the
+/// facets of `facets`, through the broad phase, in parallel chunks whose
+/// results are concatenated in edge order (so the output does not depend
+/// on the thread count).
+fn edge_facet_hits(
+    edges: &Flat<'_>,
+    facets: &Flat<'_>,
+    bvh: &Bvh,
+    boxes: &[Aabb],
+    margin: f64,
+    side: Side,
+) -> Result<(Vec<EdgeFacetHit>, usize), Boolean3Error> {
+    let chunks: Vec<(Vec<EdgeFacetHit>, usize)> = (0..edges.edges.len() as u32)
+        .collect::<Vec<_>>()
+        .par_chunks(512)
+        .map(|chunk| {
+            let mut hits = Vec::new();
+            let mut cand: Vec<u32> = Vec::new();
+            let mut n_cand = 0usize;
+            for &e in chunk {
+                let (s, t) = edges.edges[e as usize];
+                if s == t {
+                    continue; // a zero-length edge has X = 0 (its terms cancel)
+                }
+                let (p, q) = edges.edge_points(e);
+                cand.clear();
+                bvh.query(&edge_box(&p, &q).widened_yz(margin), boxes, |f| {
+                    cand.push(f)
+                });
+                cand.sort_unstable();
+                n_cand += cand.len();
+                for &f in &cand {
+                    let r = match side {
+                        Side::EdgesOfA => x12(&p, &q, facets.facet_points(f))?,
+                        Side::EdgesOfB => x21(facets.facet_points(f), &p, &q)?,
+                    };
+                    if let Some((value, point)) = r {
+                        hits.push(EdgeFacetHit {
+                            edge: e,
+                            facet: f,
+                            value,
+                            point,
+                        });
+                    }
+                }
+            }
+            Ok((hits, n_cand))
+        })
+        .collect::<Result<_, Boolean3Error>>()?;
+    let total = chunks.iter().map(|c| c.0.len()).sum();
+    let mut hits = Vec::with_capacity(total);
+    let mut n_cand = 0;
+    for (h, n) in chunks {
+        hits.extend(h);
+        n_cand += n;
+    }
+    Ok((hits, n_cand))
+}
+
+/// `X03(v, B) = sum_f S02(v, f)` by casting a ray upwards through the
+/// broad phase (only facets whose box reaches the vertex's (x, y) and rises
+/// to its z can shadow it).
+fn x03_cast(
+    v: &Point3,
+    b: &Flat<'_>,
+    bvh: &Bvh,
+    boxes: &[Aabb],
+    m: f64,
+) -> Result<i32, Boolean3Error> {
+    let q = Aabb {
+        lo: *v,
+        hi: [v[0], v[1], f64::INFINITY],
+    }
+    .widened_yz(m);
+    let mut sum = 0;
+    let mut err = None;
+    bvh.query(&q, boxes, |f| match s02(v, b.facet_points(f)) {
+        Ok(s) => sum += s,
+        Err(e) => err = Some(e),
+    });
+    match err {
+        Some(e) => Err(e.into()),
+        None => Ok(sum),
+    }
+}
+
+/// `X30(A, v) = -sum_f S20(f, v)` by the same upward ray (a facet of A
+/// wholly above `v` has `S20 = 0`, one that misses it in x or y has
+/// `X20 = 0`); the facets that matter are those reaching down to `v`.
+fn x30_cast(
+    a: &Flat<'_>,
+    v: &Point3,
+    bvh: &Bvh,
+    boxes: &[Aabb],
+    m: f64,
+) -> Result<i32, Boolean3Error> {
+    // S20(f, v) is X20 when v is at or above the facet point: facets whose
+    // lowest z exceeds v's cannot contribute.
+    let q = Aabb {
+        lo: [v[0], v[1], f64::NEG_INFINITY],
+        hi: *v,
+    }
+    .widened_yz(m);
+    let mut sum = 0;
+    let mut err = None;
+    bvh.query(&q, boxes, |f| match s20(a.facet_points(f), v) {
+        Ok(s) => sum -= s,
+        Err(e) => err = Some(e),
+    });
+    match err {
+        Some(e) => Err(e.into()),
+        None => Ok(sum),
+    }
+}
+
+/// Winding numbers of every referenced vertex by propagation along edges
+/// from one ray cast per connected component (identity in the module
+/// documentation). `dsum[e]` is `sum_f X(e, f)` for edge `e`.
+fn propagate(
+    mesh: &Flat<'_>,
+    dsum: &[i32],
+    cast: impl Fn(&Point3) -> Result<i32, Boolean3Error> + Sync,
+) -> Result<(Vec<i32>, usize), Boolean3Error> {
+    let n = mesh.pos.len();
+    // Vertex -> edge adjacency (compressed rows).
+    let mut deg = vec![0u32; n + 1];
+    for &(s, t) in &mesh.edges {
+        if s != t {
+            deg[s as usize + 1] += 1;
+            deg[t as usize + 1] += 1;
+        }
+    }
+    for i in 0..n {
+        deg[i + 1] += deg[i];
+    }
+    let mut fill = deg.clone();
+    let mut adj = vec![0u32; deg[n] as usize];
+    for (e, &(s, t)) in mesh.edges.iter().enumerate() {
+        if s != t {
+            adj[fill[s as usize] as usize] = e as u32;
+            fill[s as usize] += 1;
+            adj[fill[t as usize] as usize] = e as u32;
+            fill[t as usize] += 1;
+        }
+    }
+    let referenced = mesh.referenced();
+    let mut seen = vec![false; n];
+    // (vertex, edge it was reached by, or u32::MAX for a root)
+    let mut order: Vec<(u32, u32)> = Vec::with_capacity(n);
+    let mut roots = Vec::new();
+    for r in 0..n {
+        if !referenced[r] || seen[r] {
+            continue;
+        }
+        seen[r] = true;
+        roots.push(r as u32);
+        let first = order.len();
+        order.push((r as u32, u32::MAX));
+        let mut k = first;
+        while k < order.len() {
+            let v = order[k].0 as usize;
+            k += 1;
+            for &e in &adj[deg[v] as usize..deg[v + 1] as usize] {
+                let (s, t) = mesh.edges[e as usize];
+                let w = if s as usize == v { t } else { s };
+                if !seen[w as usize] {
+                    seen[w as usize] = true;
+                    order.push((w, e));
+                }
+            }
+        }
+    }
+    let cast_values: Vec<i32> = roots
+        .par_iter()
+        .map(|&r| cast(&mesh.pos[r as usize]))
+        .collect::<Result<_, _>>()?;
+    let mut x = vec![0i32; n];
+    let mut next_root = 0;
+    for &(v, e) in &order {
+        if e == u32::MAX {
+            x[v as usize] = cast_values[next_root];
+            next_root += 1;
+        } else {
+            let (s, t) = mesh.edges[e as usize];
+            let d = dsum[e as usize];
+            if v == t {
+                x[t as usize] = x[s as usize] - d;
+            } else {
+                x[s as usize] = x[t as usize] + d;
+            }
+        }
+    }
+    Ok((x, roots.len()))
+}
+
+/// Per-edge sums of the hit values.
+fn edge_sums(n_edges: usize, hits: &[EdgeFacetHit]) -> Vec<i32> {
+    let mut d = vec![0i32; n_edges];
+    for h in hits {
+        d[h.edge as usize] += h.value;
+    }
+    d
+}
+
+/// How the vertex winding numbers are obtained.
+#[derive(Clone, Copy, PartialEq, Eq)]
+pub(crate) enum Winding {
+    /// One ray cast per connected component, propagated along edges.
+    Propagate,
+    /// One ray cast per vertex (the audit's independent check).
+    CastEach,
+}
+
+/// All level-3 data of two validated operands.
+pub(crate) fn level3(
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    winding: Winding,
+) -> Result<Level3Data, Boolean3Error> {
+    let boxes_a = a.facet_boxes();
+    let boxes_b = b.facet_boxes();
+    let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
+    let margin = 4.0 * UNIT_ROUNDOFF * l;
+    let (r12, r21) = rayon::join(
+        || edge_facet_hits(a, b, &bvh_b, &boxes_b, margin, Side::EdgesOfA),
+        || edge_facet_hits(b, a, &bvh_a, &boxes_a, margin, Side::EdgesOfB),
+    );
+    let (x12, c12) = r12?;
+    let (x21, c21) = r21?;
+    let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b, margin);
+    let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a, margin);
+    let (x03, x30, casts) = match winding {
+        Winding::Propagate => {
+            let (x03, n03) = propagate(a, &edge_sums(a.edges.len(), &x12), cast03)?;
+            let (x30, n30) = propagate(b, &edge_sums(b.edges.len(), &x21), cast30)?;
+            (x03, x30, n03 + n30)
+        }
+        Winding::CastEach => {
+            let ra = a.referenced();
+            let rb = b.referenced();
+            let x03 = (0..a.pos.len())
+                .into_par_iter()
+                .map(|i| if ra[i] { cast03(&a.pos[i]) } else { Ok(0) })
+                .collect::<Result<Vec<_>, _>>()?;
+            let x30 = (0..b.pos.len())
+                .into_par_iter()
+                .map(|i| if rb[i] { cast30(&b.pos[i]) } else { Ok(0) })
+                .collect::<Result<Vec<_>, _>>()?;
+            let n = ra.iter().chain(rb.iter()).filter(|&&r| r).count();
+            (x03, x30, n)
+        }
+    };
+    Ok(Level3Data {
+        edges_a: a.edges.iter().map(|&(s, t)| [s, t]).collect(),
+        edges_b: b.edges.iter().map(|&(s, t)| [s, t]).collect(),
+        x03,
+        x30,
+        x12,
+        x21,
+        candidate_pairs: c12 + c21,
+        ray_casts: casts,
+    })
+}
+
+/// Level 3 by brute force straight from Table 4.1: every edge against every
+/// facet, every vertex against every facet, no broad phase and no
+/// propagation. Quadratic; for tests and audits of small inputs.
+pub(crate) fn level3_brute(a: &Flat<'_>, b: &Flat<'_>) -> Result<Level3Data, Boolean3Error> {
+    let mut x12v = Vec::new();
+    for e in 0..a.edges.len() as u32 {
+        let (p, q) = a.edge_points(e);
+        for f in 0..b.facet_count() as u32 {
+            if let Some((value, point)) = x12(&p, &q, b.facet_points(f))? {
+                x12v.push(EdgeFacetHit {
+                    edge: e,
+                    facet: f,
+                    value,
+                    point,
+                });
+            }
+        }
+    }
+    let mut x21v = Vec::new();
+    for e in 0..b.edges.len() as u32 {
+        let (p, q) = b.edge_points(e);
+        for f in 0..a.facet_count() as u32 {
+            if let Some((value, point)) = x21(a.facet_points(f), &p, &q)? {
+                x21v.push(EdgeFacetHit {
+                    edge: e,
+                    facet: f,
+                    value,
+                    point,
+                });
+            }
+        }
+    }
+    let ra = a.referenced();
+    let rb = b.referenced();
+    let mut x03 = vec![0; a.pos.len()];
+    for (i, v) in a.pos.iter().enumerate() {
+        if ra[i] {
+            for f in 0..b.facet_count() as u32 {
+                x03[i] += s02(v, b.facet_points(f))?; // X03 = sum_f S02
+            }
+        }
+    }
+    let mut x30 = vec![0; b.pos.len()];
+    for (i, v) in b.pos.iter().enumerate() {
+        if rb[i] {
+            for f in 0..a.facet_count() as u32 {
+                x30[i] -= s20(a.facet_points(f), v)?; // X30 = -sum_f S20
+            }
+        }
+    }
+    Ok(Level3Data {
+        edges_a: a.edges.iter().map(|&(s, t)| [s, t]).collect(),
+        edges_b: b.edges.iter().map(|&(s, t)| [s, t]).collect(),
+        x03,
+        x30,
+        candidate_pairs: a.edges.len() * b.facet_count() + b.edges.len() * a.facet_count(),
+        ray_casts: 0,
+        x12: x12v,
+        x21: x21v,
+    })
+}
