@@ -106,16 +106,30 @@ impl Audit {
     }
 }
 
-fn validate_mesh(m: &PolygonMesh, operand: Operand) -> Result<(), Boolean3Error> {
+/// Validates a polygon mesh operand (coordinates, then the constraints of
+/// section 4.2) and builds its flat form.
+fn flat_polygon(m: &PolygonMesh, operand: Operand) -> Result<Flat<'_>, Boolean3Error> {
     m.validate_coordinates()
-        .and_then(|()| m.check_topology())
+        .and_then(|()| Flat::from_polygon_mesh(m))
         .map_err(|source| Boolean3Error::InvalidInput { operand, source })
 }
 
-fn validate_triangles(m: &TriangleMesh, operand: Operand) -> Result<(), Boolean3Error> {
+/// Validates a triangle mesh operand and builds its flat form.
+fn flat_triangles(m: &TriangleMesh, operand: Operand) -> Result<Flat<'_>, Boolean3Error> {
     m.validate_coordinates()
-        .and_then(|()| m.check_topology())
+        .and_then(|()| Flat::from_triangle_mesh(m))
         .map_err(|source| Boolean3Error::InvalidInput { operand, source })
+}
+
+/// Both operands' flat forms, built in parallel; A's error is reported
+/// first.
+fn flat_pair<'a, M: Sync>(
+    a: &'a M,
+    b: &'a M,
+    f: impl Fn(&'a M, Operand) -> Result<Flat<'a>, Boolean3Error> + Sync,
+) -> Result<(Flat<'a>, Flat<'a>), Boolean3Error> {
+    let (fa, fb) = rayon::join(|| f(a, Operand::A), || f(b, Operand::B));
+    Ok((fa?, fb?))
 }
 
 /// Levels 3-5 on two validated operands.
@@ -125,8 +139,13 @@ fn run(
     op: BooleanOp3,
     audit: bool,
 ) -> Result<(Retained, Level3Data, Option<Audit>), Boolean3Error> {
+    let t0 = std::time::Instant::now();
     let l3 = level3_fast(a, b, Winding::Propagate)?;
+    let t1 = std::time::Instant::now();
     let retained = construct(a, b, &l3, op, audit)?;
+    if std::env::var_os("B3D_TIMING").is_some() {
+        eprintln!("level3 {:?} construct {:?}", t1 - t0, t1.elapsed());
+    }
     let audit = if audit {
         Some(make_audit(a, b, op, &l3, &retained)?)
     } else {
@@ -301,9 +320,7 @@ fn boolean_mesh_impl(
     op: BooleanOp3,
     audit: bool,
 ) -> Result<(MeshOutput, Option<Audit>), Boolean3Error> {
-    validate_mesh(a, Operand::A)?;
-    validate_mesh(b, Operand::B)?;
-    let (fa, fb) = rayon::join(|| Flat::from_polygon_mesh(a), || Flat::from_polygon_mesh(b));
+    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
     let out = MeshOutput {
         mesh: to_polygon_mesh(&r),
@@ -343,15 +360,25 @@ fn boolean_triangles_impl(
     op: BooleanOp3,
     audit: bool,
 ) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
-    validate_triangles(a, Operand::A)?;
-    validate_triangles(b, Operand::B)?;
-    let (fa, fb) = rayon::join(
-        || Flat::from_triangle_mesh(a),
-        || Flat::from_triangle_mesh(b),
-    );
+    let t0 = std::time::Instant::now();
+    let t1 = std::time::Instant::now();
+    let (fa, fb) = flat_pair(a, b, flat_triangles)?;
+    let t2 = std::time::Instant::now();
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let t3 = std::time::Instant::now();
+    let mesh = to_triangle_mesh(r);
+    let t4 = std::time::Instant::now();
+    if std::env::var_os("B3D_TIMING").is_some() {
+        eprintln!(
+            "validate {:?} flat {:?} run {:?} tri {:?}",
+            t1 - t0,
+            t2 - t1,
+            t3 - t2,
+            t4 - t3
+        );
+    }
     let out = TriangleOutput {
-        mesh: to_triangle_mesh(r),
+        mesh,
         intersections: l3.x12.len() + l3.x21.len(),
     };
     Ok((out, audit))
@@ -361,20 +388,14 @@ fn boolean_triangles_impl(
 /// propagated winding numbers). Operands are validated as in
 /// [`boolean_mesh`].
 pub fn level3(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
-    validate_mesh(a, Operand::A)?;
-    validate_mesh(b, Operand::B)?;
-    level3_fast(
-        &Flat::from_polygon_mesh(a),
-        &Flat::from_polygon_mesh(b),
-        Winding::Propagate,
-    )
+    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
+    level3_fast(&fa, &fb, Winding::Propagate)
 }
 
 /// The level-3 data by brute force straight from Table 4.1 (every pair, no
 /// broad phase, no propagation): the oracle the fast path is tested
 /// against. Quadratic in the input size.
 pub fn level3_reference(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
-    validate_mesh(a, Operand::A)?;
-    validate_mesh(b, Operand::B)?;
-    level3_brute(&Flat::from_polygon_mesh(a), &Flat::from_polygon_mesh(b))
+    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
+    level3_brute(&fa, &fb)
 }

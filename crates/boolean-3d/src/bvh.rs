@@ -2,6 +2,7 @@
 //! boxes. It only ever skips pairs whose boxes are disjoint; see
 //! [`crate::level3`] for why that is conservative for every X of Table 4.1.
 
+use rayon::prelude::*;
 use smallvec::SmallVec;
 
 /// A closed axis-aligned box `[lo, hi]` (empty when `lo > hi`).
@@ -71,7 +72,9 @@ struct Node {
     count: u32,
 }
 
-/// A binary BVH built by median splits on the longest centroid axis.
+/// A binary BVH over items sorted along a Morton (Z-order) curve of their
+/// box centres, split at the middle of each range: an `O(n log n)` build
+/// dominated by one sort, deterministic for a given input.
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     items: Vec<u32>,
@@ -82,13 +85,22 @@ const LEAF: usize = 4;
 impl Bvh {
     /// Builds the hierarchy over `boxes` (empty boxes are never reported).
     pub fn new(boxes: &[Aabb]) -> Bvh {
-        let mut items: Vec<u32> = (0..boxes.len() as u32)
+        let live: Vec<u32> = (0..boxes.len() as u32)
             .filter(|&i| boxes[i as usize].lo[0] <= boxes[i as usize].hi[0])
             .collect();
-        let mut nodes = Vec::with_capacity(2 * items.len() / LEAF + 1);
+        let mut cb = Aabb::EMPTY;
+        for &i in &live {
+            cb.add(&centroid(&boxes[i as usize]));
+        }
+        let mut keyed: Vec<(u64, u32)> = live
+            .par_iter()
+            .map(|&i| (morton(&centroid(&boxes[i as usize]), &cb), i))
+            .collect();
+        keyed.par_sort_unstable();
+        let items: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
+        let mut nodes = Vec::with_capacity(2 * items.len() / LEAF + 2);
         if !items.is_empty() {
-            let n = items.len();
-            build(boxes, &mut items, 0, n, &mut nodes);
+            build(boxes, &items, 0, items.len(), &mut nodes);
         }
         Bvh { nodes, items }
     }
@@ -122,44 +134,129 @@ impl Bvh {
     }
 }
 
-fn build(boxes: &[Aabb], items: &mut [u32], offset: usize, n: usize, nodes: &mut Vec<Node>) {
-    let mut bb = Aabb::EMPTY;
-    let mut cb = Aabb::EMPTY;
-    for &i in items.iter() {
-        let b = &boxes[i as usize];
-        bb.union(b);
-        cb.add(&centroid(b));
+/// The 63-bit Morton code of `p` quantised to 21 bits per axis within `cb`.
+fn morton(p: &[f64; 3], cb: &Aabb) -> u64 {
+    let mut code = 0u64;
+    for (c, &pc) in p.iter().enumerate() {
+        // Halves first so that huge coordinates cannot overflow.
+        let ext = cb.hi[c] * 0.5 - cb.lo[c] * 0.5;
+        let t = if ext > 0.0 {
+            (pc * 0.5 - cb.lo[c] * 0.5) / ext
+        } else {
+            0.0
+        };
+        let q = (t.clamp(0.0, 1.0) * 2_097_151.0) as u64;
+        code |= spread(q) << c;
     }
+    code
+}
+
+/// Spreads the low 21 bits of `x` to every third bit.
+fn spread(mut x: u64) -> u64 {
+    x &= 0x1f_ffff;
+    x = (x | (x << 32)) & 0x1f_0000_0000_ffff;
+    x = (x | (x << 16)) & 0x1f_0000_ff00_00ff;
+    x = (x | (x << 8)) & 0x100f_00f0_0f00_f00f;
+    x = (x | (x << 4)) & 0x10c3_0c30_c30c_30c3;
+    x = (x | (x << 2)) & 0x1249_2492_4924_9249;
+    x
+}
+
+/// Builds the subtree over `items[start..end]` in pre-order (first child
+/// right after its parent) and returns its box.
+fn build(boxes: &[Aabb], items: &[u32], start: usize, end: usize, nodes: &mut Vec<Node>) -> Aabb {
     let me = nodes.len();
     nodes.push(Node {
-        bb,
-        a: offset as u32,
-        count: n as u32,
+        bb: Aabb::EMPTY,
+        a: start as u32,
+        count: (end - start) as u32,
     });
-    if n <= LEAF {
-        return;
-    }
-    let mut axis = 0;
-    let mut ext = -1.0;
-    for c in 0..3 {
-        let e = cb.hi[c] - cb.lo[c];
-        if e > ext {
-            ext = e;
-            axis = c;
+    let bb = if end - start <= LEAF {
+        let mut bb = Aabb::EMPTY;
+        for &i in &items[start..end] {
+            bb.union(&boxes[i as usize]);
+        }
+        bb
+    } else {
+        let mid = start + (end - start) / 2;
+        let mut bb = build(boxes, items, start, mid, nodes);
+        let second = nodes.len();
+        bb.union(&build(boxes, items, mid, end, nodes));
+        nodes[me].a = second as u32;
+        nodes[me].count = 0;
+        bb
+    };
+    nodes[me].bb = bb;
+    bb
+}
+
+impl Bvh {
+    /// Calls `f(i, j)` for every item `i` of `self` and `j` of `other`
+    /// whose boxes overlap (closed, `self`'s widened by `margin` in y and
+    /// z), by a simultaneous descent of both
+    /// hierarchies: `O(n + k)` node visits for `k` overlapping pairs in
+    /// typical inputs. The order is deterministic.
+    pub fn pairs(
+        &self,
+        boxes: &[Aabb],
+        other: &Bvh,
+        other_boxes: &[Aabb],
+        margin: f64,
+        mut f: impl FnMut(u32, u32),
+    ) {
+        if self.nodes.is_empty() || other.nodes.is_empty() {
+            return;
+        }
+        let mut stack: Vec<(u32, u32)> = vec![(0, 0)];
+        while let Some((m, n)) = stack.pop() {
+            let (p, q) = (&self.nodes[m as usize], &other.nodes[n as usize]);
+            if !p.bb.widened_yz(margin).overlaps(&q.bb) {
+                continue;
+            }
+            match (p.count > 0, q.count > 0) {
+                (true, true) => {
+                    let (ps, qs) = (p.a as usize, q.a as usize);
+                    for &i in &self.items[ps..ps + p.count as usize] {
+                        let bi = &boxes[i as usize].widened_yz(margin);
+                        if !bi.overlaps(&q.bb) {
+                            continue;
+                        }
+                        for &j in &other.items[qs..qs + q.count as usize] {
+                            if bi.overlaps(&other_boxes[j as usize]) {
+                                f(i, j);
+                            }
+                        }
+                    }
+                }
+                (false, true) => {
+                    stack.push((p.a, n));
+                    stack.push((m + 1, n));
+                }
+                (true, false) => {
+                    stack.push((m, q.a));
+                    stack.push((m, n + 1));
+                }
+                (false, false) => {
+                    // Descend the node with the larger box.
+                    if extent(&p.bb) >= extent(&q.bb) {
+                        stack.push((p.a, n));
+                        stack.push((m + 1, n));
+                    } else {
+                        stack.push((m, q.a));
+                        stack.push((m, n + 1));
+                    }
+                }
+            }
         }
     }
-    let mid = n / 2;
-    items.select_nth_unstable_by(mid, |&p, &q| {
-        centroid(&boxes[p as usize])[axis]
-            .total_cmp(&centroid(&boxes[q as usize])[axis])
-            .then(p.cmp(&q))
-    });
-    let (left, right) = items.split_at_mut(mid);
-    build(boxes, left, offset, mid, nodes);
-    let second = nodes.len();
-    build(boxes, right, offset + mid, n - mid, nodes);
-    nodes[me].a = second as u32;
-    nodes[me].count = 0;
+}
+
+/// The sum of a box's side lengths (halved first so nothing overflows).
+#[inline]
+fn extent(b: &Aabb) -> f64 {
+    (b.hi[0] * 0.5 - b.lo[0] * 0.5)
+        + (b.hi[1] * 0.5 - b.lo[1] * 0.5)
+        + (b.hi[2] * 0.5 - b.lo[2] * 0.5)
 }
 
 #[inline]
@@ -206,5 +303,26 @@ mod tests {
                 .collect();
             assert_eq!(got, want);
         }
+        // Pairs between two hierarchies equal the brute-force pairs.
+        let other: Vec<Aabb> = boxes[..120]
+            .iter()
+            .map(|b| Aabb {
+                lo: [b.lo[1], b.lo[2], b.lo[0]],
+                hi: [b.hi[1], b.hi[2], b.hi[0]],
+            })
+            .collect();
+        let bvh2 = Bvh::new(&other);
+        let mut got = Vec::new();
+        bvh.pairs(&boxes, &bvh2, &other, 0.0, |i, j| got.push((i, j)));
+        got.sort_unstable();
+        let mut want = Vec::new();
+        for i in 0..boxes.len() as u32 {
+            for j in 0..other.len() as u32 {
+                if boxes[i as usize].overlaps(&other[j as usize]) {
+                    want.push((i, j));
+                }
+            }
+        }
+        assert_eq!(got, want);
     }
 }

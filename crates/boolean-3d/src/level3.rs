@@ -182,63 +182,81 @@ enum Side {
     EdgesOfB,
 }
 
-/// All non-zero edge-facet values between the edges of `edges` and the
-/// facets of `facets`, through the broad phase, in parallel chunks whose
-/// results are concatenated in edge order (so the output does not depend
-/// on the thread count).
+/// Evaluates the candidate `(edge, facet)` pairs (sorted, distinct) in
+/// parallel chunks whose results are concatenated in candidate order, so
+/// the output is sorted by edge then facet and does not depend on the
+/// thread count. No heap allocation happens per pair.
 fn edge_facet_hits(
     edges: &Flat<'_>,
     facets: &Flat<'_>,
-    bvh: &Bvh,
-    boxes: &[Aabb],
-    margin: f64,
+    cand: &[(u32, u32)],
     side: Side,
-) -> Result<(Vec<EdgeFacetHit>, usize), Boolean3Error> {
-    let chunks: Vec<(Vec<EdgeFacetHit>, usize)> = (0..edges.edges.len() as u32)
-        .collect::<Vec<_>>()
-        .par_chunks(512)
+) -> Result<Vec<EdgeFacetHit>, Boolean3Error> {
+    let chunks: Vec<Vec<EdgeFacetHit>> = cand
+        .par_chunks(256)
         .map(|chunk| {
             let mut hits = Vec::new();
-            let mut cand: Vec<u32> = Vec::new();
-            let mut n_cand = 0usize;
-            for &e in chunk {
-                let (s, t) = edges.edges[e as usize];
-                if s == t {
-                    continue; // a zero-length edge has X = 0 (its terms cancel)
-                }
+            for &(e, f) in chunk {
                 let (p, q) = edges.edge_points(e);
-                cand.clear();
-                bvh.query(&edge_box(&p, &q).widened_yz(margin), boxes, |f| {
-                    cand.push(f)
-                });
-                cand.sort_unstable();
-                n_cand += cand.len();
-                for &f in &cand {
-                    let r = match side {
-                        Side::EdgesOfA => x12(&p, &q, facets.facet_points(f))?,
-                        Side::EdgesOfB => x21(facets.facet_points(f), &p, &q)?,
-                    };
-                    if let Some((value, point)) = r {
-                        hits.push(EdgeFacetHit {
-                            edge: e,
-                            facet: f,
-                            value,
-                            point,
-                        });
+                let r = match side {
+                    Side::EdgesOfA => x12(&p, &q, facets.facet_points(f))?,
+                    Side::EdgesOfB => x21(facets.facet_points(f), &p, &q)?,
+                };
+                if let Some((value, point)) = r {
+                    hits.push(EdgeFacetHit {
+                        edge: e,
+                        facet: f,
+                        value,
+                        point,
+                    });
+                }
+            }
+            Ok(hits)
+        })
+        .collect::<Result<_, Boolean3Error>>()?;
+    Ok(chunks.concat())
+}
+
+/// The candidate `(edge, facet)` pairs of one side from the overlapping
+/// facet pairs: an edge's box lies in the box of every facet holding one
+/// of its half-edges, so every edge-facet pair with overlapping boxes is
+/// found through some overlapping facet pair. Zero-length edges are left
+/// out (their X is 0: the terms of Table 4.1 cancel). Sorted, distinct.
+fn candidates(
+    fpairs: &[(u32, u32)],
+    edges: &Flat<'_>,
+    facet_boxes: &[Aabb],
+    margin: f64,
+    side: Side,
+) -> Vec<(u32, u32)> {
+    let mut cand: Vec<(u32, u32)> = fpairs
+        .par_chunks(1024)
+        .flat_map_iter(|chunk| {
+            let mut out = Vec::new();
+            for &(fa, fb) in chunk {
+                let (own, other) = match side {
+                    Side::EdgesOfA => (fa, fb),
+                    Side::EdgesOfB => (fb, fa),
+                };
+                let ob = &facet_boxes[other as usize];
+                for h in edges.facet_range(own) {
+                    let e = edges.he_edge[h];
+                    let (s, t) = edges.edges[e as usize];
+                    if s == t {
+                        continue;
+                    }
+                    let (p, q) = edges.edge_points(e);
+                    if edge_box(&p, &q).widened_yz(margin).overlaps(ob) {
+                        out.push((e, other));
                     }
                 }
             }
-            Ok((hits, n_cand))
+            out
         })
-        .collect::<Result<_, Boolean3Error>>()?;
-    let total = chunks.iter().map(|c| c.0.len()).sum();
-    let mut hits = Vec::with_capacity(total);
-    let mut n_cand = 0;
-    for (h, n) in chunks {
-        hits.extend(h);
-        n_cand += n;
-    }
-    Ok((hits, n_cand))
+        .collect();
+    cand.par_sort_unstable();
+    cand.dedup();
+    cand
 }
 
 /// `X03(v, B) = sum_f S02(v, f)` by casting a ray upwards through the
@@ -401,17 +419,30 @@ pub(crate) fn level3(
     b: &Flat<'_>,
     winding: Winding,
 ) -> Result<Level3Data, Boolean3Error> {
-    let boxes_a = a.facet_boxes();
-    let boxes_b = b.facet_boxes();
-    let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    let t0 = std::time::Instant::now();
     let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
     let margin = 4.0 * UNIT_ROUNDOFF * l;
-    let (r12, r21) = rayon::join(
-        || edge_facet_hits(a, b, &bvh_b, &boxes_b, margin, Side::EdgesOfA),
-        || edge_facet_hits(b, a, &bvh_a, &boxes_a, margin, Side::EdgesOfB),
+    let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(), || b.facet_boxes());
+    let tb = std::time::Instant::now();
+    let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    let tc = std::time::Instant::now();
+    // Overlapping facet pairs, B's boxes widened in y and z for this test.
+    let mut fpairs = Vec::new();
+    bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, margin, |i, j| {
+        fpairs.push((i, j))
+    });
+    let td = std::time::Instant::now();
+    let (c12, c21) = rayon::join(
+        || candidates(&fpairs, a, &boxes_b, margin, Side::EdgesOfA),
+        || candidates(&fpairs, b, &boxes_a, margin, Side::EdgesOfB),
     );
-    let (x12, c12) = r12?;
-    let (x21, c21) = r21?;
+    let t1 = std::time::Instant::now();
+    let (r12, r21) = rayon::join(
+        || edge_facet_hits(a, b, &c12, Side::EdgesOfA),
+        || edge_facet_hits(b, a, &c21, Side::EdgesOfB),
+    );
+    let (x12, x21) = (r12?, r21?);
+    let (c12, c21) = (c12.len(), c21.len());
     let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b, margin);
     let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a, margin);
     let (x03, x30, casts) = match winding {
@@ -435,6 +466,18 @@ pub(crate) fn level3(
             (x03, x30, n)
         }
     };
+    if std::env::var_os("B3D_TIMING").is_some() {
+        eprintln!(
+            "  boxes {:?} bvh {:?} fpairs {:?} ({}) cand {:?} ({} cand) hits+winding {:?}",
+            tb - t0,
+            tc - tb,
+            td - tc,
+            fpairs.len(),
+            t1 - td,
+            c12 + c21,
+            t1.elapsed()
+        );
+    }
     Ok(Level3Data {
         edges_a: a.edges.iter().map(|&(s, t)| [s, t]).collect(),
         edges_b: b.edges.iter().map(|&(s, t)| [s, t]).collect(),

@@ -5,7 +5,7 @@
 use crate::bvh::Aabb;
 use rayon::prelude::*;
 use robust_arith::Point3;
-use topology::{PolygonMesh, TriangleMesh};
+use topology::{PolygonMesh, TopologyError, TriangleMesh};
 
 /// One operand in compressed-row form. Indices are `u32` as in `topology`.
 pub(crate) struct Flat<'a> {
@@ -32,68 +32,142 @@ pub(crate) struct Flat<'a> {
 }
 
 impl<'a> Flat<'a> {
-    /// The flat form of a polygon mesh (already validated).
-    pub fn from_polygon_mesh(m: &'a PolygonMesh) -> Self {
+    /// The flat form of a polygon mesh, checking the data definitions and
+    /// topological constraints of section 4.2 on the way (the same checks,
+    /// and the same first violation reported, as
+    /// `PolygonMesh::check_topology`, in linear time).
+    pub fn from_polygon_mesh(m: &'a PolygonMesh) -> Result<Self, TopologyError> {
         let mut he = Vec::with_capacity(m.half_edge_count());
         let mut facet_off = Vec::with_capacity(m.facets.len() + 1);
         facet_off.push(0u32);
         for f in &m.facets {
             he.extend(f.half_edges.iter().map(|h| (h.start, h.end)));
+            if he.len() >= u32::MAX as usize {
+                return Err(TopologyError::DanglingIndex {
+                    entity: "facet",
+                    entity_index: facet_off.len() as u32 - 1,
+                    vertex: u32::MAX,
+                    vertex_count: m.vertices.len() as u32,
+                });
+            }
             facet_off.push(he.len() as u32);
         }
-        Self::build(&m.vertices, he, facet_off)
+        Self::build(&m.vertices, he, facet_off, "facet")
     }
 
-    /// The flat form of a triangle mesh (already validated): triangle
-    /// `[a, b, c]` has half-edges `a->b, b->c, c->a`.
-    pub fn from_triangle_mesh(m: &'a TriangleMesh) -> Self {
+    /// The flat form of a triangle mesh, checked like
+    /// `TriangleMesh::check_topology`: triangle `[a, b, c]` has half-edges
+    /// `a->b, b->c, c->a`.
+    pub fn from_triangle_mesh(m: &'a TriangleMesh) -> Result<Self, TopologyError> {
         let he: Vec<(u32, u32)> = m
             .triangles
             .iter()
             .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
             .collect();
         let facet_off = (0..=m.triangles.len() as u32).map(|i| 3 * i).collect();
-        Self::build(&m.vertices, he, facet_off)
+        Self::build(&m.vertices, he, facet_off, "triangle")
     }
 
-    fn build(pos: &'a [Point3], he: Vec<(u32, u32)>, facet_off: Vec<u32>) -> Self {
+    fn build(
+        pos: &'a [Point3],
+        he: Vec<(u32, u32)>,
+        facet_off: Vec<u32>,
+        entity: &'static str,
+    ) -> Result<Self, TopologyError> {
         let n_he = he.len();
+        let n_v = pos.len();
+        // Data definitions: every index refers to a vertex.
+        let vertex_count = n_v as u32;
+        // The first half-edge in facet order with a dangling index names
+        // the facet; its start is checked before its end.
+        if let Some(h) = he
+            .iter()
+            .position(|&(s, e)| s as usize >= n_v || e as usize >= n_v)
+        {
+            let f = facet_off.partition_point(|&o| o as usize <= h) - 1;
+            let (s, e) = he[h];
+            return Err(TopologyError::DanglingIndex {
+                entity,
+                entity_index: f as u32,
+                vertex: if s as usize >= n_v { s } else { e },
+                vertex_count,
+            });
+        }
         let mut he_facet = vec![0u32; n_he];
         for (f, w) in facet_off.windows(2).enumerate() {
             for slot in &mut he_facet[w[0] as usize..w[1] as usize] {
                 *slot = f as u32;
             }
         }
-        // Group half-edges into edges by their unordered vertex pair; the
-        // sort key makes the edge numbering independent of thread count.
-        let mut keyed: Vec<(u64, u32)> = he
-            .iter()
-            .enumerate()
-            .map(|(i, &(s, e))| {
-                let (lo, hi) = if s <= e { (s, e) } else { (e, s) };
-                ((u64::from(lo) << 32) | u64::from(hi), i as u32)
-            })
-            .collect();
-        keyed.par_sort_unstable();
-        let mut edges = Vec::new();
-        let mut edge_off = Vec::new();
-        let mut edge_he = Vec::with_capacity(n_he);
+        // Facet boundary closure (triangles satisfy it by construction).
+        if entity == "facet" {
+            check_facet_closure(&he, &facet_off)?;
+        }
+        // Group half-edges into edges by their unordered vertex pair: a
+        // counting sort by the lower vertex, then a sort of each (small)
+        // bucket by the higher vertex and half-edge index. The edge
+        // numbering, by (lower, higher), is independent of thread count.
+        let lohi = |h: usize| {
+            let (s, e) = he[h];
+            if s <= e {
+                (s, e)
+            } else {
+                (e, s)
+            }
+        };
+        let mut bucket = vec![0u32; n_v + 1];
+        for h in 0..n_he {
+            bucket[lohi(h).0 as usize + 1] += 1;
+        }
+        for v in 0..n_v {
+            bucket[v + 1] += bucket[v];
+        }
+        let mut fill = bucket.clone();
+        let mut edge_he = vec![0u32; n_he];
+        for h in 0..n_he {
+            let lo = lohi(h).0 as usize;
+            edge_he[fill[lo] as usize] = h as u32;
+            fill[lo] += 1;
+        }
+        for v in 0..n_v {
+            let slice = &mut edge_he[bucket[v] as usize..bucket[v + 1] as usize];
+            if slice.len() > 1 {
+                slice.sort_unstable_by_key(|&h| (lohi(h as usize).1, h));
+            }
+        }
+        let mut edges = Vec::with_capacity(n_he / 2 + 1);
+        let mut edge_off = Vec::with_capacity(n_he / 2 + 2);
         let mut he_edge = vec![0u32; n_he];
         let mut he_fwd = vec![true; n_he];
-        let mut last = u64::MAX;
-        for &(key, h) in &keyed {
+        let mut last = (u32::MAX, u32::MAX);
+        // Shape boundary closure: forward and backward counts per edge.
+        let mut fwd_back = (0u32, 0u32);
+        for (k, &h) in edge_he.iter().enumerate() {
+            let key = lohi(h as usize);
             if key != last {
+                if edges.last().is_some() {
+                    check_shape_closure(last, fwd_back)?;
+                }
                 last = key;
-                edge_off.push(edge_he.len() as u32);
-                edges.push(((key >> 32) as u32, key as u32));
+                fwd_back = (0, 0);
+                edge_off.push(k as u32);
+                edges.push(key);
             }
             let e = edges.len() as u32 - 1;
+            let (s, t) = he[h as usize];
             he_edge[h as usize] = e;
-            he_fwd[h as usize] = he[h as usize].0 <= he[h as usize].1;
-            edge_he.push(h);
+            he_fwd[h as usize] = s <= t;
+            if s < t {
+                fwd_back.0 += 1;
+            } else if s > t {
+                fwd_back.1 += 1;
+            }
         }
-        edge_off.push(edge_he.len() as u32);
-        Flat {
+        if edges.last().is_some() {
+            check_shape_closure(last, fwd_back)?;
+        }
+        edge_off.push(n_he as u32);
+        Ok(Flat {
             pos,
             he,
             facet_off,
@@ -103,7 +177,7 @@ impl<'a> Flat<'a> {
             edges,
             edge_off,
             edge_he,
-        }
+        })
     }
 
     /// The number of facets.
@@ -162,4 +236,61 @@ impl<'a> Flat<'a> {
             })
             .collect()
     }
+}
+
+/// Shape boundary closure for one edge: as many half-edges each way.
+fn check_shape_closure(
+    key: (u32, u32),
+    (forward, backward): (u32, u32),
+) -> Result<(), TopologyError> {
+    if key.0 != key.1 && forward != backward {
+        return Err(TopologyError::ShapeClosure3 {
+            start: key.0,
+            end: key.1,
+            forward,
+            backward,
+        });
+    }
+    Ok(())
+}
+
+/// Facet boundary closure of every facet: each vertex ends as many of the
+/// facet's half-edges as it starts. Reports the first facet and, in it,
+/// the lowest vertex that fails.
+fn check_facet_closure(he: &[(u32, u32)], facet_off: &[u32]) -> Result<(), TopologyError> {
+    let mut scratch: Vec<(u32, bool)> = Vec::new();
+    for (f, w) in facet_off.windows(2).enumerate() {
+        let hes = &he[w[0] as usize..w[1] as usize];
+        if hes.len() == 3 && hes[0].1 == hes[1].0 && hes[1].1 == hes[2].0 && hes[2].1 == hes[0].0 {
+            continue; // a triangle loop is closed
+        }
+        scratch.clear();
+        for &(s, e) in hes {
+            scratch.push((e, true));
+            scratch.push((s, false));
+        }
+        scratch.sort_unstable();
+        let mut i = 0;
+        while i < scratch.len() {
+            let v = scratch[i].0;
+            let (mut ending, mut starting) = (0u32, 0u32);
+            while i < scratch.len() && scratch[i].0 == v {
+                if scratch[i].1 {
+                    ending += 1;
+                } else {
+                    starting += 1;
+                }
+                i += 1;
+            }
+            if ending != starting {
+                return Err(TopologyError::FacetClosure {
+                    facet: f as u32,
+                    vertex: v,
+                    ending,
+                    starting,
+                });
+            }
+        }
+    }
+    Ok(())
 }

@@ -1,0 +1,122 @@
+//! Times sphere minus a sphere shifted by half its radius (UV spheres of
+//! about 2k to 200k triangles per operand), triangle-mesh variant and
+//! polygon-mesh variant, and prints milliseconds.
+//!
+//! Run with `cargo run --release -p boolean-3d --example sphere_diff`
+//! (optionally `-- 2000 20000` for chosen triangle counts; set
+//! `RAYON_NUM_THREADS=1` for one thread).
+
+use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
+use std::time::Instant;
+use topology::TriangleMesh;
+
+/// A UV sphere with `slices` segments and `stacks` bands:
+/// `2 slices (stacks - 1)` triangles.
+fn uv_sphere(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> TriangleMesh {
+    let mut v = vec![[c[0], c[1], c[2] + r]];
+    for i in 1..stacks {
+        let th = std::f64::consts::PI * f64::from(i) / f64::from(stacks);
+        for j in 0..slices {
+            let ph = 2.0 * std::f64::consts::PI * f64::from(j) / f64::from(slices);
+            v.push([
+                c[0] + r * th.sin() * ph.cos(),
+                c[1] + r * th.sin() * ph.sin(),
+                c[2] + r * th.cos(),
+            ]);
+        }
+    }
+    v.push([c[0], c[1], c[2] - r]);
+    let south = v.len() as u32 - 1;
+    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
+    let mut t = Vec::new();
+    for j in 0..slices {
+        t.push([0, ring(1, j), ring(1, j + 1)]);
+        t.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
+    }
+    for i in 1..stacks - 1 {
+        for j in 0..slices {
+            let (a, b, c2, d) = (
+                ring(i, j),
+                ring(i, j + 1),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+            );
+            t.push([a, c2, d]);
+            t.push([a, d, b]);
+        }
+    }
+    TriangleMesh::new(v, t)
+}
+
+fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
+    let mut best = f64::INFINITY;
+    let mut last = None;
+    for _ in 0..runs {
+        let t = Instant::now();
+        let r = f();
+        best = best.min(t.elapsed().as_secs_f64() * 1e3);
+        last = Some(r);
+    }
+    match last {
+        Some(r) => (best, r),
+        None => (best, f()),
+    }
+}
+
+fn main() {
+    let sizes: Vec<u32> = {
+        let args: Vec<u32> = std::env::args()
+            .skip(1)
+            .filter_map(|a| a.parse().ok())
+            .collect();
+        if args.is_empty() {
+            vec![2_000, 20_000, 200_000]
+        } else {
+            args
+        }
+    };
+    println!(
+        "threads: {}  (sphere r = 1 minus sphere shifted by (0.5, 0.013, 0.007))",
+        rayon::current_num_threads()
+    );
+    println!(
+        "triangles/operand  variant    ms(best of 3)  out_vertices  out_facets  intersections"
+    );
+    for n in sizes {
+        // 2 s (s/2 - 1) ~ n with stacks = slices / 2.
+        let slices = ((n as f64).sqrt().round() as u32).max(4);
+        let stacks = (slices / 2).max(3);
+        let a = uv_sphere([0.0; 3], 1.0, slices, stacks);
+        let b = uv_sphere([0.5, 0.013, 0.007], 1.0, slices, stacks);
+        let (ms, out) = best_of(3, || boolean_triangles(&a, &b, BooleanOp3::Difference));
+        match out {
+            Ok(o) => {
+                let valid = o.mesh.check_topology().is_ok();
+                println!(
+                    "{:>17}  triangles {:>13.2}  {:>12}  {:>10}  {:>13}  valid={valid} volume={:.6}",
+                    a.triangles.len(),
+                    ms,
+                    o.mesh.vertices.len(),
+                    o.mesh.triangles.len(),
+                    o.intersections,
+                    o.mesh.signed_volume()
+                );
+            }
+            Err(e) => println!("{n}: error {e}"),
+        }
+        let (pa, pb) = (a.to_polygon_mesh(), b.to_polygon_mesh());
+        let (ms, out) = best_of(3, || boolean_mesh(&pa, &pb, BooleanOp3::Difference));
+        match out {
+            Ok(o) => println!(
+                "{:>17}  polygons  {:>13.2}  {:>12}  {:>10}  {:>13}  valid={}",
+                a.triangles.len(),
+                ms,
+                o.mesh.vertices.len(),
+                o.mesh.facets.len(),
+                o.intersections,
+                o.mesh.check_topology().is_ok()
+            ),
+            Err(e) => println!("{n}: error {e}"),
+        }
+    }
+}

@@ -1,0 +1,142 @@
+//! Bad input: every operand is validated first, the error names the operand
+//! and the violated constraint exactly as `topology`'s checks do, and
+//! nothing panics.
+
+mod common;
+
+use boolean_3d::{boolean_mesh, boolean_triangles, Boolean3Error, BooleanOp3, Operand};
+use common::{box_mesh, icosphere, Rng};
+use proptest::prelude::*;
+use topology::{Facet, HalfEdge, PolygonMesh, TopologyError};
+
+#[test]
+fn nan_and_huge_coordinates_are_rejected_with_the_vertex_named() {
+    let good = box_mesh([0.0; 3], [1.0; 3]);
+    let mut bad = good.clone();
+    bad.vertices[3][1] = f64::NAN;
+    let err = boolean_mesh(&good, &bad, BooleanOp3::Union).unwrap_err();
+    assert!(matches!(
+        err,
+        Boolean3Error::InvalidInput {
+            operand: Operand::B,
+            source: TopologyError::BadCoordinate {
+                vertex: 3,
+                axis: 1,
+                ..
+            }
+        }
+    ));
+    assert!(err.to_string().contains("operand B"));
+    bad.vertices[3][1] = f64::MAX;
+    assert!(boolean_mesh(&bad, &good, BooleanOp3::Union).is_err());
+}
+
+#[test]
+fn open_mesh_and_dangling_index_are_rejected() {
+    let good = box_mesh([0.0; 3], [1.0; 3]);
+    let mut open = good.clone();
+    open.facets.pop();
+    let err = boolean_mesh(&open, &good, BooleanOp3::Difference).unwrap_err();
+    assert_eq!(
+        err,
+        Boolean3Error::InvalidInput {
+            operand: Operand::A,
+            source: open.check_topology().unwrap_err()
+        }
+    );
+    let mut dangling = good.clone();
+    dangling.facets[2].half_edges[1].end = 99;
+    let err = boolean_mesh(&good, &dangling, BooleanOp3::Difference).unwrap_err();
+    assert!(err.to_string().contains("dangling"), "{err}");
+    let mut t = icosphere([0.0; 3], 1.0, 1);
+    t.triangles[5][2] = 1000;
+    let err = boolean_triangles(&t, &t, BooleanOp3::Union).unwrap_err();
+    assert_eq!(
+        err,
+        Boolean3Error::InvalidInput {
+            operand: Operand::A,
+            source: t.check_topology().unwrap_err()
+        }
+    );
+}
+
+/// Random damage to a valid mesh: remove, reverse, redirect or add a
+/// half-edge, or make an index dangle.
+fn damage(m: &mut PolygonMesh, rng: &mut Rng) {
+    let nf = m.facets.len() as u64;
+    let f = rng.int(nf) as usize;
+    let nh = m.facets[f].half_edges.len() as u64;
+    let h = rng.int(nh.max(1)) as usize;
+    match rng.int(5) {
+        0 => {
+            m.facets[f].half_edges.remove(h);
+        }
+        1 => {
+            let e = &mut m.facets[f].half_edges[h];
+            std::mem::swap(&mut e.start, &mut e.end);
+        }
+        2 => m.facets[f].half_edges[h].end = rng.int(m.vertices.len() as u64) as u32,
+        3 => m.facets[f].half_edges.push(HalfEdge {
+            start: rng.int(m.vertices.len() as u64) as u32,
+            end: rng.int(m.vertices.len() as u64) as u32,
+        }),
+        _ => m.facets[f].half_edges[h].start = m.vertices.len() as u32 + rng.int(3) as u32,
+    }
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+
+    /// The Boolean accepts exactly the meshes `check_topology` accepts and
+    /// reports the same first violation.
+    #[test]
+    fn validation_agrees_with_check_topology(seed in any::<u64>(), which in 0u32..3) {
+        let mut rng = Rng(seed);
+        let mut m = match which {
+            0 => box_mesh([0.0; 3], [1.0; 3]),
+            1 => icosphere([0.0; 3], 1.0, 1).to_polygon_mesh(),
+            _ => PolygonMesh::new(
+                box_mesh([0.0; 3], [1.0; 3]).vertices,
+                vec![Facet::from_loop(&[0, 1, 3, 2]), Facet::from_loop(&[0, 2, 3, 1])],
+            ),
+        };
+        damage(&mut m, &mut rng);
+        let good = box_mesh([0.5; 3], [2.0; 3]);
+        let r = boolean_mesh(&good, &m, BooleanOp3::Intersection);
+        match m.check_topology() {
+            Ok(()) => {
+                let out = r.unwrap();
+                prop_assert_eq!(out.mesh.check_topology(), Ok(()));
+            }
+            Err(e) => prop_assert_eq!(
+                r.unwrap_err(),
+                Boolean3Error::InvalidInput { operand: Operand::B, source: e }
+            ),
+        }
+        let t = boolean_3d::triangulate_mesh(&m);
+        if t.check_topology().is_err() {
+            let r = boolean_triangles(&t, &t, BooleanOp3::Union);
+            prop_assert_eq!(
+                r.unwrap_err(),
+                Boolean3Error::InvalidInput { operand: Operand::A, source: t.check_topology().unwrap_err() }
+            );
+        }
+    }
+}
+
+#[test]
+fn empty_operands_are_fine() {
+    let empty = PolygonMesh::default();
+    let a = box_mesh([0.0; 3], [1.0; 3]);
+    for op in BooleanOp3::ALL {
+        let out = boolean_mesh(&a, &empty, op).unwrap();
+        assert_eq!(out.mesh.check_topology(), Ok(()));
+        let expect = if op == BooleanOp3::Intersection { 0 } else { 6 };
+        assert_eq!(out.mesh.facets.len(), expect, "{op:?}");
+        let out = boolean_mesh(&empty, &a, op).unwrap();
+        let expect = if op == BooleanOp3::Union { 6 } else { 0 };
+        assert_eq!(out.mesh.facets.len(), expect, "{op:?}");
+    }
+    let out = boolean_mesh(&empty, &empty, BooleanOp3::Union).unwrap();
+    assert!(out.mesh.facets.is_empty());
+}
