@@ -139,13 +139,8 @@ fn run(
     op: BooleanOp3,
     audit: bool,
 ) -> Result<(Retained, Level3Data, Option<Audit>), Boolean3Error> {
-    let t0 = std::time::Instant::now();
     let l3 = level3_fast(a, b, Winding::Propagate)?;
-    let t1 = std::time::Instant::now();
     let retained = construct(a, b, &l3, op, audit)?;
-    if std::env::var_os("B3D_TIMING").is_some() {
-        eprintln!("level3 {:?} construct {:?}", t1 - t0, t1.elapsed());
-    }
     let audit = if audit {
         Some(make_audit(a, b, op, &l3, &retained)?)
     } else {
@@ -166,8 +161,8 @@ fn make_audit(
     let (ca, cb, ci) = (i64::from(ca), i64::from(cb), i64::from(ci));
     let i03 = |v: u32| ca + ci * i64::from(l3.x03[v as usize]);
     let i30 = |v: u32| cb + ci * i64::from(l3.x30[v as usize]);
-    let ra = a.referenced();
-    let rb = b.referenced();
+    let ra = &a.referenced;
+    let rb = &b.referenced;
     let mut net = Vec::new();
     // eq. 4.21: E13(e_A, B) = I03(v_e) - I03(v_s) + sum_f I12(e_A, f).
     let mut e13: Vec<i64> = a
@@ -192,16 +187,14 @@ fn make_audit(
     let mut e22: HashMap<(u32, u32), i64> = HashMap::new();
     for h in &l3.x12 {
         for &he in a.edge_half_edges(h.edge) {
-            let dir = if a.he_fwd[he as usize] { 1 } else { -1 };
-            *e22.entry((a.he_facet[he as usize], h.facet)).or_default() -=
-                ci * i64::from(h.value) * dir;
+            let dir = if a.he_fwd(he) { 1 } else { -1 };
+            *e22.entry((a.he_facet(he), h.facet)).or_default() -= ci * i64::from(h.value) * dir;
         }
     }
     for h in &l3.x21 {
         for &he in b.edge_half_edges(h.edge) {
-            let dir = if b.he_fwd[he as usize] { 1 } else { -1 };
-            *e22.entry((h.facet, b.he_facet[he as usize])).or_default() +=
-                ci * i64::from(h.value) * dir;
+            let dir = if b.he_fwd(he) { 1 } else { -1 };
+            *e22.entry((h.facet, b.he_facet(he))).or_default() += ci * i64::from(h.value) * dir;
         }
     }
     let mut e22: Vec<_> = e22.into_iter().collect();
@@ -360,25 +353,10 @@ fn boolean_triangles_impl(
     op: BooleanOp3,
     audit: bool,
 ) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
-    let t0 = std::time::Instant::now();
-    let t1 = std::time::Instant::now();
     let (fa, fb) = flat_pair(a, b, flat_triangles)?;
-    let t2 = std::time::Instant::now();
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
-    let t3 = std::time::Instant::now();
-    let mesh = to_triangle_mesh(r);
-    let t4 = std::time::Instant::now();
-    if std::env::var_os("B3D_TIMING").is_some() {
-        eprintln!(
-            "validate {:?} flat {:?} run {:?} tri {:?}",
-            t1 - t0,
-            t2 - t1,
-            t3 - t2,
-            t4 - t3
-        );
-    }
     let out = TriangleOutput {
-        mesh,
+        mesh: to_triangle_mesh(r),
         intersections: l3.x12.len() + l3.x21.len(),
     };
     Ok((out, audit))

@@ -92,12 +92,11 @@ impl Bvh {
         for &i in &live {
             cb.add(&centroid(&boxes[i as usize]));
         }
-        let mut keyed: Vec<(u64, u32)> = live
+        let keys: Vec<u32> = live
             .par_iter()
-            .map(|&i| (morton(&centroid(&boxes[i as usize]), &cb), i))
+            .map(|&i| morton(&centroid(&boxes[i as usize]), &cb))
             .collect();
-        keyed.par_sort_unstable();
-        let items: Vec<u32> = keyed.into_iter().map(|(_, i)| i).collect();
+        let items = radix_sort_by_key(&live, &keys);
         let mut nodes = Vec::with_capacity(2 * items.len() / LEAF + 2);
         if !items.is_empty() {
             build(boxes, &items, 0, items.len(), &mut nodes);
@@ -134,8 +133,34 @@ impl Bvh {
     }
 }
 
-/// The 63-bit Morton code of `p` quantised to 21 bits per axis within `cb`.
-fn morton(p: &[f64; 3], cb: &Aabb) -> u64 {
+/// A stable least-significant-digit radix sort of `items` by the 30-bit
+/// `keys` (three passes of 10 bits): linear time, and ties keep their input
+/// order, so the result is deterministic.
+fn radix_sort_by_key(items: &[u32], keys: &[u32]) -> Vec<u32> {
+    let n = items.len();
+    let mut idx: Vec<u32> = (0..n as u32).collect();
+    let mut tmp = vec![0u32; n];
+    for pass in 0..3 {
+        let shift = 10 * pass;
+        let mut count = [0usize; 1025];
+        for &k in keys {
+            count[((k >> shift) & 1023) as usize + 1] += 1;
+        }
+        for d in 0..1024 {
+            count[d + 1] += count[d];
+        }
+        for &i in &idx {
+            let d = ((keys[i as usize] >> shift) & 1023) as usize;
+            tmp[count[d]] = i;
+            count[d] += 1;
+        }
+        std::mem::swap(&mut idx, &mut tmp);
+    }
+    idx.into_iter().map(|i| items[i as usize]).collect()
+}
+
+/// The 30-bit Morton code of `p` quantised to 10 bits per axis within `cb`.
+fn morton(p: &[f64; 3], cb: &Aabb) -> u32 {
     let mut code = 0u64;
     for (c, &pc) in p.iter().enumerate() {
         // Halves first so that huge coordinates cannot overflow.
@@ -145,10 +170,10 @@ fn morton(p: &[f64; 3], cb: &Aabb) -> u64 {
         } else {
             0.0
         };
-        let q = (t.clamp(0.0, 1.0) * 2_097_151.0) as u64;
+        let q = (t.clamp(0.0, 1.0) * 1023.0) as u64;
         code |= spread(q) << c;
     }
-    code
+    code as u32
 }
 
 /// Spreads the low 21 bits of `x` to every third bit.

@@ -181,8 +181,8 @@ pub(crate) fn construct(
     record: bool,
 ) -> Result<Retained, Boolean3Error> {
     let (ca, cb, ci) = op.coefficients();
-    let ra = a.referenced();
-    let rb = b.referenced();
+    let ra = &a.referenced;
+    let rb = &b.referenced;
     // Inclusion values of vertices, eq. 4.7 and 4.10.
     let i03: Vec<i32> = (0..a.pos.len())
         .map(|v| if ra[v] { ca + ci * l3.x03[v] } else { 0 })
@@ -237,9 +237,9 @@ pub(crate) fn construct(
     let mut entries: Vec<PairEntry> = Vec::new();
     for (j, hit) in l3.x12.iter().enumerate() {
         for &h in a.edge_half_edges(hit.edge) {
-            let dir = if a.he_fwd[h as usize] { 1 } else { -1 };
+            let dir = if a.he_fwd(h) { 1 } else { -1 };
             entries.push(PairEntry {
-                fa: a.he_facet[h as usize],
+                fa: a.he_facet(h),
                 fb: hit.facet,
                 id: base12 + j as u32,
                 count: -(ci * hit.value * dir),
@@ -249,10 +249,10 @@ pub(crate) fn construct(
     }
     for (j, hit) in l3.x21.iter().enumerate() {
         for &h in b.edge_half_edges(hit.edge) {
-            let dir = if b.he_fwd[h as usize] { 1 } else { -1 };
+            let dir = if b.he_fwd(h) { 1 } else { -1 };
             entries.push(PairEntry {
                 fa: hit.facet,
-                fb: b.he_facet[h as usize],
+                fb: b.he_facet(h),
                 id: base21 + j as u32,
                 count: ci * hit.value * dir,
                 pos: hit.point,
@@ -375,7 +375,7 @@ fn retained_facets(
                 let before = hes.len();
                 for h in mesh.facet_range(f) {
                     let e = mesh.he_edge[h] as usize;
-                    let fwd = mesh.he_fwd[h];
+                    let fwd = mesh.he_fwd(h as u32);
                     for &(s, t) in &segs.seg[segs.off[e] as usize..segs.off[e + 1] as usize] {
                         if s != t {
                             hes.push(if fwd { (s, t) } else { (t, s) });

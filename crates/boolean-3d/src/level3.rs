@@ -345,7 +345,7 @@ fn propagate(
             fill[t as usize] += 1;
         }
     }
-    let referenced = mesh.referenced();
+    let referenced = &mesh.referenced;
     let mut seen = vec![false; n];
     // (vertex, edge it was reached by, or u32::MAX for a root)
     let mut order: Vec<(u32, u32)> = Vec::with_capacity(n);
@@ -419,24 +419,19 @@ pub(crate) fn level3(
     b: &Flat<'_>,
     winding: Winding,
 ) -> Result<Level3Data, Boolean3Error> {
-    let t0 = std::time::Instant::now();
     let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
     let margin = 4.0 * UNIT_ROUNDOFF * l;
     let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(), || b.facet_boxes());
-    let tb = std::time::Instant::now();
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
-    let tc = std::time::Instant::now();
     // Overlapping facet pairs, B's boxes widened in y and z for this test.
     let mut fpairs = Vec::new();
     bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, margin, |i, j| {
         fpairs.push((i, j))
     });
-    let td = std::time::Instant::now();
     let (c12, c21) = rayon::join(
         || candidates(&fpairs, a, &boxes_b, margin, Side::EdgesOfA),
         || candidates(&fpairs, b, &boxes_a, margin, Side::EdgesOfB),
     );
-    let t1 = std::time::Instant::now();
     let (r12, r21) = rayon::join(
         || edge_facet_hits(a, b, &c12, Side::EdgesOfA),
         || edge_facet_hits(b, a, &c21, Side::EdgesOfB),
@@ -452,8 +447,8 @@ pub(crate) fn level3(
             (x03, x30, n03 + n30)
         }
         Winding::CastEach => {
-            let ra = a.referenced();
-            let rb = b.referenced();
+            let ra = &a.referenced;
+            let rb = &b.referenced;
             let x03 = (0..a.pos.len())
                 .into_par_iter()
                 .map(|i| if ra[i] { cast03(&a.pos[i]) } else { Ok(0) })
@@ -466,18 +461,6 @@ pub(crate) fn level3(
             (x03, x30, n)
         }
     };
-    if std::env::var_os("B3D_TIMING").is_some() {
-        eprintln!(
-            "  boxes {:?} bvh {:?} fpairs {:?} ({}) cand {:?} ({} cand) hits+winding {:?}",
-            tb - t0,
-            tc - tb,
-            td - tc,
-            fpairs.len(),
-            t1 - td,
-            c12 + c21,
-            t1.elapsed()
-        );
-    }
     Ok(Level3Data {
         edges_a: a.edges.iter().map(|&(s, t)| [s, t]).collect(),
         edges_b: b.edges.iter().map(|&(s, t)| [s, t]).collect(),
@@ -522,8 +505,8 @@ pub(crate) fn level3_brute(a: &Flat<'_>, b: &Flat<'_>) -> Result<Level3Data, Boo
             }
         }
     }
-    let ra = a.referenced();
-    let rb = b.referenced();
+    let ra = &a.referenced;
+    let rb = &b.referenced;
     let mut x03 = vec![0; a.pos.len()];
     for (i, v) in a.pos.iter().enumerate() {
         if ra[i] {

@@ -15,13 +15,12 @@ pub(crate) struct Flat<'a> {
     pub he: Vec<(u32, u32)>,
     /// `facet_off[f]..facet_off[f + 1]` are the half-edges of facet `f`.
     pub facet_off: Vec<u32>,
-    /// The facet of each half-edge.
-    pub he_facet: Vec<u32>,
     /// The edge of each half-edge.
     pub he_edge: Vec<u32>,
-    /// Whether each half-edge is a forward half-edge of its edge (section
-    /// 4.2). Zero-length half-edges count as forward.
-    pub he_fwd: Vec<bool>,
+    /// Whether each vertex is referenced by some half-edge.
+    pub referenced: Vec<bool>,
+    /// Whether every facet is a triangle `3f, 3f + 1, 3f + 2`.
+    triangles: bool,
     /// The edges `(start, end)` with `start <= end` (vertex indices): the
     /// forward direction of an edge runs from the lower index to the higher.
     pub edges: Vec<(u32, u32)>,
@@ -93,12 +92,6 @@ impl<'a> Flat<'a> {
                 vertex_count,
             });
         }
-        let mut he_facet = vec![0u32; n_he];
-        for (f, w) in facet_off.windows(2).enumerate() {
-            for slot in &mut he_facet[w[0] as usize..w[1] as usize] {
-                *slot = f as u32;
-            }
-        }
         // Facet boundary closure (triangles satisfy it by construction).
         if entity == "facet" {
             check_facet_closure(&he, &facet_off)?;
@@ -115,6 +108,11 @@ impl<'a> Flat<'a> {
                 (e, s)
             }
         };
+        let mut referenced = vec![false; n_v];
+        for &(s, e) in &he {
+            referenced[s as usize] = true;
+            referenced[e as usize] = true;
+        }
         let mut bucket = vec![0u32; n_v + 1];
         for h in 0..n_he {
             bucket[lohi(h).0 as usize + 1] += 1;
@@ -138,7 +136,6 @@ impl<'a> Flat<'a> {
         let mut edges = Vec::with_capacity(n_he / 2 + 1);
         let mut edge_off = Vec::with_capacity(n_he / 2 + 2);
         let mut he_edge = vec![0u32; n_he];
-        let mut he_fwd = vec![true; n_he];
         let mut last = (u32::MAX, u32::MAX);
         // Shape boundary closure: forward and backward counts per edge.
         let mut fwd_back = (0u32, 0u32);
@@ -156,7 +153,6 @@ impl<'a> Flat<'a> {
             let e = edges.len() as u32 - 1;
             let (s, t) = he[h as usize];
             he_edge[h as usize] = e;
-            he_fwd[h as usize] = s <= t;
             if s < t {
                 fwd_back.0 += 1;
             } else if s > t {
@@ -171,9 +167,9 @@ impl<'a> Flat<'a> {
             pos,
             he,
             facet_off,
-            he_facet,
             he_edge,
-            he_fwd,
+            referenced,
+            triangles: entity == "triangle",
             edges,
             edge_off,
             edge_he,
@@ -213,14 +209,22 @@ impl<'a> Flat<'a> {
         (self.pos[s as usize], self.pos[t as usize])
     }
 
-    /// Which vertices are referenced by at least one half-edge.
-    pub fn referenced(&self) -> Vec<bool> {
-        let mut r = vec![false; self.pos.len()];
-        for &(s, e) in &self.he {
-            r[s as usize] = true;
-            r[e as usize] = true;
+    /// The facet holding half-edge `h`.
+    #[inline]
+    pub fn he_facet(&self, h: u32) -> u32 {
+        if self.triangles {
+            h / 3
+        } else {
+            (self.facet_off.partition_point(|&o| o <= h) - 1) as u32
         }
-        r
+    }
+
+    /// Whether half-edge `h` is a forward half-edge of its edge (section
+    /// 4.2); zero-length half-edges count as forward.
+    #[inline]
+    pub fn he_fwd(&self, h: u32) -> bool {
+        let (s, e) = self.he[h as usize];
+        s <= e
     }
 
     /// The closed bounding box of every facet.
