@@ -1,6 +1,8 @@
 //! Times sphere minus a sphere shifted by half its radius (UV spheres of
-//! about 2k to 200k triangles per operand), triangle-mesh variant and
-//! polygon-mesh variant, and prints milliseconds.
+//! about 2k to 200k triangles per operand): the triangle-mesh variant, the
+//! polygon-mesh variant on the same triangles, and the polygon-mesh variant
+//! on the quadrilateral UV sphere with the same vertices; prints
+//! milliseconds (best of 3).
 //!
 //! Run with `cargo run --release -p boolean-3d --example sphere_diff`
 //! (optionally `-- 2000 20000` for chosen triangle counts; set
@@ -8,7 +10,7 @@
 
 use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
 use std::time::Instant;
-use topology::TriangleMesh;
+use topology::{Facet, PolygonMesh, TriangleMesh};
 
 /// A UV sphere with `slices` segments and `stacks` bands:
 /// `2 slices (stacks - 1)` triangles.
@@ -46,6 +48,34 @@ fn uv_sphere(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> TriangleMesh {
         }
     }
     TriangleMesh::new(v, t)
+}
+
+/// The same UV sphere as a polygon mesh of quadrilaterals (triangles at
+/// the poles): about half as many facets for the same vertices.
+fn uv_sphere_quads(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> PolygonMesh {
+    let t = uv_sphere(c, r, slices, stacks);
+    let south = t.vertices.len() as u32 - 1;
+    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
+    let mut f = Vec::new();
+    for j in 0..slices {
+        f.push(Facet::from_loop(&[0, ring(1, j), ring(1, j + 1)]));
+        f.push(Facet::from_loop(&[
+            south,
+            ring(stacks - 1, j + 1),
+            ring(stacks - 1, j),
+        ]));
+    }
+    for i in 1..stacks - 1 {
+        for j in 0..slices {
+            f.push(Facet::from_loop(&[
+                ring(i, j),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+                ring(i, j + 1),
+            ]));
+        }
+    }
+    PolygonMesh::new(t.vertices, f)
 }
 
 fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
@@ -115,6 +145,24 @@ fn main() {
                 o.mesh.facets.len(),
                 o.intersections,
                 o.mesh.check_topology().is_ok()
+            ),
+            Err(e) => println!("{n}: error {e}"),
+        }
+        let (qa, qb) = (
+            uv_sphere_quads([0.0; 3], 1.0, slices, stacks),
+            uv_sphere_quads([0.5, 0.013, 0.007], 1.0, slices, stacks),
+        );
+        let (ms, out) = best_of(3, || boolean_mesh(&qa, &qb, BooleanOp3::Difference));
+        match out {
+            Ok(o) => println!(
+                "{:>17}  quads     {:>13.2}  {:>12}  {:>10}  {:>13}  valid={} ({} quad facets/operand)",
+                a.triangles.len(),
+                ms,
+                o.mesh.vertices.len(),
+                o.mesh.facets.len(),
+                o.intersections,
+                o.mesh.check_topology().is_ok(),
+                qa.facets.len()
             ),
             Err(e) => println!("{n}: error {e}"),
         }

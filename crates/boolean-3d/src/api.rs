@@ -109,6 +109,11 @@ impl Audit {
 /// Validates a polygon mesh operand (coordinates, then the constraints of
 /// section 4.2) and builds its flat form.
 fn flat_polygon(m: &PolygonMesh, operand: Operand) -> Result<Flat<'_>, Boolean3Error> {
+    if m.half_edge_count() >= u32::MAX as usize || m.facets.len() >= u32::MAX as usize {
+        return Err(Boolean3Error::TooLarge {
+            what: "input half-edges",
+        });
+    }
     m.validate_coordinates()
         .and_then(|()| Flat::from_polygon_mesh(m))
         .map_err(|source| Boolean3Error::InvalidInput { operand, source })
@@ -116,6 +121,11 @@ fn flat_polygon(m: &PolygonMesh, operand: Operand) -> Result<Flat<'_>, Boolean3E
 
 /// Validates a triangle mesh operand and builds its flat form.
 fn flat_triangles(m: &TriangleMesh, operand: Operand) -> Result<Flat<'_>, Boolean3Error> {
+    if m.triangles.len() >= (u32::MAX / 3) as usize {
+        return Err(Boolean3Error::TooLarge {
+            what: "input triangles",
+        });
+    }
     m.validate_coordinates()
         .and_then(|()| Flat::from_triangle_mesh(m))
         .map_err(|source| Boolean3Error::InvalidInput { operand, source })

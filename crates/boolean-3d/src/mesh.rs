@@ -39,16 +39,9 @@ impl<'a> Flat<'a> {
         let mut he = Vec::with_capacity(m.half_edge_count());
         let mut facet_off = Vec::with_capacity(m.facets.len() + 1);
         facet_off.push(0u32);
+        // The caller has checked that the counts fit in u32.
         for f in &m.facets {
             he.extend(f.half_edges.iter().map(|h| (h.start, h.end)));
-            if he.len() >= u32::MAX as usize {
-                return Err(TopologyError::DanglingIndex {
-                    entity: "facet",
-                    entity_index: facet_off.len() as u32 - 1,
-                    vertex: u32::MAX,
-                    vertex_count: m.vertices.len() as u32,
-                });
-            }
             facet_off.push(he.len() as u32);
         }
         Self::build(&m.vertices, he, facet_off, "facet")

@@ -40,8 +40,16 @@ type P2 = [f64; 2];
 /// The triangles' half-edges are the facet's half-edges (minus loops of one
 /// or two half-edges, which balance by themselves) plus both half-edges of
 /// every internal edge, so a mesh of facets satisfying shape boundary
-/// closure stays closed. Half-edges must refer to existing positions.
+/// closure stays closed. Half-edges referring to a vertex beyond
+/// `positions` make the facet invalid input: it is skipped (no triangles).
 pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &mut Vec<[u32; 3]>) {
+    let n = positions.len();
+    if half_edges
+        .iter()
+        .any(|&(s, e)| s as usize >= n || e as usize >= n)
+    {
+        return;
+    }
     if half_edges.len() == 3 {
         let [h0, h1, h2] = [half_edges[0], half_edges[1], half_edges[2]];
         if h0.1 == h1.0 && h1.1 == h2.0 && h2.1 == h0.0 {
