@@ -93,68 +93,58 @@ impl<'a> Flat<'a> {
         // counting sort by the lower vertex, then a sort of each (small)
         // bucket by the higher vertex and half-edge index. The edge
         // numbering, by (lower, higher), is independent of thread count.
-        let lohi = |h: usize| {
-            let (s, e) = he[h];
-            if s <= e {
-                (s, e)
-            } else {
-                (e, s)
-            }
-        };
         let mut referenced = vec![false; n_v];
         for &(s, e) in &he {
             referenced[s as usize] = true;
             referenced[e as usize] = true;
         }
         let mut bucket = vec![0u32; n_v + 1];
-        for h in 0..n_he {
-            bucket[lohi(h).0 as usize + 1] += 1;
+        for &(s, e) in &he {
+            bucket[s.min(e) as usize + 1] += 1;
         }
         for v in 0..n_v {
             bucket[v + 1] += bucket[v];
         }
         let mut fill = bucket.clone();
-        let mut edge_he = vec![0u32; n_he];
-        for h in 0..n_he {
-            let lo = lohi(h).0 as usize;
-            edge_he[fill[lo] as usize] = h as u32;
-            fill[lo] += 1;
+        // (higher vertex, half-edge) scattered by lower vertex.
+        let mut pairs = vec![(0u32, 0u32); n_he];
+        for (h, &(s, e)) in he.iter().enumerate() {
+            let (lo, hi) = if s <= e { (s, e) } else { (e, s) };
+            pairs[fill[lo as usize] as usize] = (hi, h as u32);
+            fill[lo as usize] += 1;
         }
-        for v in 0..n_v {
-            let slice = &mut edge_he[bucket[v] as usize..bucket[v + 1] as usize];
-            if slice.len() > 1 {
-                slice.sort_unstable_by_key(|&h| (lohi(h as usize).1, h));
-            }
-        }
+        drop(fill);
         let mut edges = Vec::with_capacity(n_he / 2 + 1);
         let mut edge_off = Vec::with_capacity(n_he / 2 + 2);
         let mut he_edge = vec![0u32; n_he];
-        let mut last = (u32::MAX, u32::MAX);
-        // Shape boundary closure: forward and backward counts per edge.
-        let mut fwd_back = (0u32, 0u32);
-        for (k, &h) in edge_he.iter().enumerate() {
-            let key = lohi(h as usize);
-            if key != last {
-                if edges.last().is_some() {
-                    check_shape_closure(last, fwd_back)?;
-                }
-                last = key;
-                fwd_back = (0, 0);
+        for v in 0..n_v {
+            let (b0, b1) = (bucket[v] as usize, bucket[v + 1] as usize);
+            let slice = &mut pairs[b0..b1];
+            if slice.len() > 1 {
+                slice.sort_unstable();
+            }
+            let mut k = b0;
+            while k < b1 {
+                let hi = pairs[k].0;
+                let e = edges.len() as u32;
+                edges.push((v as u32, hi));
                 edge_off.push(k as u32);
-                edges.push(key);
-            }
-            let e = edges.len() as u32 - 1;
-            let (s, t) = he[h as usize];
-            he_edge[h as usize] = e;
-            if s < t {
-                fwd_back.0 += 1;
-            } else if s > t {
-                fwd_back.1 += 1;
+                // Shape boundary closure: as many half-edges each way.
+                let (mut forward, mut backward) = (0u32, 0u32);
+                while k < b1 && pairs[k].0 == hi {
+                    let h = pairs[k].1;
+                    he_edge[h as usize] = e;
+                    if he[h as usize].0 < he[h as usize].1 {
+                        forward += 1;
+                    } else if he[h as usize].0 > he[h as usize].1 {
+                        backward += 1;
+                    }
+                    k += 1;
+                }
+                check_shape_closure((v as u32, hi), (forward, backward))?;
             }
         }
-        if edges.last().is_some() {
-            check_shape_closure(last, fwd_back)?;
-        }
+        let edge_he: Vec<u32> = pairs.into_iter().map(|(_, h)| h).collect();
         edge_off.push(n_he as u32);
         Ok(Flat {
             pos,
