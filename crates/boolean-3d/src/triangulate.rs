@@ -57,26 +57,23 @@ pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &
             return;
         }
     }
-    let loops = chain_loops(half_edges);
-    let loops: Vec<Vec<u32>> = loops.into_iter().filter(|l| l.len() >= 3).collect();
-    if loops.is_empty() {
-        return;
-    }
-    // Newell normal, relative to one vertex for accuracy.
-    let o = positions[loops[0][0] as usize];
+    let Some(&(first, _)) = half_edges.iter().find(|&&(s, e)| s != e) else {
+        return; // only zero-length half-edges: each balances itself
+    };
+    // Newell normal from the half-edges (facet closure makes it the sum
+    // over loops), relative to one vertex for accuracy.
+    let o = positions[first as usize];
     let rel = |v: u32| {
         let p = positions[v as usize];
         [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
     };
     let mut n = [0.0f64; 3];
-    for l in &loops {
-        for i in 0..l.len() {
-            let p = rel(l[i]);
-            let q = rel(l[(i + 1) % l.len()]);
-            n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-            n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-            n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-        }
+    for &(s, e) in half_edges {
+        let p = rel(s);
+        let q = rel(e);
+        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
     let axis = if n[0].abs() > n[1].abs() && n[0].abs() > n[2].abs() {
         0
@@ -95,10 +92,15 @@ pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &
         let p = rel(v);
         [p[iu], p[iv]]
     };
+    let loops = chain_loops(half_edges, &proj);
     let rings: Vec<Vec<(u32, P2)>> = loops
         .iter()
+        .filter(|l| l.len() >= 3)
         .map(|l| l.iter().map(|&v| (v, proj(v))).collect())
         .collect();
+    if rings.is_empty() {
+        return;
+    }
     for polygon in bridge_holes(rings) {
         ear_clip(polygon, out);
     }
@@ -123,12 +125,14 @@ pub fn triangulate_mesh(mesh: &PolygonMesh) -> TriangleMesh {
     TriangleMesh::new(mesh.vertices.clone(), tris)
 }
 
-/// Chains half-edges into closed loops of vertices (deterministically: at
-/// a vertex with several unused outgoing half-edges, the first in input
-/// order is taken). Every half-edge ends up in exactly one loop when the
-/// facet is closed; an open chain (impossible for closed facets) is
-/// returned as is.
-fn chain_loops(half_edges: &[(u32, u32)]) -> Vec<Vec<u32>> {
+/// Chains half-edges into closed loops of vertices. Where a vertex has
+/// several unused outgoing half-edges (the facet touches itself there), the
+/// one first clockwise from the way back along the incoming half-edge is
+/// taken, which traces each region with its interior on the left without
+/// crossing the other regions when the facet is valid. Every half-edge ends
+/// up in exactly one loop when the facet is closed; an open chain
+/// (impossible for closed facets) is returned as is.
+fn chain_loops(half_edges: &[(u32, u32)], proj: &impl Fn(u32) -> P2) -> Vec<Vec<u32>> {
     let mut by_start: Vec<u32> = (0..half_edges.len() as u32).collect();
     by_start.sort_by_key(|&i| (half_edges[i as usize].0, i));
     let mut used = vec![false; half_edges.len()];
@@ -143,22 +147,49 @@ fn chain_loops(half_edges: &[(u32, u32)]) -> Vec<Vec<u32>> {
             continue; // a zero-length half-edge balances itself
         }
         let mut ring = vec![start];
+        let mut from = start;
         let mut at = half_edges[first].1;
         while at != start {
             let lo = by_start.partition_point(|&i| half_edges[i as usize].0 < at);
-            let next = by_start[lo..]
+            let mut cands = by_start[lo..]
                 .iter()
                 .take_while(|&&i| half_edges[i as usize].0 == at)
-                .find(|&&i| !used[i as usize] && half_edges[i as usize].1 != at)
+                .filter(|&&i| !used[i as usize] && half_edges[i as usize].1 != at)
                 .copied();
-            match next {
-                Some(i) => {
-                    used[i as usize] = true;
-                    ring.push(at);
-                    at = half_edges[i as usize].1;
+            let Some(mut best) = cands.next() else {
+                break;
+            };
+            let rest: Vec<u32> = cands.collect();
+            if !rest.is_empty() {
+                let pa = proj(at);
+                let back = proj(from);
+                let back_ang = (back[1] - pa[1]).atan2(back[0] - pa[0]);
+                let cw = |i: u32| {
+                    let w = proj(half_edges[i as usize].1);
+                    let a = (w[1] - pa[1]).atan2(w[0] - pa[0]);
+                    let mut d = back_ang - a;
+                    while d <= 0.0 {
+                        d += std::f64::consts::TAU;
+                    }
+                    if d.is_finite() {
+                        d
+                    } else {
+                        f64::INFINITY
+                    }
+                };
+                let mut best_d = cw(best);
+                for i in rest {
+                    let d = cw(i);
+                    if d < best_d {
+                        best = i;
+                        best_d = d;
+                    }
                 }
-                None => break,
             }
+            used[best as usize] = true;
+            ring.push(at);
+            from = at;
+            at = half_edges[best as usize].1;
         }
         loops.push(ring);
     }

@@ -114,6 +114,30 @@ fn polygons_with_holes_triangulate_faithfully() {
     check_faithful(&m, 1e-12);
 }
 
+#[test]
+fn facets_touching_themselves_at_a_vertex_triangulate_faithfully() {
+    // Two regions sharing vertex 0, and a hole touching the outer boundary
+    // at vertex 5.
+    let v = vec![
+        [0.0, 0.0, 0.0],
+        [1.0, 1.0, 0.0],
+        [-1.0, 1.0, 0.0],
+        [1.0, -1.0, 0.0],
+        [-1.0, -1.0, 0.0],
+        [3.0, 0.0, 0.0],
+        [6.0, -2.0, 0.0],
+        [6.0, 2.0, 0.0],
+        [4.0, 0.5, 0.0],
+        [4.0, -0.5, 0.0],
+    ];
+    for order in 0..4 {
+        let mut loops = vec![vec![2, 0, 1], vec![3, 0, 4], vec![5, 6, 7], vec![5, 8, 9]];
+        loops.rotate_left(order);
+        let m = PolygonMesh::new(v.clone(), vec![topology::Facet::from_loops(&loops)]);
+        check_faithful(&m, 1e-12);
+    }
+}
+
 proptest! {
     #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
 
