@@ -5,28 +5,63 @@
 use rayon::prelude::*;
 use smallvec::SmallVec;
 
-/// A closed axis-aligned box `[lo, hi]` (empty when `lo > hi`).
+/// A closed axis-aligned box `[lo, hi]` (empty when `lo > hi`) in single
+/// precision, every bound rounded outwards from the double-precision value
+/// it stands for, so the box always contains the exact box: testing the
+/// overlap of such boxes stays conservative while halving the memory and
+/// bandwidth of the broad phase.
 #[derive(Clone, Copy, Debug, PartialEq)]
 pub(crate) struct Aabb {
     /// The lower corner.
-    pub lo: [f64; 3],
+    pub lo: [f32; 3],
     /// The upper corner.
-    pub hi: [f64; 3],
+    pub hi: [f32; 3],
+}
+
+/// The largest `f32` not above `x` (`-inf` below the range).
+#[inline]
+fn down(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) > x {
+        f.next_down()
+    } else {
+        f
+    }
+}
+
+/// The smallest `f32` not below `x` (`+inf` above the range).
+#[inline]
+fn up(x: f64) -> f32 {
+    let f = x as f32;
+    if f64::from(f) < x {
+        f.next_up()
+    } else {
+        f
+    }
 }
 
 impl Aabb {
     /// The empty box.
     pub const EMPTY: Aabb = Aabb {
-        lo: [f64::INFINITY; 3],
-        hi: [f64::NEG_INFINITY; 3],
+        lo: [f32::INFINITY; 3],
+        hi: [f32::NEG_INFINITY; 3],
     };
+
+    /// The smallest single-precision box containing `[lo, hi]`.
+    #[inline]
+    pub fn new(lo: [f64; 3], hi: [f64; 3]) -> Aabb {
+        Aabb {
+            lo: lo.map(down),
+            hi: hi.map(up),
+        }
+    }
 
     /// Grows the box to hold `p`.
     #[inline]
     pub fn add(&mut self, p: &[f64; 3]) {
         for (c, &v) in p.iter().enumerate() {
-            self.lo[c] = self.lo[c].min(v);
-            self.hi[c] = self.hi[c].max(v);
+            self.lo[c] = self.lo[c].min(down(v));
+            self.hi[c] = self.hi[c].max(up(v));
         }
     }
 
@@ -51,12 +86,14 @@ impl Aabb {
     }
 
     /// The box widened by `m` in y and z (a safety margin, see
-    /// [`crate::level3`]).
+    /// [`crate::level3`]), rounded outwards.
     #[inline]
     pub fn widened_yz(mut self, m: f64) -> Aabb {
-        for c in 1..3 {
-            self.lo[c] -= m;
-            self.hi[c] += m;
+        if m > 0.0 {
+            for c in 1..3 {
+                self.lo[c] = down(f64::from(self.lo[c]) - m);
+                self.hi[c] = up(f64::from(self.hi[c]) + m);
+            }
         }
         self
     }
@@ -164,9 +201,10 @@ fn morton(p: &[f64; 3], cb: &Aabb) -> u32 {
     let mut code = 0u64;
     for (c, &pc) in p.iter().enumerate() {
         // Halves first so that huge coordinates cannot overflow.
-        let ext = cb.hi[c] * 0.5 - cb.lo[c] * 0.5;
+        let (lo, hi) = (f64::from(cb.lo[c]), f64::from(cb.hi[c]));
+        let ext = hi * 0.5 - lo * 0.5;
         let t = if ext > 0.0 {
-            (pc * 0.5 - cb.lo[c] * 0.5) / ext
+            (pc * 0.5 - lo * 0.5) / ext
         } else {
             0.0
         };
@@ -279,19 +317,16 @@ impl Bvh {
 /// The sum of a box's side lengths (halved first so nothing overflows).
 #[inline]
 fn extent(b: &Aabb) -> f64 {
-    (b.hi[0] * 0.5 - b.lo[0] * 0.5)
-        + (b.hi[1] * 0.5 - b.lo[1] * 0.5)
-        + (b.hi[2] * 0.5 - b.lo[2] * 0.5)
+    (0..3)
+        .map(|k| f64::from(b.hi[k]) - f64::from(b.lo[k]))
+        .sum()
 }
 
 #[inline]
 fn centroid(b: &Aabb) -> [f64; 3] {
-    // Halves first so that huge coordinates cannot overflow.
-    [
-        b.lo[0] * 0.5 + b.hi[0] * 0.5,
-        b.lo[1] * 0.5 + b.hi[1] * 0.5,
-        b.lo[2] * 0.5 + b.hi[2] * 0.5,
-    ]
+    // In double precision, halves first: nothing can overflow.
+    let c = |k: usize| f64::from(b.lo[k]) * 0.5 + f64::from(b.hi[k]) * 0.5;
+    [c(0), c(1), c(2)]
 }
 
 #[cfg(test)]
@@ -311,15 +346,12 @@ mod tests {
         for _ in 0..300 {
             let p = [rnd(), rnd(), rnd()];
             let q = [p[0] + rnd() * 0.1, p[1] + rnd() * 0.1, p[2] + rnd() * 0.1];
-            boxes.push(Aabb { lo: p, hi: q });
+            boxes.push(Aabb::new(p, q));
         }
         let bvh = Bvh::new(&boxes);
         for _ in 0..50 {
             let p = [rnd(), rnd(), rnd()];
-            let q = Aabb {
-                lo: p,
-                hi: [p[0] + 0.2, p[1] + 0.05, p[2] + 0.3],
-            };
+            let q = Aabb::new(p, [p[0] + 0.2, p[1] + 0.05, p[2] + 0.3]);
             let mut got = Vec::new();
             bvh.query(&q, &boxes, |i| got.push(i));
             got.sort_unstable();

@@ -27,7 +27,8 @@
 //! The same holds for `X21`, and for the ray cast of `X03`: a facet whose
 //! box misses the vertex in x or y has `X02 = 0`, and one wholly below the
 //! vertex has `S02 = 0`. So closed-interval overlap on the exact
-//! coordinates is exactly conservative. The boxes are nevertheless widened
+//! coordinates is exactly conservative; the boxes are stored in single
+//! precision with every bound rounded outwards, which only enlarges them. The boxes are nevertheless widened
 //! in y and z by `4 u L` (`L` the power of two bounding all coordinates,
 //! the scale of the `y_at_x` bound of Table 8.1) as defence in depth
 //! against a rounding step this argument overlooked; that only adds
@@ -269,11 +270,7 @@ fn x03_cast(
     boxes: &[Aabb],
     m: f64,
 ) -> Result<i32, Boolean3Error> {
-    let q = Aabb {
-        lo: *v,
-        hi: [v[0], v[1], f64::INFINITY],
-    }
-    .widened_yz(m);
+    let q = Aabb::new(*v, [v[0], v[1], f64::INFINITY]).widened_yz(m);
     let mut sum = 0;
     let mut err = None;
     bvh.query(&q, boxes, |f| match s02(v, b.facet_points(f)) {
@@ -298,11 +295,7 @@ fn x30_cast(
 ) -> Result<i32, Boolean3Error> {
     // S20(f, v) is X20 when v is at or above the facet point: facets whose
     // lowest z exceeds v's cannot contribute.
-    let q = Aabb {
-        lo: [v[0], v[1], f64::NEG_INFINITY],
-        hi: *v,
-    }
-    .widened_yz(m);
+    let q = Aabb::new([v[0], v[1], f64::NEG_INFINITY], *v).widened_yz(m);
     let mut sum = 0;
     let mut err = None;
     bvh.query(&q, boxes, |f| match s20(a.facet_points(f), v) {
@@ -442,8 +435,11 @@ pub(crate) fn level3(
     let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a, margin);
     let (x03, x30, casts) = match winding {
         Winding::Propagate => {
-            let (x03, n03) = propagate(a, &edge_sums(a.edges.len(), &x12), cast03)?;
-            let (x30, n30) = propagate(b, &edge_sums(b.edges.len(), &x21), cast30)?;
+            let (r03, r30) = rayon::join(
+                || propagate(a, &edge_sums(a.edges.len(), &x12), cast03),
+                || propagate(b, &edge_sums(b.edges.len(), &x21), cast30),
+            );
+            let ((x03, n03), (x30, n30)) = (r03?, r30?);
             (x03, x30, n03 + n30)
         }
         Winding::CastEach => {
