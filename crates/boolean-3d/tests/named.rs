@@ -236,3 +236,31 @@ fn shape_with_an_inside_out_region() {
         "doubly enclosed",
     );
 }
+
+#[test]
+fn sphere_against_copy_rotated_by_tiny_angles() {
+    let a = icosphere([0.0; 3], 1.0, 1);
+    let va = exact_volume(&a);
+    for k in [3, 8, 15] {
+        let ang = 10f64.powi(-k);
+        let mut b = a.clone();
+        for p in &mut b.vertices {
+            *p = rotate(*p, [0.0; 3], ang);
+        }
+        for op in BooleanOp3::ALL {
+            let (out, audit) = boolean_triangles_audit(&a, &b, op).unwrap();
+            audit.verify().unwrap();
+            assert_eq!(out.mesh.check_topology(), Ok(()));
+            let v = exact_volume(&out.mesh);
+            let want = if op == BooleanOp3::Difference {
+                0.0
+            } else {
+                va
+            };
+            assert!(
+                (v - want).abs() <= 10.0 * ang + 1e-13,
+                "k = {k} {op:?}: {v} vs {want}"
+            );
+        }
+    }
+}
