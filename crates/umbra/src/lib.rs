@@ -1,1 +1,71 @@
-//! Umbra facade (being written).
+//! Umbra: topologically robust Boolean operations on polygons and polyhedra
+//! in plain `f64` arithmetic, after the dissertation "Towards robust inexact
+//! geometric computation" (see `docs/` and `/shared/DESIGN.md`).
+//!
+//! This facade re-exports the main types of the lower crates and adds file
+//! input/output and shape checks:
+//!
+//! - Shapes: [`PolygonSet2`] (2D directed edges with multiplicity),
+//!   [`PolygonMesh`], [`TriangleMesh`], with `check_topology()` naming the
+//!   violated constraint of section 4.2.
+//! - The 2D Boolean: [`boolean`] with [`BooleanOp`] (chapter 4, eq.
+//!   4.7-4.16); its output is always topologically valid.
+//! - WKT: [`read_wkt_file`], [`read_wkt_str`], [`write_wkt_file`],
+//!   [`write_wkt_string`]; `geo-types` conversions [`to_geo`] and
+//!   [`from_geo`]. Rings are read by role by default (outer rings enclose
+//!   positively, holes negatively, as GIS data intends) or exactly as
+//!   written with [`RingOrientation::AsWritten`].
+//! - [`check_polygon_set`]: topological validity, coordinate validity and
+//!   geometric-validity hints (exact count of crossing edge pairs).
+//! - [`UmbraError`]: every error names the file and the problem on one
+//!   line.
+//!
+//! The command-line tool `umbra` (`src/bin/umbra.rs`) is built on these.
+//!
+//! # Example
+//!
+//! ```
+//! use umbra::{boolean, read_wkt_str, write_wkt_string, BooleanOp, ReadOptions, RingOrientation};
+//!
+//! let a = read_wkt_str(
+//!     "POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 3, 3 3, 3 1, 1 1))",
+//!     ReadOptions::default(),
+//! )?;
+//! let b = read_wkt_str("POLYGON ((2 -1, 5 -1, 5 5, 2 5, 2 -1))", ReadOptions::default())?;
+//!
+//! let out = boolean(&a, &b, BooleanOp::Union)?;
+//! assert!(out.shape.check_topology().is_ok());
+//! // The 4x4 square minus its 2x2 hole, plus the 3x6 rectangle, less the
+//! // overlap 2x4 of which the hole's right half (1x2) was already missing.
+//! assert_eq!(out.shape.signed_area(), 12.0 + 18.0 - (8.0 - 2.0));
+//!
+//! let text = write_wkt_string(&out.shape, RingOrientation::ByRole)?;
+//! assert!(text.starts_with("POLYGON (("));
+//! let back = read_wkt_str(&text, ReadOptions::default())?;
+//! assert_eq!(back.signed_area(), out.shape.signed_area());
+//! # Ok::<(), Box<dyn std::error::Error>>(())
+//! ```
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+mod check;
+mod error;
+mod files;
+mod geo_io;
+mod predicates;
+mod rings;
+mod wkt_io;
+
+pub use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput, Operand};
+pub use check::{check_polygon_set, CheckReport};
+pub use error::UmbraError;
+pub use files::{read_polygon_set, write_polygon_set, FileKind};
+pub use geo_io::{from_geo, to_geo};
+pub use rings::{layout_polygons, ring_signed_area, PolygonLayout, Polygons, RingOrientation};
+pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
+pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};
+pub use wkt_io::{
+    parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
+    write_wkt_string, ReadOptions,
+};

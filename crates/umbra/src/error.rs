@@ -1,0 +1,135 @@
+//! The error type of the facade: what went wrong with which file.
+//!
+//! Every variant names the file (or `<string>` for in-memory text) and the
+//! problem, and its `Display` is a single line, so the command-line tool can
+//! print it as is.
+
+use boolean_2d::BooleanError;
+use robust_arith::ArithError;
+use std::fmt;
+use topology::TopologyError;
+
+/// An error of file input/output, parsing, or an operation run through the
+/// facade.
+#[derive(Debug)]
+pub enum UmbraError {
+    /// The file could not be read or written.
+    Io {
+        /// The file.
+        file: String,
+        /// What was attempted (`"read"` or `"write"`).
+        action: &'static str,
+        /// The operating-system error.
+        source: std::io::Error,
+    },
+    /// The file extension names no supported format.
+    UnsupportedFileType {
+        /// The file.
+        file: String,
+        /// Why the type is not supported (one sentence).
+        detail: String,
+    },
+    /// The file holds nothing but white space.
+    Empty {
+        /// The file.
+        file: String,
+    },
+    /// The text is malformed or truncated.
+    Parse {
+        /// The file.
+        file: String,
+        /// What is wrong, one line.
+        message: String,
+    },
+    /// The text is well-formed but holds a geometry that is not a polygon
+    /// (a `POINT`, `LINESTRING`, ...), or 3D/measured coordinates.
+    UnsupportedGeometry {
+        /// The file.
+        file: String,
+        /// What was found instead of a 2D polygon.
+        found: String,
+    },
+    /// A coordinate is NaN, infinite or beyond `f64::MAX / 4` (section 8.5).
+    BadCoordinate {
+        /// The file.
+        file: String,
+        /// Where the coordinate is (`polygon 1, ring 2, point 3`, 1-based).
+        location: String,
+        /// The axis (0 = x, 1 = y).
+        axis: u8,
+        /// What is wrong with the value.
+        source: ArithError,
+    },
+    /// A shape violates a topological constraint of section 4.2 or has a
+    /// bad coordinate (for shapes built in memory and handed to a writer).
+    InvalidShape {
+        /// The file (or `<output>`).
+        file: String,
+        /// The violated constraint.
+        source: TopologyError,
+    },
+    /// A Boolean failed; the operands are named by file.
+    Boolean {
+        /// The file of the offending operand, or an empty string for an
+        /// internal error.
+        file: String,
+        /// The error of the Boolean.
+        source: BooleanError,
+    },
+    /// An invariant of the facade failed: this is a bug, please report it.
+    Internal(String),
+}
+
+impl fmt::Display for UmbraError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let text = match self {
+            UmbraError::Io {
+                file,
+                action,
+                source,
+            } => format!("{file}: cannot {action} the file: {source}"),
+            UmbraError::UnsupportedFileType { file, detail } => {
+                format!("{file}: unsupported file type: {detail}")
+            }
+            UmbraError::Empty { file } => format!("{file}: the file is empty (no geometry)"),
+            UmbraError::Parse { file, message } => format!("{file}: malformed WKT: {message}"),
+            UmbraError::UnsupportedGeometry { file, found } => {
+                format!("{file}: unsupported geometry: {found} (expected POLYGON or MULTIPOLYGON)")
+            }
+            UmbraError::BadCoordinate {
+                file,
+                location,
+                axis,
+                source,
+            } => {
+                let name = if *axis == 0 { "x" } else { "y" };
+                format!("{file}: {location}: {name} {source}")
+            }
+            UmbraError::InvalidShape { file, source } => format!("{file}: invalid shape: {source}"),
+            UmbraError::Boolean { file, source } => {
+                if file.is_empty() {
+                    format!("boolean: {source}")
+                } else {
+                    format!("{file}: {source}")
+                }
+            }
+            UmbraError::Internal(msg) => {
+                format!("internal error (this is a bug, please report it): {msg}")
+            }
+        };
+        // One line, whatever a lower layer put in its message.
+        f.write_str(&text.replace(['\n', '\r'], " "))
+    }
+}
+
+impl std::error::Error for UmbraError {
+    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
+        match self {
+            UmbraError::Io { source, .. } => Some(source),
+            UmbraError::BadCoordinate { source, .. } => Some(source),
+            UmbraError::InvalidShape { source, .. } => Some(source),
+            UmbraError::Boolean { source, .. } => Some(source),
+            _ => None,
+        }
+    }
+}
