@@ -232,17 +232,16 @@ fn make_audit(
             .map(|(e, &v)| (CompositeKind::EdgeB(e as u32), v)),
     );
     // Theorem 3, counted afresh from the retained half-edges.
-    let mut facets = Vec::with_capacity(r.sources.len());
+    let mut facets = Vec::with_capacity(r.facet_count());
     let mut bal: HashMap<u32, i64> = HashMap::new();
-    for (k, src) in r.sources.iter().enumerate() {
+    for (src, hes) in r.facets() {
         bal.clear();
-        let hes = &r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize];
         for &(s, e) in hes {
             *bal.entry(e).or_default() += 1;
             *bal.entry(s).or_default() -= 1;
         }
         facets.push(FacetAudit {
-            source: *src,
+            source: src,
             half_edges: hes.len() as u32,
             closed: bal.values().all(|&v| v == 0),
         });
@@ -260,9 +259,10 @@ fn make_audit(
 }
 
 fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
-    let facets = (0..r.sources.len())
-        .map(|k| Facet {
-            half_edges: r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize]
+    let facets = r
+        .facets()
+        .map(|(_, hes)| Facet {
+            half_edges: hes
                 .iter()
                 .map(|&(start, end)| HalfEdge { start, end })
                 .collect(),
@@ -271,15 +271,18 @@ fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
     PolygonMesh::new(r.vertices.clone(), facets)
 }
 
+/// Triangulates every retained facet (section 4.8), chunk by chunk in
+/// parallel, concatenated in order.
 fn to_triangle_mesh(r: Retained) -> TriangleMesh {
-    let idx: Vec<usize> = (0..r.sources.len()).collect();
-    let parts: Vec<Vec<[u32; 3]>> = idx
-        .par_chunks(1024)
-        .map(|chunk| {
-            let mut tris = Vec::new();
-            for &k in chunk {
-                let hes = &r.he[r.he_off[k] as usize..r.he_off[k + 1] as usize];
-                triangulate_facet(&r.vertices, hes, &mut tris);
+    let parts: Vec<Vec<[u32; 3]>> = r
+        .chunks
+        .par_iter()
+        .map(|(_, hes, list)| {
+            let mut tris = Vec::with_capacity(hes.len() / 3 + list.len());
+            let mut k = 0usize;
+            for &(_, n) in list {
+                triangulate_facet(&r.vertices, &hes[k..k + n as usize], &mut tris);
+                k += n as usize;
             }
             tris
         })
@@ -327,7 +330,7 @@ fn boolean_mesh_impl(
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
     let out = MeshOutput {
         mesh: to_polygon_mesh(&r),
-        sources: r.sources.clone(),
+        sources: r.facets().map(|(src, _)| src).collect(),
         intersections: l3.x12.len() + l3.x21.len(),
     };
     Ok((out, audit))

@@ -41,14 +41,42 @@ pub struct FacetSource {
     pub facet: u32,
 }
 
-/// The retained facets in flat form.
+/// One chunk of retained facets: `(operand, half-edges, [(facet,
+/// half-edge count)])`.
+pub(crate) type RetainedChunk = (Operand, Vec<(u32, u32)>, Vec<(u32, u32)>);
+
+/// The retained facets, in the chunks they were built in (A's facets, then
+/// B's, each in facet order).
 pub(crate) struct Retained {
     pub vertices: Vec<Point3>,
-    pub sources: Vec<FacetSource>,
-    /// `he_off[k]..he_off[k + 1]` are the half-edges of retained facet `k`.
-    pub he_off: Vec<u32>,
-    pub he: Vec<(u32, u32)>,
+    /// `(operand, half-edges, [(facet, half-edge count)])` per chunk.
+    pub chunks: Vec<RetainedChunk>,
     pub composites: Vec<CompositeRecord>,
+}
+
+impl Retained {
+    /// The number of retained facets.
+    pub fn facet_count(&self) -> usize {
+        self.chunks.iter().map(|c| c.2.len()).sum()
+    }
+
+    /// Every retained facet with its source, in order.
+    pub fn facets(&self) -> impl Iterator<Item = (FacetSource, &[(u32, u32)])> + '_ {
+        self.chunks.iter().flat_map(|(operand, hes, list)| {
+            let mut k = 0usize;
+            list.iter().map(move |&(facet, n)| {
+                let part = &hes[k..k + n as usize];
+                k += n as usize;
+                (
+                    FacetSource {
+                        operand: *operand,
+                        facet,
+                    },
+                    part,
+                )
+            })
+        })
+    }
 }
 
 const NONE: u32 = u32::MAX;
@@ -106,10 +134,33 @@ fn edge_segments(
             let mut recs = Vec::new();
             let mut c = CompositeEdge3::default();
             for &e in chunk {
-                c.clear();
                 let (s, t) = mesh.edges[e as usize];
-                let (ps, pt) = mesh.edge_points(e);
                 let range = off[e as usize] as usize..off[e as usize + 1] as usize;
+                // Fast path: an edge without intersections whose two ends
+                // have the same inclusion value k in {-1, 0, 1} is retained
+                // whole (k = 1), reversed (k = -1) or not at all (k = 0):
+                // exactly what the composite edge would give.
+                if !record && range.is_empty() && incl[s as usize] == incl[t as usize] {
+                    match incl[t as usize] {
+                        0 => {
+                            counts.push(0);
+                            continue;
+                        }
+                        1 => {
+                            segs.push((vid[s as usize], vid[t as usize]));
+                            counts.push(1);
+                            continue;
+                        }
+                        -1 => {
+                            segs.push((vid[t as usize], vid[s as usize]));
+                            counts.push(1);
+                            continue;
+                        }
+                        _ => {}
+                    }
+                }
+                c.clear();
+                let (ps, pt) = mesh.edge_points(e);
                 let kind = if is_a {
                     CompositeKind::EdgeA(e)
                 } else {
@@ -319,28 +370,22 @@ pub(crate) fn construct(
             out.push((e, s));
         }
     });
-    let mut sources = Vec::new();
-    let mut he_off = vec![0u32];
-    let mut he = Vec::new();
-    for (operand, parts) in [(Operand::A, facets_a), (Operand::B, facets_b)] {
-        for (hes, facet_list) in parts {
-            let mut k = 0usize;
-            for (facet, n) in facet_list {
-                sources.push(FacetSource { operand, facet });
-                he.extend_from_slice(&hes[k..k + n as usize]);
-                k += n as usize;
-                if he.len() >= NONE as usize {
-                    return Err(Boolean3Error::TooLarge { what: "half-edges" });
-                }
-                he_off.push(he.len() as u32);
-            }
-        }
+    let total: usize = facets_a
+        .iter()
+        .chain(facets_b.iter())
+        .map(|c| c.0.len())
+        .sum();
+    if total >= NONE as usize {
+        return Err(Boolean3Error::TooLarge { what: "half-edges" });
     }
+    let chunks = facets_a
+        .into_iter()
+        .map(|(h, l)| (Operand::A, h, l))
+        .chain(facets_b.into_iter().map(|(h, l)| (Operand::B, h, l)))
+        .collect();
     Ok(Retained {
         vertices,
-        sources,
-        he_off,
-        he,
+        chunks,
         composites,
     })
 }
