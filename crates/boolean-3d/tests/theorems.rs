@@ -120,6 +120,9 @@ fn check_all(a: &PolygonMesh, b: &PolygonMesh) {
     for op in BooleanOp3::ALL {
         let (out, audit) = boolean_mesh_audit(a, b, op).unwrap();
         audit.verify().unwrap();
+        // The plain path (with its fast path for unintersected edges) gives
+        // exactly the audited result.
+        assert_eq!(boolean_mesh(a, b, op).unwrap(), out);
         assert_eq!(out.mesh.check_topology(), Ok(()), "{op:?}");
         // Theorem 3 counted here independently of the audit.
         for f in &out.mesh.facets {
