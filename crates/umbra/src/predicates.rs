@@ -67,12 +67,23 @@ pub(crate) enum RingSide {
 /// The winding number of the closed ring `ring` (last point joins the first)
 /// around `p`, or `Boundary` when `p` lies exactly on an edge. Sunday's
 /// crossing rule with the exact [`orient2d`].
+/// (The plain form is the oracle the tests hold [`RingIndex`] to.)
+#[cfg(test)]
 pub(crate) fn ring_side(ring: &[Point2], p: Point2) -> RingSide {
+    ring_side_of_edges(ring, 0..ring.len() as u32, p)
+}
+
+/// [`ring_side`] summed over the edges `i -> i + 1` of `ring` listed in
+/// `edges`; exact when `edges` holds every edge whose closed y-range
+/// contains `p`'s y (the others contribute nothing).
+fn ring_side_of_edges(ring: &[Point2], edges: impl Iterator<Item = u32>, p: Point2) -> RingSide {
     let n = ring.len();
     let mut wn = 0i64;
-    for i in 0..n {
-        let a = ring[i];
-        let b = ring[(i + 1) % n];
+    for i in edges {
+        let i = i as usize;
+        let (Some(&a), Some(&b)) = (ring.get(i), ring.get((i + 1) % n)) else {
+            continue;
+        };
         let o = orient2d(a, b, p);
         if o == Ordering::Equal && within_box(a, b, p) {
             return RingSide::Boundary;
@@ -86,6 +97,79 @@ pub(crate) fn ring_side(ring: &[Point2], p: Point2) -> RingSide {
         }
     }
     RingSide::Off(wn)
+}
+
+/// A point-location index over one ring: the ring's y-range cut into
+/// horizontal strips, each listing the edges whose closed y-range meets it,
+/// so a query visits only the edges near the point's y.
+pub(crate) struct RingIndex {
+    /// The lower end of the first strip.
+    y0: f64,
+    /// The strip height.
+    height: f64,
+    /// Edge ids per strip.
+    strips: Vec<Vec<u32>>,
+}
+
+impl RingIndex {
+    /// Builds the index; about `sqrt(n)` strips (at most 1024).
+    pub(crate) fn new(ring: &[Point2]) -> RingIndex {
+        let n = ring.len();
+        let (lo, hi) = ring
+            .iter()
+            .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), p| {
+                (lo.min(p[1]), hi.max(p[1]))
+            });
+        let count = ((n as f64).sqrt() as usize).clamp(1, 1024);
+        let height = (hi - lo) / count as f64;
+        let mut index = RingIndex {
+            y0: lo,
+            height,
+            strips: vec![Vec::new(); count],
+        };
+        if !(height.is_finite() && height > 0.0) {
+            // Flat or non-finite: one strip with every edge.
+            index.strips = vec![(0..n as u32).collect()];
+            index.height = f64::INFINITY;
+            return index;
+        }
+        for i in 0..n {
+            let a = ring[i][1];
+            let b = ring[(i + 1) % n][1];
+            let (s, t) = (index.strip(a.min(b)), index.strip(a.max(b)));
+            for strip in &mut index.strips[s..=t] {
+                strip.push(i as u32);
+            }
+        }
+        index
+    }
+
+    /// The strip holding height `y` (clamped; neighbouring strips overlap
+    /// at their shared boundary through the edges' closed ranges, and the
+    /// clamp keeps rounding at a boundary conservative).
+    fn strip(&self, y: f64) -> usize {
+        let last = self.strips.len().saturating_sub(1);
+        let k = ((y - self.y0) / self.height).floor();
+        if k.is_nan() || k < 0.0 {
+            0
+        } else {
+            (k as usize).min(last)
+        }
+    }
+
+    /// [`ring_side`] of `p` with respect to `ring` (the ring indexed).
+    pub(crate) fn side(&self, ring: &[Point2], p: Point2) -> RingSide {
+        // An edge whose range ends exactly at a strip boundary may be filed
+        // only in the neighbouring strip after rounding: visit the strips
+        // either side of p too, skipping duplicates.
+        let k = self.strip(p[1]);
+        let lo = k.saturating_sub(1);
+        let hi = (k + 1).min(self.strips.len().saturating_sub(1));
+        let mut edges: Vec<u32> = self.strips[lo..=hi].iter().flatten().copied().collect();
+        edges.sort_unstable();
+        edges.dedup();
+        ring_side_of_edges(ring, edges.into_iter(), p)
+    }
 }
 
 /// `true` when `p` is inside the closed bounding box of segment `a b`.
@@ -122,5 +206,29 @@ mod tests {
         assert_eq!(ring_side(&sq, [0.0, 0.0]), RingSide::Boundary);
         let rev: Vec<Point2> = sq.iter().rev().copied().collect();
         assert_eq!(ring_side(&rev, [1.0, 1.0]), RingSide::Off(-1));
+    }
+
+    #[test]
+    fn ring_index_agrees_with_the_plain_test() {
+        // A comb-like ring with 400 vertices and points on a grid that hits
+        // vertices, edges and strip boundaries.
+        let mut ring: Vec<Point2> = Vec::new();
+        for i in 0..100 {
+            let x = f64::from(i);
+            ring.push([x, 0.0]);
+            ring.push([x, 10.0 + f64::from(i % 7)]);
+            ring.push([x + 0.5, 10.0 + f64::from(i % 7)]);
+            ring.push([x + 0.5, 1.0]);
+        }
+        ring.push([100.0, 0.0]);
+        ring.push([100.0, -3.0]);
+        ring.push([0.0, -3.0]);
+        let index = RingIndex::new(&ring);
+        for i in -4..=408 {
+            for j in -16..=80 {
+                let p = [f64::from(i) / 4.0, f64::from(j) / 4.0];
+                assert_eq!(index.side(&ring, p), ring_side(&ring, p), "{p:?}");
+            }
+        }
     }
 }

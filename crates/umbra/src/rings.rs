@@ -9,7 +9,7 @@
 //! (RFC 7946: interior on the left, outer rings counter-clockwise, holes
 //! clockwise, which is the dissertation's convention of section 4.2).
 
-use crate::predicates::{ring_side, RingSide};
+use crate::predicates::{RingIndex, RingSide};
 use crate::UmbraError;
 use robust_arith::{validate_coordinate, Point2};
 use topology::PolygonSet2;
@@ -194,11 +194,15 @@ pub fn layout_polygons(
         polygons.push(vec![rings[o].clone()]);
     }
     let mut orphan_holes = 0;
+    // Point-location indices of the outer rings, built on first use.
+    let mut indices: Vec<Option<RingIndex>> = (0..rings.len()).map(|_| None).collect();
     for h in (0..rings.len()).filter(|&i| areas[i] < 0.0) {
         let container = outers.iter().copied().find(|&o| {
-            areas[o] > 0.0
-                && box_contains(&boxes[o], &boxes[h])
-                && ring_inside(&rings[h], &rings[o])
+            if !(areas[o] > 0.0 && box_contains(&boxes[o], &boxes[h])) {
+                return false;
+            }
+            let index = indices[o].get_or_insert_with(|| RingIndex::new(&rings[o]));
+            ring_inside(&rings[h], &rings[o], index)
         });
         match container.map(|o| slot[o]).and_then(|s| polygons.get_mut(s)) {
             Some(poly) => poly.push(rings[h].clone()),
@@ -234,7 +238,7 @@ fn box_contains(outer: &[Point2; 2], inner: &[Point2; 2]) -> bool {
 /// `true` when the ring `inner` lies inside `outer`, judged at the first of
 /// its vertices (then edge midpoints) that is not on `outer`'s boundary; a
 /// ring lying wholly on the boundary counts as inside.
-fn ring_inside(inner: &[Point2], outer: &[Point2]) -> bool {
+fn ring_inside(inner: &[Point2], outer: &[Point2], index: &RingIndex) -> bool {
     let n = inner.len();
     let midpoints = (0..n).map(|i| {
         let a = inner[i];
@@ -242,7 +246,7 @@ fn ring_inside(inner: &[Point2], outer: &[Point2]) -> bool {
         [a[0] / 2.0 + b[0] / 2.0, a[1] / 2.0 + b[1] / 2.0]
     });
     for p in inner.iter().copied().chain(midpoints) {
-        if let RingSide::Off(w) = ring_side(outer, p) {
+        if let RingSide::Off(w) = index.side(outer, p) {
             return w != 0;
         }
     }
