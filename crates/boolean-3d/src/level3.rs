@@ -168,10 +168,10 @@ fn max_abs(points: &[Point3]) -> f64 {
 /// The closed box of an edge.
 #[inline]
 fn edge_box(p: &Point3, q: &Point3) -> Aabb {
-    let mut b = Aabb::EMPTY;
-    b.add(p);
-    b.add(q);
-    b
+    Aabb::new(
+        [p[0].min(q[0]), p[1].min(q[1]), p[2].min(q[2])],
+        [p[0].max(q[0]), p[1].max(q[1]), p[2].max(q[2])],
+    )
 }
 
 /// Which operand's edges are being intersected with the other's facets.

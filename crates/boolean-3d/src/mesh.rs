@@ -215,11 +215,22 @@ impl<'a> Flat<'a> {
         (0..self.facet_count() as u32)
             .into_par_iter()
             .map(|f| {
-                let mut b = Aabb::EMPTY;
+                // Exact bounds first (by facet closure every end is also a
+                // start), rounded outwards once.
+                let mut lo = [f64::INFINITY; 3];
+                let mut hi = [f64::NEG_INFINITY; 3];
                 for &(s, _) in &self.he[self.facet_range(f)] {
-                    b.add(&self.pos[s as usize]);
+                    let p = &self.pos[s as usize];
+                    for c in 0..3 {
+                        lo[c] = lo[c].min(p[c]);
+                        hi[c] = hi[c].max(p[c]);
+                    }
                 }
-                b
+                if lo[0] > hi[0] {
+                    Aabb::EMPTY
+                } else {
+                    Aabb::new(lo, hi)
+                }
             })
             .collect()
     }
