@@ -248,7 +248,7 @@ fn make_audit(
     }
     let shape = to_polygon_mesh(r);
     Ok(Audit {
-        level3: l3.clone(),
+        level3: l3.clone().with_edges(a, b),
         x03_per_vertex: cast.x03,
         x30_per_vertex: cast.x30,
         composites: r.composites.clone(),
@@ -380,7 +380,7 @@ fn boolean_triangles_impl(
 /// [`boolean_mesh`].
 pub fn level3(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
     let (fa, fb) = flat_pair(a, b, flat_polygon)?;
-    level3_fast(&fa, &fb, Winding::Propagate)
+    Ok(level3_fast(&fa, &fb, Winding::Propagate)?.with_edges(&fa, &fb))
 }
 
 /// The level-3 data by brute force straight from Table 4.1 (every pair, no

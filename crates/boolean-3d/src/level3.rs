@@ -397,6 +397,15 @@ fn edge_sums(n_edges: usize, hits: &[EdgeFacetHit]) -> Vec<i32> {
     d
 }
 
+impl Level3Data {
+    /// Fills in the edge lists of both operands.
+    pub(crate) fn with_edges(mut self, a: &Flat<'_>, b: &Flat<'_>) -> Self {
+        self.edges_a = a.edges.iter().map(|&(s, t)| [s, t]).collect();
+        self.edges_b = b.edges.iter().map(|&(s, t)| [s, t]).collect();
+        self
+    }
+}
+
 /// How the vertex winding numbers are obtained.
 #[derive(Clone, Copy, PartialEq, Eq)]
 pub(crate) enum Winding {
@@ -416,7 +425,7 @@ pub(crate) fn level3(
     let margin = 4.0 * UNIT_ROUNDOFF * l;
     let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(), || b.facet_boxes());
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
-    // Overlapping facet pairs, B's boxes widened in y and z for this test.
+    // Overlapping facet pairs, A's boxes widened in y and z for this test.
     let mut fpairs = Vec::new();
     bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, margin, |i, j| {
         fpairs.push((i, j))
@@ -457,9 +466,11 @@ pub(crate) fn level3(
             (x03, x30, n)
         }
     };
+    // The edge lists are filled in by `with_edges` where the data leaves
+    // the crate (the construction reads the flat meshes directly).
     Ok(Level3Data {
-        edges_a: a.edges.iter().map(|&(s, t)| [s, t]).collect(),
-        edges_b: b.edges.iter().map(|&(s, t)| [s, t]).collect(),
+        edges_a: Vec::new(),
+        edges_b: Vec::new(),
         x03,
         x30,
         x12,
