@@ -170,17 +170,19 @@ pub fn layout_polygons(
     };
     set.check_topology().map_err(invalid)?;
     set.validate_coordinates().map_err(invalid)?;
-    let rings: Vec<Vec<Point2>> = set
-        .loops()
-        .iter()
-        .map(|l| l.iter().map(|&v| set.vertex(v)).collect())
-        .collect();
+    let rings_of = |set: &PolygonSet2| -> Vec<Vec<Point2>> {
+        set.loops()
+            .iter()
+            .map(|l| l.iter().map(|&v| set.vertex(v)).collect())
+            .collect()
+    };
     if orientation == RingOrientation::AsWritten {
         return Ok(PolygonLayout {
-            polygons: rings.into_iter().map(|r| vec![r]).collect(),
+            polygons: rings_of(set).into_iter().map(|r| vec![r]).collect(),
             orphan_holes: 0,
         });
     }
+    let rings = rings_of(&normalized(set));
     let areas: Vec<f64> = rings.iter().map(|r| ring_signed_area(r)).collect();
     // Outer rings, smallest first, so the first container found is the
     // smallest one.
@@ -216,6 +218,57 @@ pub fn layout_polygons(
         polygons,
         orphan_holes,
     })
+}
+
+/// The same region with a cleaner edge collection: vertices at equal
+/// coordinates merged, zero-length edges dropped, and edges between the
+/// same two vertices summed into one net multiplicity (an edge and its
+/// reverse cancel). Every change adds zero to every winding number and
+/// keeps shape boundary closure, since each vertex balance is a sum of
+/// balances that were zero; it only lets [`PolygonSet2::loops`] split rings
+/// that touch at a vertex and drop back-and-forth spikes.
+fn normalized(set: &PolygonSet2) -> PolygonSet2 {
+    use std::collections::HashMap;
+    // -0.0 and 0.0 are the same point.
+    let key = |p: Point2| (p[0] + 0.0).to_bits() as u128 | (((p[1] + 0.0).to_bits() as u128) << 64);
+    let mut ids: HashMap<u128, u32> = HashMap::with_capacity(set.vertex_count());
+    let mut out = PolygonSet2::new();
+    let remap: Vec<u32> = set
+        .vertices()
+        .iter()
+        .map(|&p| *ids.entry(key(p)).or_insert_with(|| out.add_vertex(p)))
+        .collect();
+    let mut net: HashMap<(u32, u32), i64> = HashMap::with_capacity(set.edge_count());
+    let mut order: Vec<(u32, u32)> = Vec::new();
+    for e in set.edges() {
+        let (Some(&s), Some(&t)) = (remap.get(e.start as usize), remap.get(e.end as usize)) else {
+            continue;
+        };
+        if s == t || e.mult == 0 {
+            continue;
+        }
+        let (pair, m) = if s < t {
+            ((s, t), i64::from(e.mult))
+        } else {
+            ((t, s), -i64::from(e.mult))
+        };
+        let slot = net.entry(pair).or_insert_with(|| {
+            order.push(pair);
+            0
+        });
+        *slot += m;
+    }
+    for pair in order {
+        let m = net.get(&pair).copied().unwrap_or(0);
+        // Split multiplicities beyond i32 into several entries.
+        let mut left = m;
+        while left != 0 {
+            let step = left.clamp(i64::from(-i32::MAX), i64::from(i32::MAX));
+            out.add_edge_mult(pair.0, pair.1, step as i32);
+            left -= step;
+        }
+    }
+    out
 }
 
 /// The bounding box of a ring.
@@ -305,6 +358,42 @@ mod tests {
             .map(|p| p.iter().map(|r| ring_signed_area(r)).sum())
             .collect();
         assert!(areas.contains(&(100.0 - 64.0)) && areas.contains(&(36.0 - 16.0)));
+    }
+
+    #[test]
+    fn touching_rings_and_spikes_are_cleaned_by_role() {
+        // A square hole touching a triangular hole at (2, 2), with a
+        // duplicated vertex and a zero-length edge there, and a spike.
+        let text_rings: Vec<Vec<Point2>> = vec![
+            square(0.0, 0.0, 12.0),
+            vec![
+                [2.0, 2.0],
+                [2.0, 2.0],
+                [0.5, 0.5],
+                [0.5, 4.0],
+                [2.0, 2.0],
+                [2.0, 10.0],
+                [10.0, 10.0],
+                [10.0, 2.0],
+            ],
+            vec![[11.0, 11.0], [11.5, 11.5], [11.0, 11.0]],
+        ];
+        let mut set = PolygonSet2::new();
+        for r in &text_rings {
+            set.add_loop(r);
+        }
+        let layout = layout_polygons(&set, RingOrientation::ByRole, "t").unwrap();
+        assert_eq!(layout.orphan_holes, 0);
+        assert_eq!(layout.polygons.len(), 1, "{layout:?}");
+        let poly = &layout.polygons[0];
+        assert_eq!(poly.len(), 3, "{poly:?}");
+        assert_eq!(poly[1].len() + poly[2].len(), 3 + 4);
+        let area: f64 = poly.iter().map(|r| ring_signed_area(r)).sum();
+        assert_eq!(area, set.signed_area());
+        // As written keeps every loop, degenerate ones included.
+        let kept = layout_polygons(&set, RingOrientation::AsWritten, "t").unwrap();
+        let points: usize = kept.polygons.iter().flatten().map(Vec::len).sum();
+        assert_eq!(points, set.edge_count());
     }
 
     #[test]
