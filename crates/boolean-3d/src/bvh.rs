@@ -84,19 +84,6 @@ impl Aabb {
             && self.lo[2] <= o.hi[2]
             && o.lo[2] <= self.hi[2]
     }
-
-    /// The box widened by `m` in y and z (a safety margin, see
-    /// [`crate::level3`]), rounded outwards.
-    #[inline]
-    pub fn widened_yz(mut self, m: f64) -> Aabb {
-        if m > 0.0 {
-            for c in 1..3 {
-                self.lo[c] = down(f64::from(self.lo[c]) - m);
-                self.hi[c] = up(f64::from(self.hi[c]) + m);
-            }
-        }
-        self
-    }
 }
 
 #[derive(Clone, Copy, Debug)]
@@ -255,8 +242,7 @@ fn build(boxes: &[Aabb], items: &[u32], start: usize, end: usize, nodes: &mut Ve
 
 impl Bvh {
     /// Calls `f(i, j)` for every item `i` of `self` and `j` of `other`
-    /// whose boxes overlap (closed, `self`'s widened by `margin` in y and
-    /// z), by a simultaneous descent of both
+    /// whose boxes overlap (closed), by a simultaneous descent of both
     /// hierarchies: `O(n + k)` node visits for `k` overlapping pairs in
     /// typical inputs. The order is deterministic.
     pub fn pairs(
@@ -264,7 +250,6 @@ impl Bvh {
         boxes: &[Aabb],
         other: &Bvh,
         other_boxes: &[Aabb],
-        margin: f64,
         mut f: impl FnMut(u32, u32),
     ) {
         if self.nodes.is_empty() || other.nodes.is_empty() {
@@ -273,14 +258,14 @@ impl Bvh {
         let mut stack: Vec<(u32, u32)> = vec![(0, 0)];
         while let Some((m, n)) = stack.pop() {
             let (p, q) = (&self.nodes[m as usize], &other.nodes[n as usize]);
-            if !p.bb.widened_yz(margin).overlaps(&q.bb) {
+            if !p.bb.overlaps(&q.bb) {
                 continue;
             }
             match (p.count > 0, q.count > 0) {
                 (true, true) => {
                     let (ps, qs) = (p.a as usize, q.a as usize);
                     for &i in &self.items[ps..ps + p.count as usize] {
-                        let bi = &boxes[i as usize].widened_yz(margin);
+                        let bi = &boxes[i as usize];
                         if !bi.overlaps(&q.bb) {
                             continue;
                         }
@@ -370,7 +355,7 @@ mod tests {
             .collect();
         let bvh2 = Bvh::new(&other);
         let mut got = Vec::new();
-        bvh.pairs(&boxes, &bvh2, &other, 0.0, |i, j| got.push((i, j)));
+        bvh.pairs(&boxes, &bvh2, &other, |i, j| got.push((i, j)));
         got.sort_unstable();
         let mut want = Vec::new();
         for i in 0..boxes.len() as u32 {

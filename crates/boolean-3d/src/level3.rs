@@ -27,12 +27,12 @@
 //! The same holds for `X21`, and for the ray cast of `X03`: a facet whose
 //! box misses the vertex in x or y has `X02 = 0`, and one wholly below the
 //! vertex has `S02 = 0`. So closed-interval overlap on the exact
-//! coordinates is exactly conservative; the boxes are stored in single
-//! precision with every bound rounded outwards, which only enlarges them. The boxes are nevertheless widened
-//! in y and z by `4 u L` (`L` the power of two bounding all coordinates,
-//! the scale of the `y_at_x` bound of Table 8.1) as defence in depth
-//! against a rounding step this argument overlooked; that only adds
-//! candidates, never removes one.
+//! coordinates is exactly conservative. The facet boxes are stored in
+//! single precision with every bound rounded outwards, which only enlarges
+//! them, and are widened in y and z by `4 u L` (`L` the power of two
+//! bounding all coordinates, the scale of the `y_at_x` bound of Table 8.1)
+//! as defence in depth against a rounding step this argument overlooked;
+//! both only add candidates, never remove one.
 //!
 //! # Propagation of winding numbers
 //!
@@ -227,7 +227,6 @@ fn candidates(
     fpairs: &[(u32, u32)],
     edges: &Flat<'_>,
     facet_boxes: &[Aabb],
-    margin: f64,
     side: Side,
 ) -> Vec<(u32, u32)> {
     let mut cand: Vec<(u32, u32)> = fpairs
@@ -247,7 +246,7 @@ fn candidates(
                         continue;
                     }
                     let (p, q) = edges.edge_points(e);
-                    if edge_box(&p, &q).widened_yz(margin).overlaps(ob) {
+                    if edge_box(&p, &q).overlaps(ob) {
                         out.push((e, other));
                     }
                 }
@@ -263,14 +262,8 @@ fn candidates(
 /// `X03(v, B) = sum_f S02(v, f)` by casting a ray upwards through the
 /// broad phase (only facets whose box reaches the vertex's (x, y) and rises
 /// to its z can shadow it).
-fn x03_cast(
-    v: &Point3,
-    b: &Flat<'_>,
-    bvh: &Bvh,
-    boxes: &[Aabb],
-    m: f64,
-) -> Result<i32, Boolean3Error> {
-    let q = Aabb::new(*v, [v[0], v[1], f64::INFINITY]).widened_yz(m);
+fn x03_cast(v: &Point3, b: &Flat<'_>, bvh: &Bvh, boxes: &[Aabb]) -> Result<i32, Boolean3Error> {
+    let q = Aabb::new(*v, [v[0], v[1], f64::INFINITY]);
     let mut sum = 0;
     let mut err = None;
     bvh.query(&q, boxes, |f| match s02(v, b.facet_points(f)) {
@@ -286,16 +279,10 @@ fn x03_cast(
 /// `X30(A, v) = -sum_f S20(f, v)` by the same upward ray (a facet of A
 /// wholly above `v` has `S20 = 0`, one that misses it in x or y has
 /// `X20 = 0`); the facets that matter are those reaching down to `v`.
-fn x30_cast(
-    a: &Flat<'_>,
-    v: &Point3,
-    bvh: &Bvh,
-    boxes: &[Aabb],
-    m: f64,
-) -> Result<i32, Boolean3Error> {
+fn x30_cast(a: &Flat<'_>, v: &Point3, bvh: &Bvh, boxes: &[Aabb]) -> Result<i32, Boolean3Error> {
     // S20(f, v) is X20 when v is at or above the facet point: facets whose
     // lowest z exceeds v's cannot contribute.
-    let q = Aabb::new([v[0], v[1], f64::NEG_INFINITY], *v).widened_yz(m);
+    let q = Aabb::new([v[0], v[1], f64::NEG_INFINITY], *v);
     let mut sum = 0;
     let mut err = None;
     bvh.query(&q, boxes, |f| match s20(a.facet_points(f), v) {
@@ -423,16 +410,16 @@ pub(crate) fn level3(
 ) -> Result<Level3Data, Boolean3Error> {
     let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
     let margin = 4.0 * UNIT_ROUNDOFF * l;
-    let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(), || b.facet_boxes());
+    // Facet boxes widened by the margin in y and z once, here: every
+    // overlap test below involves one facet box.
+    let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(margin), || b.facet_boxes(margin));
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
-    // Overlapping facet pairs, A's boxes widened in y and z for this test.
+    // Overlapping facet pairs.
     let mut fpairs = Vec::new();
-    bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, margin, |i, j| {
-        fpairs.push((i, j))
-    });
+    bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, |i, j| fpairs.push((i, j)));
     let (c12, c21) = rayon::join(
-        || candidates(&fpairs, a, &boxes_b, margin, Side::EdgesOfA),
-        || candidates(&fpairs, b, &boxes_a, margin, Side::EdgesOfB),
+        || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
+        || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),
     );
     let (r12, r21) = rayon::join(
         || edge_facet_hits(a, b, &c12, Side::EdgesOfA),
@@ -440,8 +427,8 @@ pub(crate) fn level3(
     );
     let (x12, x21) = (r12?, r21?);
     let (c12, c21) = (c12.len(), c21.len());
-    let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b, margin);
-    let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a, margin);
+    let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b);
+    let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a);
     let (x03, x30, casts) = match winding {
         Winding::Propagate => {
             let (r03, r30) = rayon::join(

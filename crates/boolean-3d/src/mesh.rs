@@ -210,8 +210,9 @@ impl<'a> Flat<'a> {
         s <= e
     }
 
-    /// The closed bounding box of every facet.
-    pub fn facet_boxes(&self) -> Vec<Aabb> {
+    /// The closed bounding box of every facet, widened by `margin` in y and
+    /// z.
+    pub fn facet_boxes(&self, margin: f64) -> Vec<Aabb> {
         (0..self.facet_count() as u32)
             .into_par_iter()
             .map(|f| {
@@ -229,6 +230,11 @@ impl<'a> Flat<'a> {
                 if lo[0] > hi[0] {
                     Aabb::EMPTY
                 } else {
+                    // The safety margin in y and z (see `level3`).
+                    for c in 1..3 {
+                        lo[c] -= margin;
+                        hi[c] += margin;
+                    }
                     Aabb::new(lo, hi)
                 }
             })
