@@ -6,7 +6,8 @@
 //!
 //! Run with `cargo run --release -p boolean-3d --example sphere_diff`
 //! (optionally `-- 2000 20000` for chosen triangle counts; set
-//! `RAYON_NUM_THREADS=1` for one thread).
+//! `RAYON_NUM_THREADS=1` for one thread; add `triangles` to run only the
+//! triangle-mesh variant, e.g. to read the peak memory).
 
 use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
 use std::time::Instant;
@@ -94,6 +95,9 @@ fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
 }
 
 fn main() {
+    // `triangles` as an argument runs the triangle variant only (for peak
+    // memory measurements).
+    let only_triangles = std::env::args().any(|a| a == "triangles");
     let sizes: Vec<u32> = {
         let args: Vec<u32> = std::env::args()
             .skip(1)
@@ -133,6 +137,9 @@ fn main() {
                 );
             }
             Err(e) => println!("{n}: error {e}"),
+        }
+        if only_triangles {
+            continue;
         }
         let (pa, pb) = (a.to_polygon_mesh(), b.to_polygon_mesh());
         let (ms, out) = best_of(3, || boolean_mesh(&pa, &pb, BooleanOp3::Difference));
