@@ -229,3 +229,28 @@ fn polygon_variant_result_triangulates_to_the_same_volume() {
     assert!(winding_number(&tri, [1.0, 1.0, 1.0]).abs() < 1e-9);
     assert!((winding_number(&tri, [0.25, 0.25, 1.0]) - 1.0).abs() < 1e-9);
 }
+
+mod random_placements {
+    use super::*;
+    use proptest::prelude::*;
+
+    proptest! {
+        #![proptest_config(ProptestConfig { cases: 32, .. ProptestConfig::default() })]
+
+        /// Eq. 4.20 for random tetrahedra (either orientation, so winding
+        /// numbers -1, 0, 1) against a random box or a second tetrahedron.
+        #[test]
+        fn winding_identity_for_random_solids(seed in any::<u64>(), kind in 0u32..2) {
+            let mut rng = Rng(seed);
+            let mut p = || [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)];
+            let a = tetra([p(), p(), p(), p()]);
+            let b = if kind == 0 {
+                let lo = p();
+                box_triangles(lo, [lo[0] + 0.9, lo[1] + 0.7, lo[2] + 0.8])
+            } else {
+                tetra([p(), p(), p(), p()])
+            };
+            check_winding_identity(&a, &b, seed ^ 0x5eed, 12, 1e-3);
+        }
+    }
+}
