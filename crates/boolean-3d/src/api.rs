@@ -65,6 +65,12 @@ pub struct Audit {
     pub net_counts: Vec<(CompositeKind, i64)>,
     /// Every retained facet (Theorem 3).
     pub facets: Vec<FacetAudit>,
+    /// Level-3 hits whose point lies outside where eq. 4.2-4.6 must put it:
+    /// x and y are interpolated from points of the entity of A (the edge
+    /// for `X12`, the facet for `X21`) with `|lambda| <= 1/2` and monotone
+    /// rounding, so they lie in that entity's closed box; z comes from one
+    /// of the two entities, so it lies in the union of their z-ranges.
+    pub misplaced_points: Vec<(CompositeKind, [f64; 3])>,
     /// Shape boundary closure of the polygon-mesh result (Theorem 4).
     pub shape_closure: Result<(), TopologyError>,
 }
@@ -84,6 +90,11 @@ impl Audit {
             {
                 return Err(format!("Theorem 1: {name} hit {h:?} has no valid point"));
             }
+        }
+        if let Some(m) = self.misplaced_points.first() {
+            return Err(format!(
+                "Theorem 1: level-3 point {m:?} outside its entities"
+            ));
         }
         if self.level3.x03 != self.x03_per_vertex {
             return Err("Theorem 1: propagated X03 differs from per-vertex ray casts".into());
@@ -167,6 +178,39 @@ fn make_audit(
     r: &Retained,
 ) -> Result<Audit, Boolean3Error> {
     let cast = level3_fast(a, b, Winding::CastEach)?;
+    let mut misplaced = Vec::new();
+    let range = |pts: &mut dyn Iterator<Item = [f64; 3]>| {
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for p in pts {
+            for c in 0..3 {
+                lo[c] = lo[c].min(p[c]);
+                hi[c] = hi[c].max(p[c]);
+            }
+        }
+        (lo, hi)
+    };
+    let inside = |p: &[f64; 3], own: &([f64; 3], [f64; 3]), other: &([f64; 3], [f64; 3])| {
+        (0..2).all(|c| own.0[c] <= p[c] && p[c] <= own.1[c])
+            && own.0[2].min(other.0[2]) <= p[2]
+            && p[2] <= own.1[2].max(other.1[2])
+    };
+    for h in &l3.x12 {
+        let (p, q) = a.edge_points(h.edge);
+        let own = range(&mut [p, q].into_iter());
+        let other = range(&mut b.facet_points(h.facet).map(|(s, _)| s));
+        if !inside(&h.point, &own, &other) {
+            misplaced.push((CompositeKind::EdgeA(h.edge), h.point));
+        }
+    }
+    for h in &l3.x21 {
+        let (p, q) = b.edge_points(h.edge);
+        let own = range(&mut a.facet_points(h.facet).map(|(s, _)| s));
+        let other = range(&mut [p, q].into_iter());
+        if !inside(&h.point, &own, &other) {
+            misplaced.push((CompositeKind::EdgeB(h.edge), h.point));
+        }
+    }
     let (ca, cb, ci) = op.coefficients();
     let (ca, cb, ci) = (i64::from(ca), i64::from(cb), i64::from(ci));
     let i03 = |v: u32| ca + ci * i64::from(l3.x03[v as usize]);
@@ -254,6 +298,7 @@ fn make_audit(
         composites: r.composites.clone(),
         net_counts: net,
         facets,
+        misplaced_points: misplaced,
         shape_closure: shape.check_topology(),
     })
 }

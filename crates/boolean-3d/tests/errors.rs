@@ -140,3 +140,35 @@ fn empty_operands_are_fine() {
     let out = boolean_mesh(&empty, &empty, BooleanOp3::Union).unwrap();
     assert!(out.mesh.facets.is_empty());
 }
+
+/// `Audit::verify` can fail: each theorem check rejects tampered data.
+#[test]
+fn audit_verify_detects_each_violation() {
+    let a = box_mesh([0.0; 3], [2.0; 3]);
+    let b = box_mesh([1.0, 0.5, 0.25], [3.0, 1.5, 1.75]);
+    let (_, audit) = boolean_3d::boolean_mesh_audit(&a, &b, BooleanOp3::Union).unwrap();
+    audit.verify().unwrap();
+    let mut t = audit.clone();
+    t.x03_per_vertex[0] += 1;
+    assert!(t.verify().unwrap_err().contains("X03"));
+    let mut t = audit.clone();
+    t.composites[0].ends += 1;
+    assert!(t.verify().unwrap_err().contains("Theorem 2"));
+    let mut t = audit.clone();
+    t.net_counts[0].1 = 1;
+    assert!(t.verify().unwrap_err().contains("Theorem 2"));
+    let mut t = audit.clone();
+    t.facets[0].closed = false;
+    assert!(t.verify().unwrap_err().contains("Theorem 3"));
+    let mut t = audit.clone();
+    t.shape_closure = Err(TopologyError::ShapeClosure3 {
+        start: 0,
+        end: 1,
+        forward: 1,
+        backward: 0,
+    });
+    assert!(t.verify().unwrap_err().contains("Theorem 4"));
+    let mut t = audit.clone();
+    t.level3.x12[0].point[0] = f64::NAN;
+    assert!(t.verify().unwrap_err().contains("Theorem 1"));
+}
