@@ -1,6 +1,6 @@
 //! Umbra: topologically robust Boolean operations on polygons and polyhedra
 //! in plain `f64` arithmetic, after the dissertation "Towards robust inexact
-//! geometric computation" (see `docs/` and `/shared/DESIGN.md`).
+//! geometric computation" (see `docs/ARCHITECTURE.md` in the repository).
 //!
 //! This facade re-exports the main types of the lower crates and adds file
 //! input/output and shape checks:
