@@ -304,13 +304,22 @@ fn make_audit(
 }
 
 fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
+    // Chunks in parallel, collected in order.
     let facets = r
-        .facets()
-        .map(|(_, hes)| Facet {
-            half_edges: hes
-                .iter()
-                .map(|&(start, end)| HalfEdge { start, end })
-                .collect(),
+        .chunks
+        .par_iter()
+        .flat_map_iter(|(_, hes, list)| {
+            let mut k = 0usize;
+            list.iter().map(move |&(_, n)| {
+                let part = &hes[k..k + n as usize];
+                k += n as usize;
+                Facet {
+                    half_edges: part
+                        .iter()
+                        .map(|&(start, end)| HalfEdge { start, end })
+                        .collect(),
+                }
+            })
         })
         .collect();
     PolygonMesh::new(r.vertices.clone(), facets)
