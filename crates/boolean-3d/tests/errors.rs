@@ -139,6 +139,16 @@ fn empty_operands_are_fine() {
     }
     let out = boolean_mesh(&empty, &empty, BooleanOp3::Union).unwrap();
     assert!(out.mesh.facets.is_empty());
+    // A facet without half-edges and an unreferenced vertex are valid.
+    let mut odd = box_mesh([0.5; 3], [1.5; 3]);
+    odd.facets.insert(2, Facet::default());
+    odd.vertices.push([0.75; 3]);
+    assert_eq!(odd.check_topology(), Ok(()));
+    for op in BooleanOp3::ALL {
+        let (out, audit) = boolean_3d::boolean_mesh_audit(&a, &odd, op).unwrap();
+        audit.verify().unwrap();
+        assert_eq!(out.mesh.check_topology(), Ok(()));
+    }
 }
 
 /// `Audit::verify` can fail: each theorem check rejects tampered data.
