@@ -241,28 +241,90 @@ fn build(boxes: &[Aabb], items: &[u32], start: usize, end: usize, nodes: &mut Ve
 }
 
 impl Bvh {
-    /// Calls `f(i, j)` for every item `i` of `self` and `j` of `other`
+    /// Every pair `(i, j)` of an item `i` of `self` and `j` of `other`
     /// whose boxes overlap (closed), by a simultaneous descent of both
     /// hierarchies: `O(n + k)` node visits for `k` overlapping pairs in
-    /// typical inputs. The order is deterministic.
-    pub fn pairs(
+    /// typical inputs. The top of the descent is expanded breadth first and
+    /// the subtrees are descended in parallel; the result is concatenated
+    /// in frontier order, so it is deterministic.
+    pub fn pairs(&self, boxes: &[Aabb], other: &Bvh, other_boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        if self.nodes.is_empty() || other.nodes.is_empty() {
+            return Vec::new();
+        }
+        let mut frontier: Vec<(u32, u32)> = vec![(0, 0)];
+        for _ in 0..8 {
+            if frontier.len() >= 64 {
+                break;
+            }
+            let mut next = Vec::with_capacity(2 * frontier.len());
+            for &(m, n) in &frontier {
+                if self.node_pair_overlaps(other, m, n) {
+                    match self.split(other, m, n) {
+                        Some((x, y)) => next.extend([x, y]),
+                        None => next.push((m, n)),
+                    }
+                }
+            }
+            frontier = next;
+        }
+        let parts: Vec<Vec<(u32, u32)>> = frontier
+            .par_iter()
+            .map(|&start| {
+                let mut out = Vec::new();
+                self.descend(boxes, other, other_boxes, start, &mut out);
+                out
+            })
+            .collect();
+        parts.concat()
+    }
+
+    #[inline]
+    fn node_pair_overlaps(&self, other: &Bvh, m: u32, n: u32) -> bool {
+        self.nodes[m as usize]
+            .bb
+            .overlaps(&other.nodes[n as usize].bb)
+    }
+
+    /// The two child pairs of node pair `(m, n)` (descending the node with
+    /// the larger box when both are inner), or `None` for two leaves.
+    #[inline]
+    fn split(&self, other: &Bvh, m: u32, n: u32) -> Option<((u32, u32), (u32, u32))> {
+        let (p, q) = (&self.nodes[m as usize], &other.nodes[n as usize]);
+        match (p.count > 0, q.count > 0) {
+            (true, true) => None,
+            (false, true) => Some(((p.a, n), (m + 1, n))),
+            (true, false) => Some(((m, q.a), (m, n + 1))),
+            (false, false) => {
+                if extent(&p.bb) >= extent(&q.bb) {
+                    Some(((p.a, n), (m + 1, n)))
+                } else {
+                    Some(((m, q.a), (m, n + 1)))
+                }
+            }
+        }
+    }
+
+    /// The sequential descent below one node pair.
+    fn descend(
         &self,
         boxes: &[Aabb],
         other: &Bvh,
         other_boxes: &[Aabb],
-        mut f: impl FnMut(u32, u32),
+        start: (u32, u32),
+        out: &mut Vec<(u32, u32)>,
     ) {
-        if self.nodes.is_empty() || other.nodes.is_empty() {
-            return;
-        }
-        let mut stack: Vec<(u32, u32)> = vec![(0, 0)];
+        let mut stack: Vec<(u32, u32)> = vec![start];
         while let Some((m, n)) = stack.pop() {
-            let (p, q) = (&self.nodes[m as usize], &other.nodes[n as usize]);
-            if !p.bb.overlaps(&q.bb) {
+            if !self.node_pair_overlaps(other, m, n) {
                 continue;
             }
-            match (p.count > 0, q.count > 0) {
-                (true, true) => {
+            match self.split(other, m, n) {
+                Some((x, y)) => {
+                    stack.push(x);
+                    stack.push(y);
+                }
+                None => {
+                    let (p, q) = (&self.nodes[m as usize], &other.nodes[n as usize]);
                     let (ps, qs) = (p.a as usize, q.a as usize);
                     for &i in &self.items[ps..ps + p.count as usize] {
                         let bi = &boxes[i as usize];
@@ -271,27 +333,9 @@ impl Bvh {
                         }
                         for &j in &other.items[qs..qs + q.count as usize] {
                             if bi.overlaps(&other_boxes[j as usize]) {
-                                f(i, j);
+                                out.push((i, j));
                             }
                         }
-                    }
-                }
-                (false, true) => {
-                    stack.push((p.a, n));
-                    stack.push((m + 1, n));
-                }
-                (true, false) => {
-                    stack.push((m, q.a));
-                    stack.push((m, n + 1));
-                }
-                (false, false) => {
-                    // Descend the node with the larger box.
-                    if extent(&p.bb) >= extent(&q.bb) {
-                        stack.push((p.a, n));
-                        stack.push((m + 1, n));
-                    } else {
-                        stack.push((m, q.a));
-                        stack.push((m, n + 1));
                     }
                 }
             }
@@ -354,8 +398,7 @@ mod tests {
             })
             .collect();
         let bvh2 = Bvh::new(&other);
-        let mut got = Vec::new();
-        bvh.pairs(&boxes, &bvh2, &other, |i, j| got.push((i, j)));
+        let mut got = bvh.pairs(&boxes, &bvh2, &other);
         got.sort_unstable();
         let mut want = Vec::new();
         for i in 0..boxes.len() as u32 {

@@ -415,8 +415,7 @@ pub(crate) fn level3(
     let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(margin), || b.facet_boxes(margin));
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
     // Overlapping facet pairs.
-    let mut fpairs = Vec::new();
-    bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b, |i, j| fpairs.push((i, j)));
+    let fpairs = bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b);
     let (c12, c21) = rayon::join(
         || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
         || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),
