@@ -6,7 +6,7 @@
 //! ring, `4n` vertices), and each peer's time over Umbra's.
 //!
 //! ```text
-//! cargo run --release -p umbra-benches --bin perf-table -- [--budget-ms 2000] [--max-runs 25] [--rows 0,3,9]
+//! cargo run --release -p umbra-benches --bin perf-table -- [--budget-ms 1500] [--max-runs 101] [--rows 0,3,9] [--peers umbra,geo]
 //! ```
 //!
 //! Each peer gets one warm-up run (whose result is checked), then `k` timed
@@ -25,13 +25,18 @@ struct Config {
     budget: Duration,
     max_runs: usize,
     rows: Vec<usize>,
+    peers: Vec<String>,
 }
+
+/// The peers in table order.
+const PEERS: [&str; 4] = ["umbra", "i_overlay", "i_overlay-i64", "geo"];
 
 fn parse_args() -> Result<Config, String> {
     let mut config = Config {
-        budget: Duration::from_millis(2000),
-        max_runs: 25,
+        budget: Duration::from_millis(1500),
+        max_runs: 101,
         rows: (0..TABLE_7_4.len()).collect(),
+        peers: PEERS.iter().map(|p| p.to_string()).collect(),
     };
     let mut args = std::env::args().skip(1);
     while let Some(arg) = args.next() {
@@ -58,9 +63,15 @@ fn parse_args() -> Result<Config, String> {
                     return Err(format!("--rows: no row {bad} (0..{})", TABLE_7_4.len()));
                 }
             }
+            "--peers" => {
+                config.peers = value()?.split(',').map(|p| p.trim().to_string()).collect();
+                if let Some(bad) = config.peers.iter().find(|p| !PEERS.contains(&p.as_str())) {
+                    return Err(format!("--peers: no peer {bad} (one of {})", PEERS.join(", ")));
+                }
+            }
             "-h" | "--help" => {
                 return Err(
-                    "usage: perf-table [--budget-ms MS] [--max-runs K] [--rows I,J,...]".into(),
+                    "usage: perf-table [--budget-ms MS] [--max-runs K] [--rows I,J,...] [--peers umbra,i_overlay,i_overlay-i64,geo]".into(),
                 )
             }
             other => return Err(format!("unknown argument {other}")),
@@ -210,13 +221,21 @@ fn main() {
     for &r in &config.rows {
         let case = TABLE_7_4[r];
         eprintln!("row {r}: {}", case.label());
-        let ms_row = vec![
-            measure(&Umbra, &case, &config),
-            measure(&IOverlay, &case, &config),
-            measure(&IOverlay64, &case, &config),
-            measure(&Geo, &case, &config),
-        ];
-        let extras = umbra_extras(&case);
+        let ms_row: Vec<Measurement> = PEERS
+            .iter()
+            .filter(|p| config.peers.iter().any(|q| q == *p))
+            .map(|&p| match p {
+                "umbra" => measure(&Umbra, &case, &config),
+                "i_overlay" => measure(&IOverlay, &case, &config),
+                "i_overlay-i64" => measure(&IOverlay64, &case, &config),
+                _ => measure(&Geo, &case, &config),
+            })
+            .collect();
+        let extras = config
+            .peers
+            .iter()
+            .any(|p| p == "umbra")
+            .then(|| umbra_extras(&case));
         rows.push((case, ms_row, extras));
     }
 
@@ -240,7 +259,10 @@ fn main() {
     }
     println!("---|");
     for (case, row, _) in &rows {
-        let umbra = row.first().map_or(Duration::ZERO, |m| m.median);
+        let umbra = row
+            .iter()
+            .find(|m| m.peer == "umbra")
+            .map(|m| m.median.as_secs_f64());
         print!("| {} | {:e} |", case.n, case.alpha_deg);
         let mut wrong = Vec::new();
         for m in row {
@@ -252,8 +274,11 @@ fn main() {
             if m.peer == "umbra" {
                 print!(" {}{mark} |", ms(m.median));
             } else {
-                let ratio = m.median.as_secs_f64() / umbra.as_secs_f64().max(1e-12);
-                print!(" {}{mark} | {ratio:.2} |", ms(m.median));
+                let ratio = umbra.map_or_else(
+                    || "-".to_string(),
+                    |u| format!("{:.2}", m.median.as_secs_f64() / u.max(1e-12)),
+                );
+                print!(" {}{mark} | {ratio} |", ms(m.median));
             }
         }
         if wrong.is_empty() {
@@ -283,7 +308,10 @@ fn main() {
     println!();
     println!("| n | alpha (deg) | umbra X11 != 0 pairs (expected 2n) | umbra loops() ms (not timed above) |");
     println!("|---:|---:|---:|---:|");
-    for (case, _, (loops, intersections)) in &rows {
+    for (case, _, extras) in &rows {
+        let Some((loops, intersections)) = extras else {
+            continue;
+        };
         println!(
             "| {} | {:e} | {} | {} |",
             case.n,
