@@ -1,2 +1,90 @@
-//! Umbra developer tasks (being written).
-fn main() {}
+//! `cargo xtask <task>`: Umbra developer tasks (see the library docs).
+//!
+//! ```text
+//! cargo xtask tidy
+//! cargo xtask arith-experiment [--pairs N] [--seed S]
+//! cargo xtask verify [--cases N] [--seed S]
+//! ```
+
+use anyhow::{bail, Context, Result};
+use std::process::ExitCode;
+use xtask::{experiment, tidy, verify};
+
+const USAGE: &str = "usage: cargo xtask <task>
+
+tasks:
+  tidy                                   dependency direction (DESIGN.md) and //! headers
+  arith-experiment [--pairs N] [--seed S]  section 8.3 experiment (default N = 10000000)
+  verify [--cases N] [--seed S]          Theorems 1-2, closure, eq. 4.20 over corpora (default N = 500)";
+
+/// Parses `--name value` options into `u64`s, rejecting unknown ones.
+fn options(args: &[String], known: &[(&str, u64)]) -> Result<Vec<u64>> {
+    let mut values: Vec<u64> = known.iter().map(|k| k.1).collect();
+    let mut i = 0;
+    while i < args.len() {
+        let Some(k) = known.iter().position(|k| k.0 == args[i]) else {
+            bail!("unknown argument '{}'\n\n{USAGE}", args[i]);
+        };
+        let v = args
+            .get(i + 1)
+            .with_context(|| format!("{} needs a value", args[i]))?;
+        values[k] = v
+            .replace('_', "")
+            .parse()
+            .with_context(|| format!("{} {v}: not a non-negative integer", args[i]))?;
+        i += 2;
+    }
+    Ok(values)
+}
+
+fn run(args: &[String]) -> Result<bool> {
+    let Some(task) = args.first() else {
+        bail!("{USAGE}");
+    };
+    let rest = &args[1..];
+    match task.as_str() {
+        "tidy" => {
+            options(rest, &[])?;
+            tidy::tidy(&tidy::workspace_root())?;
+            println!("tidy: ok (dependency directions, //! headers)");
+            Ok(true)
+        }
+        "arith-experiment" => {
+            let v = options(rest, &[("--pairs", 10_000_000), ("--seed", 1)])?;
+            let start = std::time::Instant::now();
+            let r = experiment::run(v[0] as usize, v[1]);
+            experiment::print(&r, v[1]);
+            println!("  ({:.1} s)", start.elapsed().as_secs_f64());
+            Ok(r.beyond_bound == 0 && r.path_mismatches == 0)
+        }
+        "verify" => {
+            let v = options(rest, &[("--cases", 500), ("--seed", 1)])?;
+            let suite = verify::boolean_2d_suite();
+            let summary = suite.run(v[0] as usize, v[1]);
+            let failures = suite.print(&summary, v[0] as usize, v[1]);
+            if failures > 0 {
+                println!("verify: {failures} failure(s)");
+            } else {
+                println!("verify: all checks passed");
+            }
+            Ok(failures == 0)
+        }
+        "-h" | "--help" | "help" => {
+            println!("{USAGE}");
+            Ok(true)
+        }
+        other => bail!("unknown task '{other}'\n\n{USAGE}"),
+    }
+}
+
+fn main() -> ExitCode {
+    let args: Vec<String> = std::env::args().skip(1).collect();
+    match run(&args) {
+        Ok(true) => ExitCode::SUCCESS,
+        Ok(false) => ExitCode::FAILURE,
+        Err(e) => {
+            eprintln!("error: {e:#}");
+            ExitCode::from(2)
+        }
+    }
+}

@@ -1,0 +1,20 @@
+//! Umbra developer tasks as a library, so that the checks run both from
+//! the `cargo xtask` command line and as ordinary `cargo test` tests:
+//!
+//! - [`tidy`]: dependencies point only down the pyramid (DESIGN.md table)
+//!   and every `.rs` file starts with a `//!` header;
+//! - [`experiment`]: the section 8.3 measurement of the intersection-point
+//!   error of Tables 7.1-7.2 against the `sqrt(153) u L` bound (eq. 8.17);
+//! - [`verify`]: the topology invariants behind Theorems 1-2 and closure
+//!   (section 4.9) and eq. 4.20 over seeded corpora, as named checks;
+//! - [`exact`]: the exact big-integer oracles they use, and [`rng`], a
+//!   seeded SplitMix64 generator.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod exact;
+pub mod experiment;
+pub mod rng;
+pub mod tidy;
+pub mod verify;
