@@ -15,7 +15,7 @@ const USAGE: &str = "usage: cargo xtask <task>
 tasks:
   tidy                                   dependency direction (DESIGN.md) and //! headers
   arith-experiment [--pairs N] [--seed S]  section 8.3 experiment (default N = 10000000)
-  verify [--cases N] [--seed S]          Theorems 1-2, closure, eq. 4.20 over corpora (default N = 500)";
+  verify [--cases N] [--seed S]          Theorems 1-2, closure, eq. 4.20 over corpora (default N = 2000)";
 
 /// Parses `--name value` options into `u64`s, rejecting unknown ones.
 fn options(args: &[String], known: &[(&str, u64)]) -> Result<Vec<u64>> {
@@ -58,7 +58,7 @@ fn run(args: &[String]) -> Result<bool> {
             Ok(r.beyond_bound == 0 && r.path_mismatches == 0)
         }
         "verify" => {
-            let v = options(rest, &[("--cases", 500), ("--seed", 1)])?;
+            let v = options(rest, &[("--cases", 2000), ("--seed", 1)])?;
             let suite = verify::boolean_2d_suite();
             let summary = suite.run(v[0] as usize, v[1]);
             let failures = suite.print(&summary, v[0] as usize, v[1]);

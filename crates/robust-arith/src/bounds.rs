@@ -14,7 +14,7 @@ pub const Y_AT_X_ERROR_FACTOR: f64 = 4.0;
 /// The bound of eq. 8.17: a point computed by [`crate::interpolate`] lies
 /// within `sqrt(153) u L` (about `12.37 u L`) of both segments, where `L` is
 /// a power of two bounding every coordinate of both segments.
-pub const INTERSECTION_ERROR_FACTOR: f64 = 12.369_316_876_852_981; // sqrt(153)
+pub const INTERSECTION_ERROR_FACTOR: f64 = 12.369_316_876_852_98; // sqrt(153)
 
 /// The largest coordinate magnitude accepted: `f64::MAX / 4`, so that no
 /// subtraction of coordinates overflows (section 8.5).

@@ -128,7 +128,7 @@ fn edge_edge_crossings_of_section_7_2() {
     let h = cross(A, F, B, G);
     assert_eq!(h.value, 1, "AF crosses BG left to right");
     assert_eq!(format!("{:.15}", h.a[0]), "9.090909090909092");
-    assert_eq!(h.a, [9.090_909_090_909_091_72, 9.090_909_090_909_091_72]);
+    assert_eq!(h.a, [9.090_909_090_909_092, 9.090_909_090_909_092]);
     assert_eq!(h.a[0], h.a[1]);
     // So AF, BG and CE do not form a valid cell structure: AF crosses CE
     // below BG does (9 - 16u < 9 + 16u) and yet crosses BG to the right of
