@@ -65,7 +65,7 @@ pub(crate) fn construct(
             edge.assign(j as u32 | TAG_X, p, ci * x * mb);
             j += 1;
         }
-        emit(&mut edge, &mut pairs, ea.mult, data, ia, "A")?;
+        emit(&mut edge, &mut pairs, data, ia, "A")?;
         for &(s, e) in &pairs {
             let s = resolve(s, a, &mut a_ids, data, &mut x_ids, &mut out);
             let e = resolve(e, a, &mut a_ids, data, &mut x_ids, &mut out);
@@ -99,7 +99,7 @@ pub(crate) fn construct(
         let i_s = cb + ci * data.x20[eb.start as usize];
         edge.assign(eb.end, b.vertex(eb.end), i_e);
         edge.assign(eb.start, b.vertex(eb.start), -i_s);
-        emit(&mut edge, &mut pairs, eb.mult, data, ib, "B")?;
+        emit(&mut edge, &mut pairs, data, ib, "B")?;
         for &(s, e) in &pairs {
             let s = resolve(s, b, &mut b_ids, data, &mut x_ids, &mut out);
             let e = resolve(e, b, &mut b_ids, data, &mut x_ids, &mut out);
@@ -131,7 +131,6 @@ fn resolve(
 fn emit(
     edge: &mut CompositeEdge,
     pairs: &mut Vec<(u32, u32)>,
-    _mult: i32,
     data: &mut LevelData,
     index: usize,
     operand: &str,

@@ -39,6 +39,7 @@
 mod composite;
 mod construct;
 mod error;
+mod fast;
 mod op;
 mod reference;
 
@@ -46,7 +47,30 @@ pub use composite::{pair_composite_edge, CompositeEdge};
 pub use error::{BooleanError, Operand};
 pub use op::BooleanOp;
 pub use reference::{boolean_reference, LevelData};
+use std::time::Instant;
 use topology::PolygonSet2;
+
+/// Wall-clock durations of the phases of one Boolean, in milliseconds.
+///
+/// `total` covers the whole call (validation included); the phases add up
+/// to about `total`. Informational only: no decision depends on them.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Timings {
+    /// Coordinate validation and the closure check of both operands.
+    pub validate: f64,
+    /// Edge boxes and the sort-and-sweep broad phase (0 on the reference
+    /// path).
+    pub broad_phase: f64,
+    /// `X11` on the candidate pairs (every pair on the reference path).
+    pub intersections: f64,
+    /// `X02` and `X20`: ray casts and propagation (brute-force sums on the
+    /// reference path).
+    pub winding: f64,
+    /// Levels 3-4: inclusion values, composite edges, the shape.
+    pub construct: f64,
+    /// The whole operation.
+    pub total: f64,
+}
 
 /// The result of a 2D Boolean.
 #[derive(Clone, Debug)]
@@ -59,6 +83,8 @@ pub struct BooleanOutput {
     pub epsilon: f64,
     /// The number of edge pairs with `X11 != 0`.
     pub intersections: usize,
+    /// Phase timings of this call.
+    pub timings: Timings,
 }
 
 /// The Boolean `op` of `a` and `b` (eq. 4.7-4.16).
@@ -66,12 +92,59 @@ pub struct BooleanOutput {
 /// Both operands are validated first (coordinates finite and at most
 /// `f64::MAX / 4`, shape boundary closure); a bad operand gives
 /// [`BooleanError::InvalidInput`] and nothing else happens.
+///
+/// Cost `O((n + k) log n)` for `n` edges and `k` candidate pairs of the
+/// broad phase: a sort-and-sweep over edge boxes prunes every pair whose
+/// `X11` is provably 0, `X11` runs on the rest in parallel, and the winding
+/// numbers `X02`/`X20` come from one ray cast per connected component,
+/// propagated along edges. The result is bit for bit that of
+/// [`boolean_reference`], whatever the thread count.
 pub fn boolean(
     a: &PolygonSet2,
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<BooleanOutput, BooleanError> {
-    boolean_reference(a, b, op).map(|(out, _)| out)
+    boolean_audit(a, b, op).map(|(out, _)| out)
+}
+
+/// [`boolean`], also returning the level data it built from (for audits:
+/// Theorem 2 on `composite_counts`, comparison with [`boolean_reference`]).
+pub fn boolean_audit(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    let start = Instant::now();
+    let mut timings = Timings::default();
+    validate(a, Operand::A)?;
+    validate(b, Operand::B)?;
+    timings.validate = fast::ms(start);
+    let (mut data, t) = fast::level2_fast(a, b)?;
+    timings.broad_phase = t.broad_phase;
+    timings.intersections = t.intersections;
+    timings.winding = t.winding;
+    let clock = Instant::now();
+    let shape = construct::construct(a, b, op, &mut data)?;
+    timings.construct = fast::ms(clock);
+    timings.total = fast::ms(start);
+    Ok((output(a, b, shape, &data, timings), data))
+}
+
+/// Assembles a [`BooleanOutput`].
+pub(crate) fn output(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    shape: PolygonSet2,
+    data: &LevelData,
+    timings: Timings,
+) -> BooleanOutput {
+    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
+    BooleanOutput {
+        shape,
+        epsilon: robust_arith::intersection_error_bound(max_abs),
+        intersections: data.x11.len(),
+        timings,
+    }
 }
 
 /// Validates one operand.

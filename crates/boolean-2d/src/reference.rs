@@ -3,9 +3,11 @@
 //! the fast path is tested against.
 
 use crate::construct::construct;
-use crate::{validate, BooleanError, BooleanOp, BooleanOutput, Operand};
+use crate::fast::ms;
+use crate::{output, validate, BooleanError, BooleanOp, BooleanOutput, Operand, Timings};
 use shadow_1d::{s01, s10};
 use shadow_2d::x11;
+use std::time::Instant;
 use topology::PolygonSet2;
 
 /// The level-2 data of a 2D Boolean (section 4.9, "level k intersection
@@ -90,17 +92,17 @@ pub fn boolean_reference(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    let start = Instant::now();
+    let mut timings = Timings::default();
     validate(a, Operand::A)?;
     validate(b, Operand::B)?;
+    timings.validate = ms(start);
+    let clock = Instant::now();
     let mut data = level2_brute_force(a, b)?;
+    timings.intersections = ms(clock);
+    let clock = Instant::now();
     let shape = construct(a, b, op, &mut data)?;
-    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
-    Ok((
-        BooleanOutput {
-            shape,
-            epsilon: robust_arith::intersection_error_bound(max_abs),
-            intersections: data.x11.len(),
-        },
-        data,
-    ))
+    timings.construct = ms(clock);
+    timings.total = ms(start);
+    Ok((output(a, b, shape, &data, timings), data))
 }
