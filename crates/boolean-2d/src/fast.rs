@@ -21,6 +21,10 @@ use topology::{Edge2, PolygonSet2};
 /// way (hits are sorted by edge indices afterwards).
 const PARALLEL_PAIRS: usize = 2048;
 
+/// One `X11` hit as [`LevelData::x11`] stores it: edge of A, edge of B,
+/// value, intersection point.
+type Hit11 = (u32, u32, i32, [f64; 2]);
+
 /// Durations of the level-2 phases, in milliseconds.
 #[derive(Clone, Copy, Debug, Default)]
 pub(crate) struct Level2Times {
@@ -123,7 +127,7 @@ fn intersections(
     a: &PolygonSet2,
     b: &PolygonSet2,
     pairs: &[(u32, u32)],
-) -> Result<Vec<(u32, u32, i32, [f64; 2])>, BooleanError> {
+) -> Result<Vec<Hit11>, BooleanError> {
     let eval = |&(ia, ib): &(u32, u32)| {
         let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
         let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
@@ -131,7 +135,7 @@ fn intersections(
             .map(|hit| hit.map(|h| (ia, ib, h.value, h.a)))
             .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))
     };
-    let found: Vec<Option<(u32, u32, i32, [f64; 2])>> = if pairs.len() >= PARALLEL_PAIRS {
+    let found: Vec<Option<Hit11>> = if pairs.len() >= PARALLEL_PAIRS {
         pairs.par_iter().map(eval).collect::<Result<_, _>>()?
     } else {
         pairs.iter().map(eval).collect::<Result<_, _>>()?
@@ -249,12 +253,7 @@ fn cast_rays(
 
 /// Sum of `weight(other edge) * X11` over the hits of each edge of one
 /// operand: `per_edge[e]` for the A side (`by_a`) or the B side.
-fn crossing_sums(
-    hits: &[(u32, u32, i32, [f64; 2])],
-    edge_count: usize,
-    by_a: bool,
-    weights: &[Edge2],
-) -> Vec<i32> {
+fn crossing_sums(hits: &[Hit11], edge_count: usize, by_a: bool, weights: &[Edge2]) -> Vec<i32> {
     let mut sums = vec![0i32; edge_count];
     for &(ia, ib, x, _) in hits {
         let (own, other) = if by_a { (ia, ib) } else { (ib, ia) };
