@@ -35,7 +35,10 @@ pub(crate) fn construct(
     data: &mut LevelData,
 ) -> Result<PolygonSet2, BooleanError> {
     let (ca, cb, ci) = op.coefficients();
-    let mut out = PolygonSet2::new();
+    let mut out = PolygonSet2::with_capacity(
+        a.vertex_count() + b.vertex_count() + data.x11.len(),
+        a.edge_count() + b.edge_count() + 2 * data.x11.len(),
+    );
     let mut a_ids = Ids::new(a.vertex_count());
     let mut b_ids = Ids::new(b.vertex_count());
     let mut x_ids = Ids::new(data.x11.len());

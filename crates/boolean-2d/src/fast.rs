@@ -21,6 +21,9 @@ use topology::{Edge2, PolygonSet2};
 /// way (hits are sorted by edge indices afterwards).
 const PARALLEL_PAIRS: usize = 2048;
 
+/// Edge counts above which the two operands' ray casts run side by side.
+const PARALLEL_EDGES: usize = 16384;
+
 /// One `X11` hit as [`LevelData::x11`] stores it: edge of A, edge of B,
 /// value, intersection point.
 type Hit11 = (u32, u32, i32, [f64; 2]);
@@ -328,18 +331,21 @@ pub(crate) fn level2_fast(
             .collect()
     };
     let (cast_a, cast_b) = (casts(&order_a), casts(&order_b));
-    let (x02_cast, x20_cast) = rayon::join(
-        || {
-            cast_rays(&cast_a, a, &boxes_b, b, |v, e, (s, t)| {
-                -(e.mult * s01(v, &s, &t))
-            })
-        },
-        || {
-            cast_rays(&cast_b, b, &boxes_a, a, |v, e, (s, t)| {
-                e.mult * s10(&s, &t, v)
-            })
-        },
-    );
+    let cast_x02 = || {
+        cast_rays(&cast_a, a, &boxes_b, b, |v, e, (s, t)| {
+            -(e.mult * s01(v, &s, &t))
+        })
+    };
+    let cast_x20 = || {
+        cast_rays(&cast_b, b, &boxes_a, a, |v, e, (s, t)| {
+            e.mult * s10(&s, &t, v)
+        })
+    };
+    let (x02_cast, x20_cast) = if a.edge_count() + b.edge_count() >= PARALLEL_EDGES {
+        rayon::join(cast_x02, cast_x20)
+    } else {
+        (cast_x02(), cast_x20())
+    };
     let delta_a: Vec<i32> = crossing_sums(&hits, a.edge_count(), true, b.edges())
         .into_iter()
         .map(|d| -d)

@@ -37,6 +37,14 @@ impl PolygonSet2 {
         Self::default()
     }
 
+    /// An empty set with room for `vertices` vertices and `edges` edges.
+    pub fn with_capacity(vertices: usize, edges: usize) -> Self {
+        PolygonSet2 {
+            vertices: Vec::with_capacity(vertices),
+            edges: Vec::with_capacity(edges),
+        }
+    }
+
     /// A set from raw parts, unchecked: call [`Self::check_topology`] and
     /// [`Self::validate_coordinates`] before handing user data to an
     /// algorithm.
