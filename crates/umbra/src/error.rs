@@ -5,7 +5,9 @@
 //! print it as is.
 
 use boolean_2d::BooleanError;
+use boolean_3d::Boolean3Error;
 use robust_arith::ArithError;
+use simplify_2d::SimplifyError;
 use std::fmt;
 use topology::TopologyError;
 
@@ -76,6 +78,31 @@ pub enum UmbraError {
         /// The error of the Boolean.
         source: BooleanError,
     },
+    /// The text of a GeoJSON, OBJ or OFF file is malformed or truncated.
+    Malformed {
+        /// The file.
+        file: String,
+        /// The format (`"GeoJSON"`, `"OBJ"`, `"OFF"`).
+        format: &'static str,
+        /// What is wrong, one line.
+        message: String,
+    },
+    /// A simplification or a Boolean through simplification failed.
+    Simplify {
+        /// The file of the offending input, or an empty string for an
+        /// internal error.
+        file: String,
+        /// The error of the sweep.
+        source: SimplifyError,
+    },
+    /// A 3D Boolean failed; the operands are named by file.
+    Boolean3 {
+        /// The file of the offending operand, or an empty string for an
+        /// internal error.
+        file: String,
+        /// The error of the 3D Boolean.
+        source: Boolean3Error,
+    },
     /// An invariant of the facade failed: this is a bug, please report it.
     Internal(String),
 }
@@ -113,6 +140,25 @@ impl fmt::Display for UmbraError {
                     format!("{file}: {source}")
                 }
             }
+            UmbraError::Malformed {
+                file,
+                format,
+                message,
+            } => format!("{file}: malformed {format}: {message}"),
+            UmbraError::Simplify { file, source } => {
+                if file.is_empty() {
+                    format!("simplify: {source}")
+                } else {
+                    format!("{file}: {source}")
+                }
+            }
+            UmbraError::Boolean3 { file, source } => {
+                if file.is_empty() {
+                    format!("boolean: {source}")
+                } else {
+                    format!("{file}: {source}")
+                }
+            }
             UmbraError::Internal(msg) => {
                 format!("internal error (this is a bug, please report it): {msg}")
             }
@@ -129,6 +175,8 @@ impl std::error::Error for UmbraError {
             UmbraError::BadCoordinate { source, .. } => Some(source),
             UmbraError::InvalidShape { source, .. } => Some(source),
             UmbraError::Boolean { source, .. } => Some(source),
+            UmbraError::Simplify { source, .. } => Some(source),
+            UmbraError::Boolean3 { source, .. } => Some(source),
             _ => None,
         }
     }

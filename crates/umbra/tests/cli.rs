@@ -408,7 +408,11 @@ fn bad_input_exits_1_with_one_line_naming_the_file() {
             "only 2D",
         ),
         (write(&dir, "shape.txt", A_SQUARE), "unsupported file type"),
-        (write(&dir, "shape.geojson", "{}"), "unsupported file type"),
+        (
+            write(&dir, "shape.geojson", "{}"),
+            "malformed GeoJSON: the document has no \"type\"",
+        ),
+        (write(&dir, "shape.stl", "solid"), "unsupported file type"),
         (write(&dir, "noext", A_SQUARE), "unsupported file type"),
     ];
     for (path, needle) in &cases {
