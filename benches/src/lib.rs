@@ -2,6 +2,8 @@
 //! and a [`Peer`] trait with one implementation per library under test
 //! (Umbra's 2D Boolean, `i_overlay` 9 and `geo` 0.33), so that every
 //! library runs the same operation on the same coordinates in one process.
+//! [`solid`] holds the 3D rows (beside `manifold-rust`) and [`sweep`] the
+//! simplification rows (beside `i_overlay`'s `simplify_shape` and `geo`).
 //!
 //! The headline case is the dissertation's Table 7.4 (section 7.6, after
 //! [MY04]): the union of a regular n-gon with a copy of itself rotated by a
@@ -34,6 +36,8 @@
 mod error;
 mod generate;
 mod peers;
+pub mod solid;
+pub mod sweep;
 
 pub use error::BenchError;
 pub use generate::{random_star_polygon, regular_ngon, rotated_ngon_pair, Case, Ring, TABLE_7_4};

@@ -1,0 +1,310 @@
+//! 3D inputs and peers: sphere minus a sphere shifted by half its radius
+//! (the 3D bench of issue 3), as UV spheres in two variants (triangles;
+//! quadrilaterals with triangle fans at the poles), run on Umbra's
+//! triangle-mesh and polygon-mesh Booleans and on `manifold-rust` 0.19 (a
+//! Rust port of Manifold) with identical coordinates.
+
+use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
+use manifold_rust::manifold::Manifold;
+use manifold_rust::types::MeshGL64;
+use topology::{Facet, PolygonMesh, TriangleMesh};
+
+/// A UV sphere of `slices` segments and `stacks` bands centred at `c`:
+/// `2 slices (stacks - 1)` triangles, outward facing.
+pub fn uv_sphere(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> TriangleMesh {
+    let mut v = vec![[c[0], c[1], c[2] + r]];
+    for i in 1..stacks {
+        let th = std::f64::consts::PI * f64::from(i) / f64::from(stacks);
+        for j in 0..slices {
+            let ph = std::f64::consts::TAU * f64::from(j) / f64::from(slices);
+            v.push([
+                c[0] + r * th.sin() * ph.cos(),
+                c[1] + r * th.sin() * ph.sin(),
+                c[2] + r * th.cos(),
+            ]);
+        }
+    }
+    v.push([c[0], c[1], c[2] - r]);
+    let south = v.len() as u32 - 1;
+    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
+    let mut t = Vec::with_capacity(2 * (slices * (stacks - 1)) as usize);
+    for j in 0..slices {
+        t.push([0, ring(1, j), ring(1, j + 1)]);
+        t.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
+    }
+    for i in 1..stacks - 1 {
+        for j in 0..slices {
+            let (a, b, c2, d) = (
+                ring(i, j),
+                ring(i, j + 1),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+            );
+            t.push([a, c2, d]);
+            t.push([a, d, b]);
+        }
+    }
+    TriangleMesh::new(v, t)
+}
+
+/// The same sphere as quadrilaterals (triangles at the poles).
+pub fn uv_sphere_quads(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> PolygonMesh {
+    let t = uv_sphere(c, r, slices, stacks);
+    let south = t.vertices.len() as u32 - 1;
+    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
+    let mut f = Vec::new();
+    for j in 0..slices {
+        f.push(Facet::from_loop(&[0, ring(1, j), ring(1, j + 1)]));
+        f.push(Facet::from_loop(&[
+            south,
+            ring(stacks - 1, j + 1),
+            ring(stacks - 1, j),
+        ]));
+    }
+    for i in 1..stacks - 1 {
+        for j in 0..slices {
+            f.push(Facet::from_loop(&[
+                ring(i, j),
+                ring(i + 1, j),
+                ring(i + 1, j + 1),
+                ring(i, j + 1),
+            ]));
+        }
+    }
+    PolygonMesh::new(t.vertices, f)
+}
+
+/// Slices and stacks giving about `triangles` triangles (`slices = 2
+/// stacks`).
+pub fn sphere_resolution(triangles: usize) -> (u32, u32) {
+    let stacks = ((triangles as f64 / 4.0).sqrt().round() as u32).max(3);
+    (2 * stacks, stacks)
+}
+
+/// The two operands of a row: the unit sphere at the origin and the unit
+/// sphere shifted by half its radius along a direction off every axis (so
+/// that no vertex of one lies on the other's facet planes by symmetry).
+pub fn sphere_pair(triangles: usize) -> (TriangleMesh, TriangleMesh) {
+    let (s, t) = sphere_resolution(triangles);
+    let d = 0.5 / 3f64.sqrt();
+    (
+        uv_sphere([0.0; 3], 1.0, s, t),
+        uv_sphere([d, d * 1.1, d * 0.9], 1.0, s, t),
+    )
+}
+
+/// The quadrilateral variant of [`sphere_pair`].
+pub fn sphere_pair_quads(triangles: usize) -> (PolygonMesh, PolygonMesh) {
+    let (s, t) = sphere_resolution(triangles);
+    let d = 0.5 / 3f64.sqrt();
+    (
+        uv_sphere_quads([0.0; 3], 1.0, s, t),
+        uv_sphere_quads([d, d * 1.1, d * 0.9], 1.0, s, t),
+    )
+}
+
+/// The analytic volume of a unit ball minus a unit ball at distance
+/// `d = 0.5` from it: `4/3 pi - pi (4 + d)(2 - d)^2 / 12` (the lens).
+pub fn analytic_difference_volume() -> f64 {
+    let d = 0.5 * (1.0f64 + 1.21 + 0.81).sqrt() / 3f64.sqrt();
+    let pi = std::f64::consts::PI;
+    4.0 / 3.0 * pi - pi * (4.0 + d) * (2.0 - d) * (2.0 - d) / 12.0
+}
+
+/// Signed volume of a triangle mesh (divergence theorem).
+pub fn triangle_volume(m: &TriangleMesh) -> f64 {
+    m.signed_volume()
+}
+
+/// Signed volume of a polygon mesh (fan of each facet loop from its first
+/// vertex).
+pub fn polygon_volume(m: &PolygonMesh) -> f64 {
+    let mut six = 0.0;
+    for f in &m.facets {
+        let Some(first) = f.half_edges.first() else {
+            continue;
+        };
+        let c = m.vertices[first.start as usize];
+        for h in &f.half_edges {
+            let (a, b) = (m.vertices[h.start as usize], m.vertices[h.end as usize]);
+            six += c[0] * (a[1] * b[2] - a[2] * b[1]) - c[1] * (a[0] * b[2] - a[2] * b[0])
+                + c[2] * (a[0] * b[1] - a[1] * b[0]);
+        }
+    }
+    six / 6.0
+}
+
+/// What one run produced: triangle (or facet) count, volume, and whether
+/// the result is closed (shape boundary closure for Umbra, Manifold's own
+/// status for the peer).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct SolidStats {
+    /// Facets (Umbra's polygon variant) or triangles of the result.
+    pub facets: usize,
+    /// The enclosed volume.
+    pub volume: f64,
+    /// The result passed its library's validity check.
+    pub valid: bool,
+}
+
+/// A 3D library under test: `prepare` converts (not timed), `difference`
+/// runs `A - B` (timed), `stats` reads the result (not timed).
+pub trait SolidPeer {
+    /// The prepared operands.
+    type Input;
+    /// The native result.
+    type Output;
+    /// A short name.
+    fn name(&self) -> &'static str;
+    /// Converts the triangle operands.
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input;
+    /// `A - B`.
+    fn difference(&self, input: &Self::Input) -> Self::Output;
+    /// Facet count, volume and validity of the result.
+    fn stats(&self, out: &Self::Output) -> SolidStats;
+}
+
+/// Umbra's triangle-mesh variant (`boolean_triangles`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct UmbraTriangles;
+
+impl SolidPeer for UmbraTriangles {
+    type Input = (TriangleMesh, TriangleMesh);
+    type Output = Option<TriangleMesh>;
+    fn name(&self) -> &'static str {
+        "umbra-tri"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        (a.clone(), b.clone())
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        boolean_triangles(&input.0, &input.1, BooleanOp3::Difference)
+            .ok()
+            .map(|o| o.mesh)
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        match out {
+            Some(m) => SolidStats {
+                facets: m.triangles.len(),
+                volume: triangle_volume(m),
+                valid: m.check_topology().is_ok(),
+            },
+            None => SolidStats {
+                facets: 0,
+                volume: f64::NAN,
+                valid: false,
+            },
+        }
+    }
+}
+
+/// Umbra's polygon-mesh variant (`boolean_mesh`) on the same triangles.
+#[derive(Clone, Copy, Debug, Default)]
+pub struct UmbraPolygons;
+
+impl SolidPeer for UmbraPolygons {
+    type Input = (PolygonMesh, PolygonMesh);
+    type Output = Option<PolygonMesh>;
+    fn name(&self) -> &'static str {
+        "umbra-poly"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        (a.to_polygon_mesh(), b.to_polygon_mesh())
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        boolean_mesh(&input.0, &input.1, BooleanOp3::Difference)
+            .ok()
+            .map(|o| o.mesh)
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        match out {
+            Some(m) => SolidStats {
+                facets: m.facets.len(),
+                volume: polygon_volume(m),
+                valid: m.check_topology().is_ok(),
+            },
+            None => SolidStats {
+                facets: 0,
+                volume: f64::NAN,
+                valid: false,
+            },
+        }
+    }
+}
+
+/// `manifold-rust` 0.19 (feature `parallel`): `Manifold::from_mesh_gl64`
+/// of each operand (not timed), then `difference` (timed; the Boolean is
+/// evaluated eagerly).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct ManifoldRust;
+
+/// A triangle mesh as Manifold's `MeshGL64`.
+fn mesh_gl64(m: &TriangleMesh) -> MeshGL64 {
+    MeshGL64 {
+        num_prop: 3,
+        vert_properties: m.vertices.iter().flatten().copied().collect(),
+        tri_verts: m
+            .triangles
+            .iter()
+            .flatten()
+            .map(|&v| u64::from(v))
+            .collect(),
+        ..MeshGL64::default()
+    }
+}
+
+impl SolidPeer for ManifoldRust {
+    type Input = (Manifold, Manifold);
+    type Output = Manifold;
+    fn name(&self) -> &'static str {
+        "manifold-rust"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        (
+            Manifold::from_mesh_gl64(&mesh_gl64(a)),
+            Manifold::from_mesh_gl64(&mesh_gl64(b)),
+        )
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        let out = input.0.difference(&input.1);
+        // Force any deferred work so that the timing covers the Boolean.
+        std::hint::black_box(out.num_tri());
+        out
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        SolidStats {
+            facets: out.num_tri(),
+            volume: out.volume(),
+            valid: format!("{:?}", out.status()) == "NoError",
+        }
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn spheres_are_closed_and_near_the_analytic_volume() {
+        let (a, b) = sphere_pair(2000);
+        assert!(a.check_topology().is_ok() && b.check_topology().is_ok());
+        let v = triangle_volume(&a);
+        assert!((v - 4.0 / 3.0 * std::f64::consts::PI).abs() < 0.05, "{v}");
+        let (q, _) = sphere_pair_quads(2000);
+        assert!(q.check_topology().is_ok());
+        assert!((polygon_volume(&q) - v).abs() < 1e-12);
+    }
+
+    #[test]
+    fn every_peer_gets_the_same_difference() {
+        let (a, b) = sphere_pair(2000);
+        let want = analytic_difference_volume();
+        let u = UmbraTriangles.stats(&UmbraTriangles.difference(&UmbraTriangles.prepare(&a, &b)));
+        let p = UmbraPolygons.stats(&UmbraPolygons.difference(&UmbraPolygons.prepare(&a, &b)));
+        let m = ManifoldRust.stats(&ManifoldRust.difference(&ManifoldRust.prepare(&a, &b)));
+        assert!(u.valid && p.valid && m.valid, "{u:?} {p:?} {m:?}");
+        assert!((u.volume - p.volume).abs() < 1e-12, "{u:?} {p:?}");
+        assert!((u.volume - m.volume).abs() < 1e-9, "{u:?} {m:?}");
+        assert!((u.volume - want).abs() < 0.05 * want, "{u:?} vs {want}");
+    }
+}
