@@ -1,0 +1,272 @@
+//! Shared `Arbitrary` inputs for the fuzz targets. Each input's `Debug`
+//! prints a ready-to-paste Rust test case, so a minimized crash becomes a
+//! regression test by copying the fuzzer's output.
+
+use arbitrary::Arbitrary;
+use std::fmt;
+use topology::{Facet, PolygonMesh, PolygonSet2, TriangleMesh};
+
+/// A coordinate: mostly small integers (exact ties everywhere), sometimes
+/// arbitrary bit patterns (NaN, infinities, huge and subnormal values).
+#[derive(Clone, Copy, Arbitrary)]
+pub enum Coord {
+    /// A small integer-grid value.
+    Grid(i8),
+    /// A value in [-1, 1] with a 16-bit mantissa.
+    Unit(i16),
+    /// Any f64 bit pattern.
+    Bits(u64),
+}
+
+impl Coord {
+    /// The f64 value.
+    pub fn value(self) -> f64 {
+        match self {
+            Coord::Grid(i) => f64::from(i % 8),
+            Coord::Unit(i) => f64::from(i) / 32768.0,
+            Coord::Bits(b) => f64::from_bits(b),
+        }
+    }
+}
+
+/// A polygon set given as closed loops of points; each loop may be
+/// reversed and repeated (multiplicity).
+#[derive(Clone, Arbitrary)]
+pub struct Loops {
+    /// The loops: points, and a multiplicity in -2..=2.
+    pub loops: Vec<(Vec<(Coord, Coord)>, i8)>,
+}
+
+impl Loops {
+    /// The polygon set (always topologically valid: every loop is closed).
+    pub fn to_set(&self) -> PolygonSet2 {
+        let mut s = PolygonSet2::new();
+        for (points, mult) in self.loops.iter().take(8) {
+            let pts: Vec<[f64; 2]> = points
+                .iter()
+                .take(32)
+                .map(|(x, y)| [x.value(), y.value()])
+                .collect();
+            if pts.is_empty() {
+                continue;
+            }
+            let first = s.vertex_count() as u32;
+            for &p in &pts {
+                s.add_vertex(p);
+            }
+            let n = pts.len() as u32;
+            let m = i32::from(*mult % 3);
+            for i in 0..n {
+                s.add_edge_mult(first + i, first + (i + 1) % n, m);
+            }
+        }
+        s
+    }
+}
+
+impl fmt::Debug for Loops {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let s = self.to_set();
+        writeln!(f, "PolygonSet2::from_parts(")?;
+        writeln!(f, "    vec![")?;
+        for p in s.vertices() {
+            writeln!(
+                f,
+                "        [f64::from_bits({:#x}), f64::from_bits({:#x})],",
+                p[0].to_bits(),
+                p[1].to_bits()
+            )?;
+        }
+        writeln!(f, "    ],")?;
+        writeln!(f, "    vec![")?;
+        for e in s.edges() {
+            writeln!(
+                f,
+                "        Edge2 {{ start: {}, end: {}, mult: {} }},",
+                e.start, e.end, e.mult
+            )?;
+        }
+        writeln!(f, "    ],")?;
+        write!(f, ")")
+    }
+}
+
+/// Two operands and an operation.
+#[derive(Clone, Arbitrary, Debug)]
+pub struct BooleanInput {
+    /// Operand A.
+    pub a: Loops,
+    /// Operand B.
+    pub b: Loops,
+    /// 0 union, 1 intersection, otherwise difference.
+    pub op: u8,
+}
+
+/// A closed solid template: its facets as vertex loops over `vertices`
+/// local vertices, outward for the natural coordinates.
+#[derive(Clone, Copy, Arbitrary, Debug)]
+pub enum Template {
+    /// 4 vertices, 4 triangles.
+    Tetrahedron,
+    /// 8 vertices, 6 quadrilaterals.
+    Cube,
+    /// 6 vertices, 8 triangles.
+    Octahedron,
+}
+
+impl Template {
+    fn loops(self) -> (usize, Vec<Vec<u32>>) {
+        match self {
+            Template::Tetrahedron => (4, vec![vec![0, 2, 1], vec![0, 1, 3], vec![1, 2, 3], vec![0, 3, 2]]),
+            Template::Cube => (
+                8,
+                vec![
+                    vec![0, 2, 3, 1],
+                    vec![4, 5, 7, 6],
+                    vec![0, 1, 5, 4],
+                    vec![2, 6, 7, 3],
+                    vec![0, 4, 6, 2],
+                    vec![1, 3, 7, 5],
+                ],
+            ),
+            Template::Octahedron => (
+                6,
+                vec![
+                    vec![0, 2, 4],
+                    vec![2, 1, 4],
+                    vec![1, 3, 4],
+                    vec![3, 0, 4],
+                    vec![2, 0, 5],
+                    vec![1, 2, 5],
+                    vec![3, 1, 5],
+                    vec![0, 3, 5],
+                ],
+            ),
+        }
+    }
+}
+
+/// A topologically valid polygon mesh: shells from templates with
+/// arbitrary coordinates (integer grid, unit, or any bit pattern: "even
+/// replacing the vertex position data with random data would generate a
+/// topologically valid result"), some of them reversed, and vertex pairs
+/// identified (which keeps every closure constraint and makes non-manifold
+/// edges and vertices, and zero-length half-edges).
+#[derive(Clone, Arbitrary)]
+pub struct Solid {
+    /// Shells: template, reversed, and its coordinates (used cyclically).
+    pub shells: Vec<(Template, bool, Vec<Coord>)>,
+    /// Vertex pairs to identify (indices taken modulo the vertex count).
+    pub merges: Vec<(u8, u8)>,
+}
+
+impl Solid {
+    /// The mesh (always topologically valid).
+    pub fn to_mesh(&self) -> PolygonMesh {
+        let mut vertices = Vec::new();
+        let mut facets = Vec::new();
+        for (t, reversed, coords) in self.shells.iter().take(4) {
+            let (n, loops) = t.loops();
+            let base = vertices.len() as u32;
+            for i in 0..n {
+                let c = |k: usize| {
+                    if coords.is_empty() {
+                        // The template's natural position.
+                        f64::from(i as u8 >> k & 1)
+                    } else {
+                        coords[(3 * i + k) % coords.len()].value()
+                    }
+                };
+                vertices.push([c(0), c(1), c(2)]);
+            }
+            for l in loops {
+                let mut l: Vec<u32> = l.iter().map(|v| v + base).collect();
+                if *reversed {
+                    l.reverse();
+                }
+                facets.push(Facet::from_loop(&l));
+            }
+        }
+        let n = vertices.len();
+        if n > 0 {
+            let mut map: Vec<u32> = (0..n as u32).collect();
+            for &(x, y) in self.merges.iter().take(4) {
+                let (x, y) = (x as usize % n, y as usize % n);
+                let target = map[y];
+                for m in map.iter_mut() {
+                    if *m == map[x] {
+                        *m = target;
+                    }
+                }
+            }
+            for f in &mut facets {
+                for h in &mut f.half_edges {
+                    h.start = map[h.start as usize];
+                    h.end = map[h.end as usize];
+                }
+            }
+        }
+        PolygonMesh::new(vertices, facets)
+    }
+
+    /// The mesh as triangles when every facet is a triangle.
+    pub fn to_triangles(&self) -> Option<TriangleMesh> {
+        let m = self.to_mesh();
+        let mut tris = Vec::new();
+        for f in &m.facets {
+            let h = &f.half_edges;
+            if h.len() != 3 {
+                return None;
+            }
+            tris.push([h[0].start, h[1].start, h[2].start]);
+        }
+        Some(TriangleMesh::new(m.vertices, tris))
+    }
+}
+
+impl fmt::Debug for Solid {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        let m = self.to_mesh();
+        writeln!(f, "PolygonMesh::new(")?;
+        writeln!(f, "    vec![")?;
+        for p in &m.vertices {
+            writeln!(
+                f,
+                "        [f64::from_bits({:#x}), f64::from_bits({:#x}), f64::from_bits({:#x})],",
+                p[0].to_bits(),
+                p[1].to_bits(),
+                p[2].to_bits()
+            )?;
+        }
+        writeln!(f, "    ],")?;
+        writeln!(f, "    vec![")?;
+        for fa in &m.facets {
+            let l: Vec<u32> = fa.half_edges.iter().map(|h| h.start).collect();
+            writeln!(f, "        Facet::from_loop(&{l:?}),")?;
+        }
+        writeln!(f, "    ],")?;
+        write!(f, ")")
+    }
+}
+
+/// Two solids and an operation.
+#[derive(Clone, Arbitrary, Debug)]
+pub struct SolidInput {
+    /// Operand A.
+    pub a: Solid,
+    /// Operand B.
+    pub b: Solid,
+    /// 0 union, 1 intersection, otherwise difference.
+    pub op: u8,
+}
+
+/// A polygon set and a fill rule for the simplification sweep.
+#[derive(Clone, Arbitrary, Debug)]
+pub struct SimplifyInput {
+    /// The set.
+    pub set: Loops,
+    /// A second set for the Booleans through simplification.
+    pub other: Loops,
+    /// The fill rule / operation selector.
+    pub rule: u8,
+}
