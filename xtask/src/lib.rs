@@ -7,6 +7,9 @@
 //!   error of Tables 7.1-7.2 against the `sqrt(153) u L` bound (eq. 8.17);
 //! - [`verify`]: the topology invariants behind Theorems 1-2 and closure
 //!   (section 4.9) and eq. 4.20 over seeded corpora, as named checks;
+//! - [`verify3`]: the same for the 3D Boolean (Theorems 1-4 through
+//!   `Audit::verify`) and the simplification sweep (cell structure,
+//!   closure, vertex bound);
 //! - [`exact`]: the exact big-integer oracles they use, and [`rng`], a
 //!   seeded SplitMix64 generator.
 
@@ -18,3 +21,4 @@ pub mod experiment;
 pub mod rng;
 pub mod tidy;
 pub mod verify;
+pub mod verify3;

@@ -8,14 +8,17 @@
 
 use anyhow::{bail, Context, Result};
 use std::process::ExitCode;
-use xtask::{experiment, tidy, verify};
+use xtask::{experiment, tidy, verify, verify3};
 
 const USAGE: &str = "usage: cargo xtask <task>
 
 tasks:
   tidy                                   dependency direction (DESIGN.md) and //! headers
   arith-experiment [--pairs N] [--seed S]  section 8.3 experiment (default N = 10000000)
-  verify [--cases N] [--seed S]          Theorems 1-2, closure, eq. 4.20 over corpora (default N = 2000)";
+  verify [--suite 2d|3d|simplify|all] [--cases N] [--seed S]
+                                         2D: Theorems 1-2, closure, eq. 4.20 (default N = 2000);
+                                         3D: Theorems 1-4 by Audit::verify (N = 300);
+                                         simplify: cell structure, closure, vertex bound (N = 500)";
 
 /// Parses `--name value` options into `u64`s, rejecting unknown ones.
 fn options(args: &[String], known: &[(&str, u64)]) -> Result<Vec<u64>> {
@@ -58,10 +61,48 @@ fn run(args: &[String]) -> Result<bool> {
             Ok(r.beyond_bound == 0 && r.path_mismatches == 0)
         }
         "verify" => {
-            let v = options(rest, &[("--cases", 2000), ("--seed", 1)])?;
-            let suite = verify::boolean_2d_suite();
-            let summary = suite.run(v[0] as usize, v[1]);
-            let failures = suite.print(&summary, v[0] as usize, v[1]);
+            let suite_name = rest
+                .iter()
+                .position(|a| a == "--suite")
+                .and_then(|i| rest.get(i + 1))
+                .cloned()
+                .unwrap_or_else(|| "all".into());
+            let rest: Vec<String> = match rest.iter().position(|a| a == "--suite") {
+                Some(i) => rest[..i]
+                    .iter()
+                    .chain(rest.iter().skip(i + 2))
+                    .cloned()
+                    .collect(),
+                None => rest.to_vec(),
+            };
+            let v = options(&rest, &[("--cases", 0), ("--seed", 1)])?;
+            let pick = |default: u64| {
+                if v[0] == 0 {
+                    default as usize
+                } else {
+                    v[0] as usize
+                }
+            };
+            let mut failures = 0;
+            let known = ["all", "2d", "3d", "simplify"];
+            if !known.contains(&suite_name.as_str()) {
+                bail!("unknown suite '{suite_name}' (2d, 3d, simplify or all)");
+            }
+            if matches!(suite_name.as_str(), "all" | "2d") {
+                let suite = verify::boolean_2d_suite();
+                let n = pick(2000);
+                failures += suite.print(&suite.run(n, v[1]), n, v[1]);
+            }
+            if matches!(suite_name.as_str(), "all" | "3d") {
+                let suite = verify3::boolean_3d_suite();
+                let n = pick(300);
+                failures += suite.print(&suite.run(n, v[1]), n, v[1]);
+            }
+            if matches!(suite_name.as_str(), "all" | "simplify") {
+                let suite = verify3::simplify_suite();
+                let n = pick(500);
+                failures += suite.print(&suite.run(n, v[1]), n, v[1]);
+            }
             if failures > 0 {
                 println!("verify: {failures} failure(s)");
             } else {
