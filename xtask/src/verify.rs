@@ -23,13 +23,15 @@
 //!   and `sum_eA m_A X11(e_A, e_B) = X20(v_e) - X20(v_s)` for every edge of B;
 //! - `eq-8.17`: every X11 point is within `sqrt(153) u L` of both edges
 //!   (exact distance);
+//! - `fast=ref`: the fast path (`boolean_audit`) gives the reference's
+//!   level data and shape bit for bit;
 //! - `eq-4.20`: at random sample points farther than `64 u L` from every
 //!   input edge, the exact winding number of the result equals
 //!   `c_A a + c_B b + c_I a b` of the exact winding numbers of A and B.
 
 use crate::exact::{distance_to_segment, l_exp, winding};
 use crate::rng::SplitMix64;
-use boolean_2d::{boolean_reference, BooleanOp, BooleanOutput, LevelData};
+use boolean_2d::{boolean_audit, boolean_reference, BooleanOp, BooleanOutput, LevelData};
 use rayon::prelude::*;
 use robust_arith::{INTERSECTION_ERROR_FACTOR, UNIT_ROUNDOFF};
 use std::collections::BTreeMap;
@@ -341,6 +343,28 @@ fn each_result(
     }
 }
 
+/// The fast path (`boolean_audit`: broad phase, ray casts, propagation)
+/// computes exactly the reference's level data and shape.
+fn check_fast_path(case: &Case2) -> Outcome {
+    each_result(case, |op, out, data| {
+        match boolean_audit(&case.a, &case.b, op) {
+            Ok((fast, fast_data)) => {
+                if &fast_data != data {
+                    Outcome::Fail(format!(
+                        "{}: level data differ from the reference",
+                        op.name()
+                    ))
+                } else if fast.shape != out.shape {
+                    Outcome::Fail(format!("{}: shape differs from the reference", op.name()))
+                } else {
+                    Outcome::Pass
+                }
+            }
+            Err(e) => Outcome::Fail(format!("{}: {e}", op.name())),
+        }
+    })
+}
+
 fn check_theorem_1(case: &Case2) -> Outcome {
     each_result(case, |op, _, data| {
         for &(ia, ib, _, p) in &data.x11 {
@@ -531,6 +555,11 @@ pub fn boolean_2d_suite() -> Suite<Case2> {
                 name: "eq-4.20",
                 source: "winding of result",
                 run: check_eq_4_20,
+            },
+            Check {
+                name: "fast=ref",
+                source: "fast path == brute force",
+                run: check_fast_path,
             },
         ],
     }
