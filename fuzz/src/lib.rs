@@ -192,9 +192,9 @@ impl Solid {
             let mut map: Vec<u32> = (0..n as u32).collect();
             for &(x, y) in self.merges.iter().take(4) {
                 let (x, y) = (x as usize % n, y as usize % n);
-                let target = map[y];
+                let (from, target) = (map[x], map[y]);
                 for m in map.iter_mut() {
-                    if *m == map[x] {
+                    if *m == from {
                         *m = target;
                     }
                 }
