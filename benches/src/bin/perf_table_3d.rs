@@ -13,7 +13,11 @@
 //! binary with `--child`), with `RAYON_NUM_THREADS` set (0 = all cores), so
 //! that peak memory is that of one run: the child resets the kernel's peak
 //! RSS (`/proc/self/clear_refs`, value 5) after building the inputs and
-//! reads `VmHWM` after the Boolean.
+//! reads `VmHWM` after the Boolean (*RSS growth*: what the process took
+//! from the OS, allocator retention included). The *heap peak* comes from
+//! the sibling binary `peak-memory-3d`, which counts live heap bytes with a
+//! global allocator: the most bytes live at once during the Boolean, minus
+//! those live before it.
 
 use std::process::Command;
 use std::time::Instant;
@@ -69,6 +73,7 @@ fn child(args: &[String]) {
 struct Cell {
     ms: f64,
     peak_mb: f64,
+    heap_mb: f64,
     facets: usize,
     volume: f64,
     valid: bool,
@@ -94,7 +99,29 @@ fn run_cell(peer: &str, size: usize, threads: usize) -> Option<Cell> {
     }
     let text = String::from_utf8_lossy(&out.stdout);
     let f: Vec<&str> = text.split_whitespace().collect();
+    let mut heap = Command::new(
+        std::env::current_exe()
+            .ok()?
+            .with_file_name("peak-memory-3d"),
+    );
+    heap.args([peer, &size.to_string()]);
+    if threads > 0 {
+        heap.env("RAYON_NUM_THREADS", threads.to_string());
+    } else {
+        heap.env_remove("RAYON_NUM_THREADS");
+    }
+    let heap_mb = heap
+        .output()
+        .ok()
+        .and_then(|o| {
+            String::from_utf8_lossy(&o.stdout)
+                .split_whitespace()
+                .next()
+                .and_then(|t| t.parse::<f64>().ok())
+        })
+        .map_or(f64::NAN, |b| b / (1024.0 * 1024.0));
     Some(Cell {
+        heap_mb,
         ms: f.first()?.parse().ok()?,
         peak_mb: f.get(1)?.parse::<f64>().ok()? / 1024.0,
         facets: f.get(2)?.parse().ok()?,
@@ -124,7 +151,7 @@ fn main() {
     println!(
         "<!-- perf-table-3d | {cores} logical cores | best of 3 runs (1 run at >= 1M triangles) | peak = VmHWM - VmRSS before the Boolean -->\n"
     );
-    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | manifold-rust ms | manifold / umbra-tri | umbra-tri peak MB | manifold peak MB | umbra volume err | manifold volume err | valid (u-tri, u-poly, manifold) |");
+    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | manifold-rust ms | manifold / umbra-tri | heap peak MB (u-tri, u-poly, manifold) | RSS growth MB (u-tri, manifold) | umbra volume err | manifold volume err | valid (u-tri, u-poly, manifold) |");
     println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
     for &size in &sizes {
         for &t in &threads {
@@ -133,6 +160,10 @@ fn main() {
             let mb = |c: &Option<Cell>| {
                 c.as_ref()
                     .map_or("—".into(), |c| format!("{:.0}", c.peak_mb))
+            };
+            let heap = |c: &Option<Cell>| {
+                c.as_ref()
+                    .map_or("—".into(), |c| format!("{:.0}", c.heap_mb))
             };
             let err = |c: &Option<Cell>| {
                 c.as_ref().map_or("—".into(), |c| {
@@ -152,7 +183,7 @@ fn main() {
                 })
                 .collect();
             println!(
-                "| {size} | {} | {} | {} | {} | {ratio} | {} | {} | {} | {} | {} |",
+                "| {size} | {} | {} | {} | {} | {ratio} | {}, {}, {} | {}, {} | {} | {} | {} |",
                 if t == 0 {
                     format!("all ({cores})")
                 } else {
@@ -161,6 +192,9 @@ fn main() {
                 ms(&cells[0]),
                 ms(&cells[1]),
                 ms(&cells[2]),
+                heap(&cells[0]),
+                heap(&cells[1]),
+                heap(&cells[2]),
                 mb(&cells[0]),
                 mb(&cells[2]),
                 err(&cells[0]),

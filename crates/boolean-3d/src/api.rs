@@ -382,10 +382,14 @@ fn boolean_mesh_impl(
 ) -> Result<(MeshOutput, Option<Audit>), Boolean3Error> {
     let (fa, fb) = flat_pair(a, b, flat_polygon)?;
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let intersections = l3.x12.len() + l3.x21.len();
+    // The operands' flat arrays and the level data are no longer needed:
+    // free them before the output is assembled, to lower the peak memory.
+    drop((fa, fb, l3));
     let out = MeshOutput {
         mesh: to_polygon_mesh(&r),
         sources: r.facets().map(|(src, _)| src).collect(),
-        intersections: l3.x12.len() + l3.x21.len(),
+        intersections,
     };
     Ok((out, audit))
 }
@@ -422,9 +426,12 @@ fn boolean_triangles_impl(
 ) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
     let (fa, fb) = flat_pair(a, b, flat_triangles)?;
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let intersections = l3.x12.len() + l3.x21.len();
+    // As in `boolean_mesh_impl`: free what the output does not need first.
+    drop((fa, fb, l3));
     let out = TriangleOutput {
         mesh: to_triangle_mesh(r),
-        intersections: l3.x12.len() + l3.x21.len(),
+        intersections,
     };
     Ok((out, audit))
 }

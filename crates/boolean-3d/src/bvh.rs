@@ -121,10 +121,13 @@ impl Bvh {
             .map(|&i| morton(&centroid(&boxes[i as usize]), &cb))
             .collect();
         let items = radix_sort_by_key(&live, &keys);
-        let mut nodes = Vec::with_capacity(2 * items.len() / LEAF + 2);
+        // The exact node count: a realloc of a guessed capacity doubles
+        // the largest array of the broad phase at the peak of memory use.
+        let mut nodes = Vec::with_capacity(node_count(items.len()));
         if !items.is_empty() {
             build(boxes, &items, 0, items.len(), &mut nodes);
         }
+        debug_assert_eq!(nodes.len(), node_count(items.len()));
         Bvh { nodes, items }
     }
 
@@ -210,6 +213,28 @@ fn spread(mut x: u64) -> u64 {
     x = (x | (x << 4)) & 0x10c3_0c30_c30c_30c3;
     x = (x | (x << 2)) & 0x1249_2492_4924_9249;
     x
+}
+
+/// The number of nodes `build` makes for `n` items: one leaf for at most
+/// `LEAF` items, otherwise a node over the two halves. Sibling ranges
+/// differ by at most one item, so each level has at most two distinct
+/// sizes and the recursion follows `O(log n)` of them.
+fn node_count(n: usize) -> usize {
+    fn count(n: usize, memo: &mut Vec<(usize, usize)>) -> usize {
+        if n == 0 {
+            return 0;
+        }
+        if n <= LEAF {
+            return 1;
+        }
+        if let Some(&(_, c)) = memo.iter().find(|&&(m, _)| m == n) {
+            return c;
+        }
+        let c = 1 + count(n / 2, memo) + count(n - n / 2, memo);
+        memo.push((n, c));
+        c
+    }
+    count(n, &mut Vec::new())
 }
 
 /// Builds the subtree over `items[start..end]` in pre-order (first child

@@ -420,12 +420,20 @@ pub(crate) fn level3(
         || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
         || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),
     );
+    // Each temporary list is freed as soon as the next one is built: they
+    // are the largest arrays of the Boolean, and would otherwise all stay
+    // alive through the propagation below.
+    drop(fpairs);
     let (r12, r21) = rayon::join(
         || edge_facet_hits(a, b, &c12, Side::EdgesOfA),
         || edge_facet_hits(b, a, &c21, Side::EdgesOfB),
     );
     let (x12, x21) = (r12?, r21?);
-    let (c12, c21) = (c12.len(), c21.len());
+    let (c12, c21) = {
+        let counts = (c12.len(), c21.len());
+        drop((c12, c21));
+        counts
+    };
     let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b);
     let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a);
     let (x03, x30, casts) = match winding {

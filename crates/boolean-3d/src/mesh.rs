@@ -144,7 +144,10 @@ impl<'a> Flat<'a> {
                 check_shape_closure((v as u32, hi), (forward, backward))?;
             }
         }
-        let edge_he: Vec<u32> = pairs.into_iter().map(|(_, h)| h).collect();
+        // A fresh allocation: collecting in place would keep the pairs'
+        // buffer, twice the size needed, alive for the whole Boolean.
+        let edge_he: Vec<u32> = pairs.iter().map(|&(_, h)| h).collect();
+        drop(pairs);
         edge_off.push(n_he as u32);
         Ok(Flat {
             pos,
