@@ -3,10 +3,11 @@
 //! and the simplified shape for a rule.
 
 use crate::collection::EdgeCollection;
+use crate::point::Pt;
 use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::intersection_error_bound;
-use topology::PolygonSet2;
+use topology::{Edge2, PolygonSet2};
 
 /// One edge of the cell structure, directed from `start` to `end` (the
 /// logical leftmost and rightmost points at which the sweep processed it).
@@ -256,27 +257,72 @@ impl<W: Winding> CellStructure<W> {
     /// the vertical edges of each x are merged by 1D simplification (section
     /// 7.6.1). The result always satisfies shape boundary closure.
     pub fn shape_with(&self, keep: impl Fn(&W) -> bool) -> PolygonSet2 {
-        let mut c = EdgeCollection::new();
+        let v = &self.vertices;
+        let nv = v.len() as u32;
+        let pt = |i: u32| Pt::new(v[i as usize]);
+        // The edge collection of section 7.1.2 on vertex ids: every edge is
+        // keyed by its lexicographically ordered end points (distinct ids are
+        // distinct points), multiplicity negated for right-to-left edges.
+        let mut sel: Vec<(u32, u32, i32)> = Vec::new();
         for e in &self.edges {
-            if e.start == e.end {
+            if e.start == e.end || e.start >= nv || e.end >= nv {
                 continue;
             }
-            let (Some(&a), Some(&b)) = (
-                self.vertices.get(e.start as usize),
-                self.vertices.get(e.end as usize),
-            ) else {
+            let (l, r) = (keep(&e.left), keep(&e.right));
+            let (a, b) = if l && !r {
+                (e.start, e.end)
+            } else if r && !l {
+                (e.end, e.start)
+            } else {
                 continue;
             };
-            let l = keep(&e.left);
-            let r = keep(&e.right);
-            if l && !r {
-                c.add_edge(a, b, 1);
-            } else if r && !l {
-                c.add_edge(b, a, 1);
+            if pt(a) < pt(b) {
+                sel.push((a, b, 1));
+            } else {
+                sel.push((b, a, -1));
             }
         }
-        c.merge_vertical_edges();
-        c.to_polygon_set()
+        let mut edges = merge_keyed(sel);
+        merge_vertical_edges(&mut edges, v);
+        // Vertices in lexicographic order, edges by key: the canonical
+        // order of `EdgeCollection::to_polygon_set`.
+        let mut used: Vec<(u128, u32)> = Vec::with_capacity(edges.len() * 2);
+        for &(a, b, _) in &edges {
+            used.push((pt(a).sort_key(), a));
+            used.push((pt(b).sort_key(), b));
+        }
+        used.sort_unstable();
+        used.dedup();
+        let mut rank = vec![u32::MAX; v.len()];
+        let mut vertices = Vec::with_capacity(used.len());
+        for (i, &(_, id)) in used.iter().enumerate() {
+            rank[id as usize] = i as u32;
+            vertices.push(v[id as usize]);
+        }
+        let mut ranked: Vec<(u32, u32, i32)> = edges
+            .iter()
+            .map(|&(a, b, m)| (rank[a as usize], rank[b as usize], m))
+            .collect();
+        ranked.sort_unstable();
+        let out = ranked
+            .into_iter()
+            .map(|(a, b, m)| {
+                if m > 0 || m == i32::MIN {
+                    Edge2 {
+                        start: a,
+                        end: b,
+                        mult: m,
+                    }
+                } else {
+                    Edge2 {
+                        start: b,
+                        end: a,
+                        mult: -m,
+                    }
+                }
+            })
+            .collect();
+        PolygonSet2::from_parts(vertices, out)
     }
 
     /// The whole arrangement as a polygon set: every edge with its
@@ -295,4 +341,78 @@ impl<W: Winding> CellStructure<W> {
         }
         c
     }
+}
+
+/// Sorts keyed edges `(l, r, m)` and merges identical keys, adding the
+/// multiplicities and dropping those that cancel (section 7.1.2).
+fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
+    sel.sort_unstable_by_key(|&(a, b, _)| (a, b));
+    let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(sel.len());
+    for (a, b, m) in sel {
+        match out.last_mut() {
+            Some(last) if last.0 == a && last.1 == b => last.2 = last.2.wrapping_add(m),
+            _ => {
+                if out.last().is_some_and(|l| l.2 == 0) {
+                    out.pop();
+                }
+                out.push((a, b, m));
+            }
+        }
+    }
+    if out.last().is_some_and(|l| l.2 == 0) {
+        out.pop();
+    }
+    out
+}
+
+/// Section 7.6.1, footnote 9: the vertical edges at each x are replaced by
+/// their 1D simplification, the elementary intervals between their end
+/// points with the summed multiplicity (as
+/// [`EdgeCollection::merge_vertical_edges`], on vertex ids).
+fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
+    let mut vertical: Vec<usize> = (0..edges.len())
+        .filter(|&i| v[edges[i].0 as usize][0] == v[edges[i].1 as usize][0])
+        .collect();
+    if vertical.len() < 2 {
+        return;
+    }
+    let x_of = |i: usize| v[edges[i].0 as usize][0];
+    vertical.sort_by(|&a, &b| x_of(a).total_cmp(&x_of(b)));
+    let mut removed = vec![false; edges.len()];
+    let mut extra: Vec<(u32, u32, i32)> = Vec::new();
+    let mut marks: Vec<(f64, u32, i32)> = Vec::new();
+    let mut i = 0;
+    while i < vertical.len() {
+        let x = x_of(vertical[i]);
+        let mut j = i;
+        while j < vertical.len() && x_of(vertical[j]) == x {
+            j += 1;
+        }
+        if j - i >= 2 {
+            marks.clear();
+            for &e in &vertical[i..j] {
+                removed[e] = true;
+                let (l, r, m) = edges[e];
+                marks.push((v[l as usize][1], l, m));
+                marks.push((v[r as usize][1], r, m.wrapping_neg()));
+            }
+            marks.sort_by(|a, b| a.0.total_cmp(&b.0));
+            let mut run = 0i32;
+            let mut k = 0;
+            while k < marks.len() {
+                let (y, id) = (marks[k].0, marks[k].1);
+                while k < marks.len() && marks[k].0 == y {
+                    run = run.wrapping_add(marks[k].2);
+                    k += 1;
+                }
+                if k < marks.len() && run != 0 {
+                    extra.push((id, marks[k].1, run));
+                }
+            }
+        }
+        i = j;
+    }
+    let mut keep = removed.iter().map(|r| !r);
+    edges.retain(|_| keep.next().unwrap_or(true));
+    edges.extend(extra);
 }

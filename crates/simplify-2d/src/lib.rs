@@ -54,6 +54,7 @@
 mod api;
 mod cells;
 mod collection;
+mod end_points;
 mod error;
 mod point;
 mod sweep;

@@ -29,12 +29,28 @@ impl Pt {
     pub(crate) fn arr(self) -> [f64; 2] {
         [self.x, self.y]
     }
+
+    /// An integer key whose order is the lexicographic order of points
+    /// (IEEE total order per coordinate), for sorting.
+    #[inline]
+    pub(crate) fn sort_key(self) -> u128 {
+        let f = |v: f64| {
+            let b = v.to_bits();
+            if b >> 63 == 1 {
+                !b
+            } else {
+                b | (1 << 63)
+            }
+        };
+        (u128::from(f(self.x)) << 64) | u128::from(f(self.y))
+    }
 }
 
 impl PartialEq for Pt {
     #[inline]
     fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
+        // Equal in the total order exactly when the bit patterns are equal.
+        self.x.to_bits() == other.x.to_bits() && self.y.to_bits() == other.y.to_bits()
     }
 }
 

@@ -24,22 +24,34 @@
 //! 2): the sweep never iterates to a fixed point (section 7.6.3).
 
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
+use crate::end_points::EndPoints;
 use crate::point::Pt;
 use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::{interpolate, y_at_x};
-use std::collections::{BTreeMap, HashMap};
+use std::cmp::Ordering;
+use std::collections::{BinaryHeap, HashMap};
 use std::hash::{BuildHasherDefault, Hasher};
 
 /// A small multiplicative hasher for point keys (two `u64` bit patterns):
 /// the vertex map is on the hot path and needs no DoS resistance.
 #[derive(Default)]
-struct PointHasher(u64);
+pub(crate) struct PointHasher(u64);
 
 impl Hasher for PointHasher {
     #[inline]
     fn finish(&self) -> u64 {
-        self.0
+        // The murmur3 finalizer: coordinates on a grid (integers, halves)
+        // have all-zero low mantissa bits, and the multiply below keeps
+        // them zero; hashbrown picks buckets by the low bits, so without
+        // this every grid point collided (the checkerboard bench ran 9x
+        // slower than it should).
+        let mut h = self.0;
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
+        h ^= h >> 33;
+        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
+        h ^ (h >> 33)
     }
     #[inline]
     fn write(&mut self, bytes: &[u8]) {
@@ -53,7 +65,8 @@ impl Hasher for PointHasher {
     }
 }
 
-type PointMap<V> = HashMap<Pt, V, BuildHasherDefault<PointHasher>>;
+/// A hash map keyed by sweep points (or anything hashed as `u64` words).
+pub(crate) type PointMap<K, V> = HashMap<K, V, BuildHasherDefault<PointHasher>>;
 
 /// One directed input edge `a -> b` with multiplicity `mult`, and the index
 /// of the original edge it stands for (provenance).
@@ -64,12 +77,70 @@ pub(crate) struct InputEdge<W> {
     pub(crate) origin: u32,
 }
 
-/// A pending (input or buffer) edge: multiplicity in the direction
-/// leftmost -> rightmost, adjustment count, provenance.
+/// A pending (input or buffer) edge from `l` to `r` (`l ≺ r`): multiplicity
+/// in the direction `l -> r`, adjustment count, provenance, and the order in
+/// which it was added to the collection (`seq`; input edges are 0).
 struct Pending<W> {
+    l: Pt,
+    r: Pt,
+    seq: u64,
     m: W,
     k: u32,
     origin: u32,
+}
+
+/// Buffer edges form a min-heap by left point, then insertion order.
+impl<W> PartialEq for Pending<W> {
+    fn eq(&self, other: &Self) -> bool {
+        self.cmp(other) == Ordering::Equal
+    }
+}
+
+impl<W> Eq for Pending<W> {}
+
+impl<W> PartialOrd for Pending<W> {
+    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
+        Some(self.cmp(other))
+    }
+}
+
+impl<W> Ord for Pending<W> {
+    fn cmp(&self, other: &Self) -> Ordering {
+        // Reversed: `BinaryHeap` is a max-heap.
+        other.l.cmp(&self.l).then(other.seq.cmp(&self.seq))
+    }
+}
+
+/// Merges pending edges that share their left point, given sorted by
+/// `(r, seq)`, exactly as the edge collection of section 7.1.2 would have
+/// merged them one at a time in `seq` order: identical edges add their
+/// multiplicities and keep the larger adjustment count and the first
+/// provenance; an edge whose multiplicity cancels to zero is removed, and
+/// a later identical edge starts afresh.
+fn merge_identical<W: Winding>(items: impl Iterator<Item = Pending<W>>, out: &mut Vec<Pending<W>>) {
+    let mut cur: Option<Pending<W>> = None;
+    for it in items {
+        match &mut cur {
+            Some(c) if c.r == it.r => {
+                c.m.add_assign(&it.m);
+                c.k = c.k.max(it.k);
+                if c.m.is_zero() {
+                    cur = None;
+                }
+            }
+            _ => {
+                if let Some(c) = cur.take() {
+                    out.push(c);
+                }
+                if !it.m.is_zero() {
+                    cur = Some(it);
+                }
+            }
+        }
+    }
+    if let Some(c) = cur {
+        out.push(c);
+    }
 }
 
 /// A sweep-line edge from its logical left point `l` (already processed)
@@ -87,6 +158,8 @@ struct SweepEdge<W> {
     k: u32,
     origin: u32,
     id: u32,
+    /// The output vertex id of `l` (processed, so already a vertex).
+    lid: u32,
 }
 
 impl<W> SweepEdge<W> {
@@ -105,6 +178,8 @@ enum Class {
     Over,
 }
 
+/// What the sweep knows about a point: its output vertex id (once it is a
+/// vertex) and its adjustment count (section 8.4).
 #[derive(Clone, Copy, Debug)]
 struct VInfo {
     id: u32,
@@ -113,14 +188,38 @@ struct VInfo {
 
 const NO_ID: u32 = u32::MAX;
 
+const VINFO_NEW: VInfo = VInfo { id: NO_ID, k: 0 };
+
+/// An edge about to be inserted at the event point: its right point, the
+/// gradient key of section 7.3 (non-vertical by slope, vertical last),
+/// multiplicity, adjustment count, provenance.
+struct NewEdge<W> {
+    r: Pt,
+    vertical: bool,
+    slope: f64,
+    m: W,
+    k: u32,
+    origin: u32,
+}
+
 struct Sweep<W: Winding> {
     dims: usize,
-    pending: BTreeMap<(Pt, Pt), Pending<W>>,
+    /// The input edges, merged (section 7.1.2) and sorted by `(l, r)`.
+    input: Vec<Pending<W>>,
+    next_input: usize,
+    /// Buffer edges (section 7.4.1), by left point.
+    buffer: BinaryHeap<Pending<W>>,
+    next_seq: u64,
     line: Vec<SweepEdge<W>>,
-    ends: BTreeMap<Pt, u32>,
-    vinfo: PointMap<VInfo>,
+    /// The multiset of right end points of the sweep-line edges.
+    ends: EndPoints,
+    scratch_ids: Vec<u32>,
+    vinfo: PointMap<Pt, VInfo>,
     scratch_group: Vec<SweepEdge<W>>,
-    scratch_block: Vec<(Pt, W, u32, u32)>,
+    scratch_block: Vec<NewEdge<W>>,
+    scratch_new: Vec<SweepEdge<W>>,
+    scratch_gather: Vec<Pending<W>>,
+    scratch_pending: Vec<Pending<W>>,
     vertices: Vec<[f64; 2]>,
     edges: Vec<CellEdge<W>>,
     id_to_edge: Vec<u32>,
@@ -137,14 +236,58 @@ pub(crate) fn run<W: Winding>(
     max_abs: f64,
 ) -> Result<CellStructure<W>, SimplifyError> {
     let n = input.len();
+    // The edge collection of section 7.1.2 for the input: keyed by
+    // (leftmost, rightmost) point, negative multiplicity for edges running
+    // right to left, zero-length edges dropped, identical edges merged in
+    // input order.
+    let mut keyed: Vec<Pending<W>> = Vec::with_capacity(n);
+    for e in input {
+        let (a, b) = (Pt::new(e.a), Pt::new(e.b));
+        let (l, r, m) = match a.cmp(&b) {
+            Ordering::Less => (a, b, e.mult),
+            Ordering::Greater => (b, a, e.mult.negated()),
+            Ordering::Equal => continue,
+        };
+        keyed.push(Pending {
+            l,
+            r,
+            seq: 0,
+            m,
+            k: 0,
+            origin: e.origin,
+        });
+    }
+    // Stable: identical edges stay in input order.
+    keyed.sort_by(|a, b| a.l.cmp(&b.l).then(a.r.cmp(&b.r)));
+    let mut merged = Vec::with_capacity(keyed.len());
+    {
+        let mut it = keyed.into_iter().peekable();
+        let mut run_: Vec<Pending<W>> = Vec::new();
+        while let Some(first) = it.next() {
+            let l = first.l;
+            run_.clear();
+            run_.push(first);
+            while let Some(next) = it.next_if(|e| e.l == l) {
+                run_.push(next);
+            }
+            merge_identical(run_.drain(..), &mut merged);
+        }
+    }
     let mut s = Sweep {
         dims,
-        pending: BTreeMap::new(),
+        input: merged,
+        next_input: 0,
+        buffer: BinaryHeap::new(),
+        next_seq: 1,
         line: Vec::new(),
-        ends: BTreeMap::new(),
+        ends: EndPoints::default(),
+        scratch_ids: Vec::new(),
         vinfo: PointMap::with_capacity_and_hasher(n * 2, Default::default()),
         scratch_group: Vec::new(),
         scratch_block: Vec::new(),
+        scratch_new: Vec::new(),
+        scratch_gather: Vec::new(),
+        scratch_pending: Vec::new(),
         vertices: Vec::with_capacity(n * 2),
         edges: Vec::with_capacity(n * 2),
         id_to_edge: Vec::with_capacity(n * 2),
@@ -156,33 +299,42 @@ pub(crate) fn run<W: Winding>(
             ..SweepStats::default()
         },
     };
-    for e in input {
-        s.add_pending(Pt::new(e.a), Pt::new(e.b), e.mult, 0, e.origin);
-    }
-    s.stats.merged_input_edges = s.pending.len();
+    s.stats.merged_input_edges = s.input.len();
     // Section 7.6.3 bounds the work polynomially; this cap only turns a bug
     // into an error instead of a hang.
-    let m = s.pending.len() as u64 + 2;
+    let m = s.input.len() as u64 + 2;
     let cap = m
         .saturating_mul(m)
         .saturating_mul(8)
         .saturating_add(1 << 20);
     loop {
-        let pe = s.pending.keys().next().map(|k| k.0);
-        let se = s.ends.keys().next().copied();
+        let pe = s.first_pending();
+        let se = s.first_end();
         let p = match (pe, se) {
             (Some(a), Some(b)) => a.min(b),
             (Some(a), None) => a,
             (None, Some(b)) => b,
             (None, None) => break,
         };
+        let mut pending = std::mem::take(&mut s.scratch_pending);
+        pending.clear();
+        if pe == Some(p) {
+            s.take_pending_at(p, &mut pending);
+        }
+        // Pending edges that cancelled out never made `p` an event.
+        if pending.is_empty() && se != Some(p) {
+            s.scratch_pending = pending;
+            continue;
+        }
         s.stats.events += 1;
         if s.stats.events > cap {
             return Err(SimplifyError::Internal(format!(
                 "event limit {cap} exceeded (section 7.6.3 bound)"
             )));
         }
-        s.process(p)?;
+        let r = s.process(p, &mut pending);
+        s.scratch_pending = pending;
+        r?;
     }
     if !s.line.is_empty() {
         return Err(SimplifyError::Internal(format!(
@@ -209,65 +361,80 @@ pub(crate) fn run<W: Winding>(
 }
 
 impl<W: Winding> Sweep<W> {
-    /// Adds the directed edge `a -> b` (multiplicity `m`) to the pending
-    /// collection, merging with an identical edge (section 7.1.2; Table 7.3).
-    /// A buffer edge going downwards vertically is thereby reversed with its
-    /// multiplicity negated (section 7.6.1).
+    /// Adds the directed buffer edge `a -> b` (multiplicity `m`) to the
+    /// pending edges (section 7.4.1). It is keyed like the edge collection
+    /// of section 7.1.2, so a buffer edge going downwards vertically is
+    /// reversed with its multiplicity negated (section 7.6.1); identical
+    /// pending edges merge when their left point is reached.
     fn add_pending(&mut self, a: Pt, b: Pt, m: W, k: u32, origin: u32) {
-        let (key, m) = if a < b {
-            ((a, b), m)
-        } else if a != b {
-            ((b, a), m.negated())
-        } else {
-            return;
+        let (l, r, m) = match a.cmp(&b) {
+            Ordering::Less => (a, b, m),
+            Ordering::Greater => (b, a, m.negated()),
+            Ordering::Equal => return,
         };
-        match self.pending.entry(key) {
-            std::collections::btree_map::Entry::Vacant(v) => {
-                if !m.is_zero() {
-                    v.insert(Pending { m, k, origin });
-                }
-            }
-            std::collections::btree_map::Entry::Occupied(mut o) => {
-                let slot = o.get_mut();
-                slot.m.add_assign(&m);
-                slot.k = slot.k.max(k);
-                if slot.m.is_zero() {
-                    o.remove();
-                }
-            }
+        let seq = self.next_seq;
+        self.next_seq += 1;
+        self.buffer.push(Pending {
+            l,
+            r,
+            seq,
+            m,
+            k,
+            origin,
+        });
+    }
+
+    /// The smallest left point of a pending edge.
+    fn first_pending(&self) -> Option<Pt> {
+        let a = self.input.get(self.next_input).map(|e| e.l);
+        let b = self.buffer.peek().map(|e| e.l);
+        match (a, b) {
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (a, None) => a,
+            (None, b) => b,
         }
     }
 
-    fn ends_inc(&mut self, p: Pt) {
-        *self.ends.entry(p).or_insert(0) += 1;
+    /// The smallest right point of a sweep-line edge.
+    fn first_end(&mut self) -> Option<Pt> {
+        self.ends.min()
     }
 
-    fn ends_dec(&mut self, p: Pt) {
-        if let Some(c) = self.ends.get_mut(&p) {
-            *c -= 1;
-            if *c == 0 {
-                self.ends.remove(&p);
+    /// Removes the pending edges whose left point is `p` and returns them
+    /// merged (section 7.1.2), sorted by right point, non-zero.
+    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) {
+        let mut gather = std::mem::take(&mut self.scratch_gather);
+        gather.clear();
+        while let Some(e) = self.input.get_mut(self.next_input) {
+            if e.l != p {
+                break;
+            }
+            // Input edges are already merged; move one out.
+            let z = W::zero(self.dims);
+            gather.push(Pending {
+                l: e.l,
+                r: e.r,
+                seq: 0,
+                m: std::mem::replace(&mut e.m, z),
+                k: e.k,
+                origin: e.origin,
+            });
+            self.next_input += 1;
+        }
+        while self.buffer.peek().is_some_and(|e| e.l == p) {
+            if let Some(e) = self.buffer.pop() {
+                gather.push(e);
             }
         }
+        if gather.len() > 1 {
+            gather.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
+        }
+        merge_identical(gather.drain(..), out);
+        self.scratch_gather = gather;
     }
 
     fn vertex_k(&self, p: Pt) -> u32 {
         self.vinfo.get(&p).map_or(0, |v| v.k)
-    }
-
-    fn raise_vertex_k(&mut self, p: Pt, k: u32) {
-        let v = self.vinfo.entry(p).or_insert(VInfo { id: NO_ID, k: 0 });
-        v.k = v.k.max(k);
-    }
-
-    fn vertex_id(&mut self, p: Pt) -> u32 {
-        let next = self.vertices.len() as u32;
-        let v = self.vinfo.entry(p).or_insert(VInfo { id: NO_ID, k: 0 });
-        if v.id == NO_ID {
-            v.id = next;
-            self.vertices.push(p.arr());
-        }
-        v.id
     }
 
     /// The relation of sweep-line edge `e` to event point `p`, decided with
@@ -347,10 +514,10 @@ impl<W: Winding> Sweep<W> {
         Ok((lo, hi))
     }
 
-    /// Sends a finished sweep-line edge (from `l` to `r`) to the output.
-    fn emit(&mut self, e: &SweepEdge<W>, r: Pt, k: u32) {
-        let start = self.vertex_id(e.l);
-        let end = self.vertex_id(r);
+    /// Sends a finished sweep-line edge (from `l` to the vertex `end`) to
+    /// the output; it leaves the sweep line.
+    fn emit(&mut self, e: &SweepEdge<W>, end: u32, k: u32) {
+        let start = e.lid;
         let mut left = e.below.clone();
         left.add_assign(&e.m);
         let idx = self.edges.len() as u32;
@@ -366,13 +533,23 @@ impl<W: Winding> Sweep<W> {
         if let Some(slot) = self.id_to_edge.get_mut(e.id as usize) {
             *slot = idx;
         }
+        self.ends.remove(e.id);
     }
 
-    fn process(&mut self, p: Pt) -> Result<(), SimplifyError> {
+    /// Processes event point `p` (section 7.6.2) with the pending edges
+    /// starting there (merged, sorted by right point).
+    fn process(&mut self, p: Pt, pending: &mut Vec<Pending<W>>) -> Result<(), SimplifyError> {
         self.x_s = p.x;
-        let vid = self.vertex_id(p);
-        let k_p = self.vertex_k(p);
-        let expected = self.ends.get(&p).copied().unwrap_or(0);
+        let (vid, k_p) = {
+            let next = self.vertices.len() as u32;
+            let v = self.vinfo.entry(p).or_insert(VINFO_NEW);
+            if v.id == NO_ID {
+                v.id = next;
+                self.vertices.push(p.arr());
+            }
+            (v.id, v.k)
+        };
+        let expected = self.ends.count_equal_to_min(p, &mut self.scratch_ids);
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
             let e = &self.line[lo - 1];
@@ -383,21 +560,26 @@ impl<W: Winding> Sweep<W> {
             W::zero(self.dims)
         };
         let fan_start = self.fan_ids.len() as u32;
-        // Right parts of split edges and pending edges starting at p:
-        // (right point, multiplicity, k, origin).
+        // Right parts of split edges and pending edges starting at p.
         let mut block = std::mem::take(&mut self.scratch_block);
         block.clear();
         let mut group = std::mem::take(&mut self.scratch_group);
         group.clear();
-        group.extend(self.line.drain(lo..hi));
+        group.extend_from_slice(&self.line[lo..hi]);
         let mut w_hi = w_lo.clone();
+        let gradient = |r: Pt| -> (bool, f64) {
+            if r.x > p.x {
+                (false, (r.y - p.y) / (r.x - p.x))
+            } else {
+                (true, 0.0)
+            }
+        };
         for e in group.drain(..) {
             w_hi.add_assign(&e.m);
             self.fan_ids.push(e.id);
             if e.r == p {
-                self.ends_dec(p);
                 let k = e.k;
-                self.emit(&e, p, k);
+                self.emit(&e, vid, k);
             } else {
                 // Passes through p, or misgrouped (section 7.6.2): split at p.
                 match Self::classify(&e, p) {
@@ -405,71 +587,80 @@ impl<W: Winding> Sweep<W> {
                     Class::Under | Class::Over => self.stats.misgrouped_splits += 1,
                 }
                 let k = (e.k + 1).max(k_p);
-                self.ends_dec(e.r);
-                self.emit(&e, p, k);
-                block.push((e.r, e.m.clone(), k, e.origin));
+                self.emit(&e, vid, k);
+                let (vertical, slope) = gradient(e.r);
+                block.push(NewEdge {
+                    r: e.r,
+                    vertical,
+                    slope,
+                    m: e.m,
+                    k,
+                    origin: e.origin,
+                });
             }
         }
+        self.scratch_group = group;
         let fan_mid = self.fan_ids.len() as u32;
-        // Pending edges whose leftmost point is p (they are first in order).
-        while let Some(entry) = self.pending.first_entry() {
-            if entry.key().0 != p {
-                break;
-            }
-            let r = entry.key().1;
-            let d = entry.remove();
-            block.push((r, d.m, d.k, d.origin));
+        for d in pending.drain(..) {
+            let (vertical, slope) = gradient(d.r);
+            block.push(NewEdge {
+                r: d.r,
+                vertical,
+                slope,
+                m: d.m,
+                k: d.k,
+                origin: d.origin,
+            });
         }
         // Order by gradient (section 7.3), vertical (upwards) last; identical
         // segments become adjacent and are merged (section 6.5).
-        let key = |r: &Pt| -> (u8, f64) {
-            if r.x > p.x {
-                (0, (r.y - p.y) / (r.x - p.x))
-            } else {
-                (1, 0.0)
-            }
-        };
-        block.sort_by(|a, b| {
-            let (ka, kb) = (key(&a.0), key(&b.0));
-            ka.0.cmp(&kb.0)
-                .then(ka.1.total_cmp(&kb.1))
-                .then(a.0.cmp(&b.0))
-        });
-        self.scratch_group = group;
-        let mut merged: Vec<(Pt, W, u32, u32)> = Vec::with_capacity(block.len());
-        for item in block.drain(..) {
-            if let Some(last) = merged.last_mut() {
-                if last.0 == item.0 {
-                    last.1.add_assign(&item.1);
-                    last.2 = last.2.max(item.2);
-                    continue;
+        if block.len() > 1 {
+            block.sort_by(|a, b| {
+                a.vertical
+                    .cmp(&b.vertical)
+                    .then(a.slope.total_cmp(&b.slope))
+                    .then(a.r.cmp(&b.r))
+            });
+            block.dedup_by(|item, last| {
+                if last.r == item.r {
+                    last.m.add_assign(&item.m);
+                    last.k = last.k.max(item.k);
+                    true
+                } else {
+                    false
                 }
-            }
-            merged.push(item);
-        }
-        self.scratch_block = block;
-        merged.retain(|it| !it.1.is_zero());
-        let mut w = w_lo.clone();
-        let mut new_edges = Vec::with_capacity(merged.len());
-        for (r, m, k, origin) in merged {
-            let id = self.id_to_edge.len() as u32;
-            self.id_to_edge.push(NO_ID);
-            self.fan_ids.push(id);
-            self.ends_inc(r);
-            let below = w.clone();
-            w.add_assign(&m);
-            new_edges.push(SweepEdge {
-                l: p,
-                r,
-                m,
-                below,
-                k,
-                origin,
-                id,
             });
         }
+        let mut w = w_lo.clone();
+        let mut new_edges = std::mem::take(&mut self.scratch_new);
+        new_edges.clear();
+        for it in block.drain(..) {
+            if it.m.is_zero() {
+                continue;
+            }
+            let id = self.id_to_edge.len() as u32;
+            self.id_to_edge.push(NO_ID);
+            self.ends.insert(id, it.r);
+            self.fan_ids.push(id);
+            let below = w.clone();
+            w.add_assign(&it.m);
+            new_edges.push(SweepEdge {
+                l: p,
+                r: it.r,
+                m: it.m,
+                below,
+                k: it.k,
+                origin: it.origin,
+                id,
+                lid: vid,
+            });
+        }
+        self.scratch_block = block;
         let n_new = new_edges.len();
-        self.line.splice(lo..lo, new_edges);
+        // One move of the line's tail at most, none when as many edges are
+        // inserted as removed (every crossing).
+        self.line.splice(lo..hi, new_edges.drain(..));
+        self.scratch_new = new_edges;
         self.stats.max_sweep_len = self.stats.max_sweep_len.max(self.line.len());
         self.fans.push(Fan {
             vertex: vid,
@@ -528,16 +719,15 @@ impl<W: Winding> Sweep<W> {
     /// buffer (section 7.4.1). Returns the new adjustment count (section 8.4:
     /// one more than the edge's, at least the vertex's).
     fn split(&mut self, i: usize, q: Pt, k_q: u32) -> u32 {
-        let (old_r, m, k, origin) = {
+        let (old_r, m, k, origin, id) = {
             let e = &mut self.line[i];
             let k = (e.k + 1).max(k_q);
             let old_r = e.r;
             e.r = q;
             e.k = k;
-            (old_r, e.m.clone(), k, e.origin)
+            (old_r, e.m.clone(), k, e.origin, e.id)
         };
-        self.ends_dec(old_r);
-        self.ends_inc(q);
+        self.ends.update(id, q);
         self.add_pending(q, old_r, m, k, origin);
         k
     }
@@ -600,14 +790,23 @@ impl<W: Winding> Sweep<W> {
         self.stats.intersections += 1;
         let split_a = q != a.l && q != a.r;
         let split_b = q != b.l && q != b.r;
-        let k_q = self.vertex_k(q);
+        // One look-up for the vertex's adjustment count: the new edges get
+        // `max(k + 1, k_q)` (section 8.4), the vertex the larger of those.
+        let info = self.vinfo.entry(q).or_insert(VINFO_NEW);
+        let k_q = info.k;
         let mut k_new = k_q;
         if split_a {
-            k_new = k_new.max(self.split(i, q, k_q));
+            k_new = k_new.max(a.k + 1);
         }
         if split_b {
-            k_new = k_new.max(self.split(i + 1, q, k_q));
+            k_new = k_new.max(b.k + 1);
         }
-        self.raise_vertex_k(q, k_new);
+        info.k = k_new;
+        if split_a {
+            self.split(i, q, k_q);
+        }
+        if split_b {
+            self.split(i + 1, q, k_q);
+        }
     }
 }
