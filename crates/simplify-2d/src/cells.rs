@@ -286,14 +286,17 @@ impl<W: Winding> CellStructure<W> {
         merge_vertical_edges(&mut edges, v);
         // Vertices in lexicographic order, edges by key: the canonical
         // order of `EdgeCollection::to_polygon_set`.
-        let mut used: Vec<(u128, u32)> = Vec::with_capacity(edges.len() * 2);
+        let mut rank = vec![u32::MAX; v.len()];
+        let mut used: Vec<(u128, u32)> = Vec::with_capacity(edges.len() + 1);
         for &(a, b, _) in &edges {
-            used.push((pt(a).sort_key(), a));
-            used.push((pt(b).sort_key(), b));
+            for id in [a, b] {
+                if rank[id as usize] == u32::MAX {
+                    rank[id as usize] = 0;
+                    used.push((pt(id).sort_key(), id));
+                }
+            }
         }
         used.sort_unstable();
-        used.dedup();
-        let mut rank = vec![u32::MAX; v.len()];
         let mut vertices = Vec::with_capacity(used.len());
         for (i, &(_, id)) in used.iter().enumerate() {
             rank[id as usize] = i as u32;
@@ -377,7 +380,9 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
         return;
     }
     let x_of = |i: usize| v[edges[i].0 as usize][0];
-    vertical.sort_by(|&a, &b| x_of(a).total_cmp(&x_of(b)));
+    // The order within one x does not matter: the marks are sorted by y
+    // and summed.
+    vertical.sort_unstable_by(|&a, &b| x_of(a).total_cmp(&x_of(b)));
     let mut removed = vec![false; edges.len()];
     let mut extra: Vec<(u32, u32, i32)> = Vec::new();
     let mut marks: Vec<(f64, u32, i32)> = Vec::new();
@@ -396,7 +401,9 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
                 marks.push((v[l as usize][1], l, m));
                 marks.push((v[r as usize][1], r, m.wrapping_neg()));
             }
-            marks.sort_by(|a, b| a.0.total_cmp(&b.0));
+            // Equal y values are one point (one id) and their marks are
+            // summed, so an unstable sort gives the same intervals.
+            marks.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
             let mut run = 0i32;
             let mut k = 0;
             while k < marks.len() {

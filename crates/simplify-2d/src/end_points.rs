@@ -12,10 +12,12 @@ use crate::point::Pt;
 
 const ABSENT: u32 = u32::MAX;
 
-/// An indexed binary min-heap of `(right point, sweep edge id)`.
+/// An indexed binary min-heap of `(right point, sweep edge id)`, the
+/// points held as their [`Pt::sort_key`] so that comparisons are integer
+/// comparisons.
 #[derive(Debug, Default)]
 pub(crate) struct EndPoints {
-    heap: Vec<(Pt, u32)>,
+    heap: Vec<(u128, u32)>,
     /// Position of each edge id in `heap`, or `ABSENT`.
     pos: Vec<u32>,
 }
@@ -29,7 +31,7 @@ impl EndPoints {
         }
         debug_assert_eq!(self.pos[i], ABSENT);
         let at = self.heap.len();
-        self.heap.push((p, id));
+        self.heap.push((p.sort_key(), id));
         self.pos[i] = at as u32;
         self.sift_up(at);
     }
@@ -43,9 +45,9 @@ impl EndPoints {
             return self.insert(id, p);
         }
         let at = at as usize;
-        let old = self.heap[at].0;
-        self.heap[at].0 = p;
-        if p < old {
+        let (old, key) = (self.heap[at].0, p.sort_key());
+        self.heap[at].0 = key;
+        if key < old {
             self.sift_up(at);
         } else {
             self.sift_down(at);
@@ -64,8 +66,7 @@ impl EndPoints {
         self.pos[id as usize] = ABSENT;
         let last = self.heap.len() - 1;
         if at != last {
-            self.heap.swap(at, last);
-            self.heap.pop();
+            self.heap.swap_remove(at);
             let moved = self.heap[at].1 as usize;
             self.pos[moved] = at as u32;
             // The moved entry may belong above or below its new place.
@@ -79,7 +80,7 @@ impl EndPoints {
     /// The smallest right point.
     #[inline]
     pub(crate) fn min(&self) -> Option<Pt> {
-        self.heap.first().map(|e| e.0)
+        self.heap.first().map(|e| Pt::from_sort_key(e.0))
     }
 
     /// The number of entries equal to `p`, which must not exceed the
@@ -88,6 +89,7 @@ impl EndPoints {
     pub(crate) fn count_equal_to_min(&self, p: Pt, stack: &mut Vec<u32>) -> u32 {
         stack.clear();
         let mut n = 0;
+        let p = p.sort_key();
         if self.heap.first().is_some_and(|e| e.0 == p) {
             stack.push(0);
         }
@@ -110,6 +112,8 @@ impl EndPoints {
                 self.heap[(i - 1) / 2].0 <= self.heap[i].0,
                 "heap order at {i}"
             );
+            let p = Pt::from_sort_key(self.heap[i].0);
+            assert_eq!(p.sort_key(), self.heap[i].0, "key round trip");
         }
         for (i, e) in self.heap.iter().enumerate() {
             assert_eq!(self.pos[e.1 as usize] as usize, i, "index of edge {}", e.1);
@@ -118,42 +122,51 @@ impl EndPoints {
         assert_eq!(present, self.heap.len());
     }
 
+    /// Moves the entry at `at` up to its place (a hole moves instead of
+    /// repeated swaps; the index is written once per move).
     fn sift_up(&mut self, mut at: usize) {
+        let item = self.heap[at];
         while at > 0 {
             let parent = (at - 1) / 2;
-            if self.heap[at].0 < self.heap[parent].0 {
-                self.swap(at, parent);
+            let up = self.heap[parent];
+            if item.0 < up.0 {
+                self.heap[at] = up;
+                self.pos[up.1 as usize] = at as u32;
                 at = parent;
             } else {
                 break;
             }
         }
+        self.heap[at] = item;
+        self.pos[item.1 as usize] = at as u32;
     }
 
+    /// Moves the entry at `at` down to its place.
     fn sift_down(&mut self, mut at: usize) {
         let len = self.heap.len();
+        let item = self.heap[at];
         loop {
-            let (l, r) = (2 * at + 1, 2 * at + 2);
-            let mut m = at;
-            if l < len && self.heap[l].0 < self.heap[m].0 {
-                m = l;
-            }
-            if r < len && self.heap[r].0 < self.heap[m].0 {
-                m = r;
-            }
-            if m == at {
+            let l = 2 * at + 1;
+            if l >= len {
                 break;
             }
-            self.swap(at, m);
-            at = m;
+            let r = l + 1;
+            let c = if r < len && self.heap[r].0 < self.heap[l].0 {
+                r
+            } else {
+                l
+            };
+            let down = self.heap[c];
+            if down.0 < item.0 {
+                self.heap[at] = down;
+                self.pos[down.1 as usize] = at as u32;
+                at = c;
+            } else {
+                break;
+            }
         }
-    }
-
-    #[inline]
-    fn swap(&mut self, a: usize, b: usize) {
-        self.heap.swap(a, b);
-        self.pos[self.heap[a].1 as usize] = a as u32;
-        self.pos[self.heap[b].1 as usize] = b as u32;
+        self.heap[at] = item;
+        self.pos[item.1 as usize] = at as u32;
     }
 }
 

@@ -58,6 +58,7 @@ mod end_points;
 mod error;
 mod point;
 mod sweep;
+mod vertex_table;
 mod winding;
 
 pub use api::{

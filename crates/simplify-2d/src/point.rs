@@ -44,6 +44,16 @@ impl Pt {
         };
         (u128::from(f(self.x)) << 64) | u128::from(f(self.y))
     }
+
+    /// The point whose [`Pt::sort_key`] is `key`.
+    #[inline]
+    pub(crate) fn from_sort_key(key: u128) -> Pt {
+        let g = |k: u64| f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k });
+        Pt {
+            x: g((key >> 64) as u64),
+            y: g(key as u64),
+        }
+    }
 }
 
 impl PartialEq for Pt {

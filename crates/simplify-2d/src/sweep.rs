@@ -26,6 +26,7 @@
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
 use crate::end_points::EndPoints;
 use crate::point::Pt;
+use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::{interpolate, y_at_x};
@@ -89,25 +90,26 @@ struct Pending<W> {
     origin: u32,
 }
 
-/// Buffer edges form a min-heap by left point, then insertion order.
-impl<W> PartialEq for Pending<W> {
-    fn eq(&self, other: &Self) -> bool {
-        self.cmp(other) == Ordering::Equal
-    }
+/// A buffer edge's place in the min-heap of pending buffer edges: its left
+/// point (as [`Pt::sort_key`]), then insertion order; the edge itself is in
+/// slot `slot` of the buffer slab.
+#[derive(Clone, Copy, PartialEq, Eq)]
+struct BufferKey {
+    key: u128,
+    seq: u64,
+    slot: u32,
 }
 
-impl<W> Eq for Pending<W> {}
-
-impl<W> PartialOrd for Pending<W> {
+impl PartialOrd for BufferKey {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
         Some(self.cmp(other))
     }
 }
 
-impl<W> Ord for Pending<W> {
+impl Ord for BufferKey {
     fn cmp(&self, other: &Self) -> Ordering {
         // Reversed: `BinaryHeap` is a max-heap.
-        other.l.cmp(&self.l).then(other.seq.cmp(&self.seq))
+        (other.key, other.seq).cmp(&(self.key, self.seq))
     }
 }
 
@@ -178,17 +180,7 @@ enum Class {
     Over,
 }
 
-/// What the sweep knows about a point: its output vertex id (once it is a
-/// vertex) and its adjustment count (section 8.4).
-#[derive(Clone, Copy, Debug)]
-struct VInfo {
-    id: u32,
-    k: u32,
-}
-
 const NO_ID: u32 = u32::MAX;
-
-const VINFO_NEW: VInfo = VInfo { id: NO_ID, k: 0 };
 
 /// An edge about to be inserted at the event point: its right point, the
 /// gradient key of section 7.3 (non-vertical by slope, vertical last),
@@ -208,19 +200,21 @@ struct Sweep<W: Winding> {
     input: Vec<Pending<W>>,
     next_input: usize,
     /// Buffer edges (section 7.4.1), by left point.
-    buffer: BinaryHeap<Pending<W>>,
+    buffer: BinaryHeap<BufferKey>,
+    /// The buffer edges by slot, and the free slots.
+    slab: Vec<Option<Pending<W>>>,
+    free: Vec<u32>,
     next_seq: u64,
     line: Vec<SweepEdge<W>>,
     /// The multiset of right end points of the sweep-line edges.
     ends: EndPoints,
     scratch_ids: Vec<u32>,
-    vinfo: PointMap<Pt, VInfo>,
+    points: VertexTable,
     scratch_group: Vec<SweepEdge<W>>,
     scratch_block: Vec<NewEdge<W>>,
     scratch_new: Vec<SweepEdge<W>>,
     scratch_gather: Vec<Pending<W>>,
     scratch_pending: Vec<Pending<W>>,
-    vertices: Vec<[f64; 2]>,
     edges: Vec<CellEdge<W>>,
     id_to_edge: Vec<u32>,
     fans: Vec<Fan<W>>,
@@ -257,11 +251,21 @@ pub(crate) fn run<W: Winding>(
             origin: e.origin,
         });
     }
-    // Stable: identical edges stay in input order.
-    keyed.sort_by(|a, b| a.l.cmp(&b.l).then(a.r.cmp(&b.r)));
-    let mut merged = Vec::with_capacity(keyed.len());
+    // Sorted by key; identical edges stay in input order (the index breaks
+    // ties), as the collection would have merged them one at a time.
+    let mut order: Vec<(u128, u128, u32)> = keyed
+        .iter()
+        .enumerate()
+        .map(|(i, e)| (e.l.sort_key(), e.r.sort_key(), i as u32))
+        .collect();
+    order.sort_unstable();
+    let mut slots: Vec<Option<Pending<W>>> = keyed.into_iter().map(Some).collect();
+    let keyed = order
+        .iter()
+        .filter_map(|&(_, _, i)| slots.get_mut(i as usize).and_then(Option::take));
+    let mut merged = Vec::with_capacity(order.len());
     {
-        let mut it = keyed.into_iter().peekable();
+        let mut it = keyed.peekable();
         let mut run_: Vec<Pending<W>> = Vec::new();
         while let Some(first) = it.next() {
             let l = first.l;
@@ -278,17 +282,18 @@ pub(crate) fn run<W: Winding>(
         input: merged,
         next_input: 0,
         buffer: BinaryHeap::new(),
+        slab: Vec::new(),
+        free: Vec::new(),
         next_seq: 1,
         line: Vec::new(),
         ends: EndPoints::default(),
         scratch_ids: Vec::new(),
-        vinfo: PointMap::with_capacity_and_hasher(n * 2, Default::default()),
+        points: VertexTable::with_capacity(n * 2),
         scratch_group: Vec::new(),
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_gather: Vec::new(),
         scratch_pending: Vec::new(),
-        vertices: Vec::with_capacity(n * 2),
         edges: Vec::with_capacity(n * 2),
         id_to_edge: Vec::with_capacity(n * 2),
         fans: Vec::with_capacity(n * 2),
@@ -356,7 +361,14 @@ pub(crate) fn run<W: Winding>(
     let k_max = s.edges.iter().map(|e| e.k).max().unwrap_or(0);
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
     Ok(CellStructure::new(
-        s.vertices, s.edges, s.fans, fan_edges, k_max, max_abs, dims, s.stats,
+        s.points.vertices,
+        s.edges,
+        s.fans,
+        fan_edges,
+        k_max,
+        max_abs,
+        dims,
+        s.stats,
     ))
 }
 
@@ -374,7 +386,7 @@ impl<W: Winding> Sweep<W> {
         };
         let seq = self.next_seq;
         self.next_seq += 1;
-        self.buffer.push(Pending {
+        let edge = Some(Pending {
             l,
             r,
             seq,
@@ -382,12 +394,27 @@ impl<W: Winding> Sweep<W> {
             k,
             origin,
         });
+        let slot = match self.free.pop() {
+            Some(slot) => {
+                self.slab[slot as usize] = edge;
+                slot
+            }
+            None => {
+                self.slab.push(edge);
+                (self.slab.len() - 1) as u32
+            }
+        };
+        self.buffer.push(BufferKey {
+            key: l.sort_key(),
+            seq,
+            slot,
+        });
     }
 
     /// The smallest left point of a pending edge.
     fn first_pending(&self) -> Option<Pt> {
         let a = self.input.get(self.next_input).map(|e| e.l);
-        let b = self.buffer.peek().map(|e| e.l);
+        let b = self.buffer.peek().map(|e| Pt::from_sort_key(e.key));
         match (a, b) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, None) => a,
@@ -421,9 +448,13 @@ impl<W: Winding> Sweep<W> {
             });
             self.next_input += 1;
         }
-        while self.buffer.peek().is_some_and(|e| e.l == p) {
+        let key = p.sort_key();
+        while self.buffer.peek().is_some_and(|e| e.key == key) {
             if let Some(e) = self.buffer.pop() {
-                gather.push(e);
+                if let Some(edge) = self.slab.get_mut(e.slot as usize).and_then(Option::take) {
+                    gather.push(edge);
+                }
+                self.free.push(e.slot);
             }
         }
         if gather.len() > 1 {
@@ -434,7 +465,7 @@ impl<W: Winding> Sweep<W> {
     }
 
     fn vertex_k(&self, p: Pt) -> u32 {
-        self.vinfo.get(&p).map_or(0, |v| v.k)
+        self.points.k(p)
     }
 
     /// The relation of sweep-line edge `e` to event point `p`, decided with
@@ -456,6 +487,17 @@ impl<W: Winding> Sweep<W> {
             } else {
                 Class::Through
             };
+        }
+        // Table 7.1 interpolates from the closer end with |lambda| <= 1/2
+        // (up to rounding), so its result never leaves the edge's y-range
+        // (robust-arith's `tests/table_7_1.rs` checks this over every
+        // magnitude and on the coarse grids of section 7.7); outside that
+        // range the answer is known without the division.
+        if e.l.y < p.y && e.r.y < p.y {
+            return Class::Under;
+        }
+        if e.l.y > p.y && e.r.y > p.y {
+            return Class::Over;
         }
         // The sweep guarantees l.x <= p.x <= r.x; clamping only guards the
         // precondition of Table 7.1 against a bug.
@@ -540,15 +582,7 @@ impl<W: Winding> Sweep<W> {
     /// starting there (merged, sorted by right point).
     fn process(&mut self, p: Pt, pending: &mut Vec<Pending<W>>) -> Result<(), SimplifyError> {
         self.x_s = p.x;
-        let (vid, k_p) = {
-            let next = self.vertices.len() as u32;
-            let v = self.vinfo.entry(p).or_insert(VINFO_NEW);
-            if v.id == NO_ID {
-                v.id = next;
-                self.vertices.push(p.arr());
-            }
-            (v.id, v.k)
-        };
+        let (vid, k_p) = self.points.process(p);
         let expected = self.ends.count_equal_to_min(p, &mut self.scratch_ids);
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
@@ -760,6 +794,11 @@ impl<W: Winding> Sweep<W> {
         if a.is_vertical() && b.is_vertical() {
             return;
         }
+        // Disjoint y-ranges cannot cross: every y-value below lies in its
+        // edge's y-range (see `classify`).
+        if a.l.y.max(a.r.y) < b.l.y.min(b.r.y) || b.l.y.max(b.r.y) < a.l.y.min(a.r.y) {
+            return;
+        }
         // The x-range both edges span to the right of the sweep line.
         let x_l = a.l.x.max(b.l.x).max(self.x_s);
         let x_r = a.r.x.min(b.r.x);
@@ -792,8 +831,8 @@ impl<W: Winding> Sweep<W> {
         let split_b = q != b.l && q != b.r;
         // One look-up for the vertex's adjustment count: the new edges get
         // `max(k + 1, k_q)` (section 8.4), the vertex the larger of those.
-        let info = self.vinfo.entry(q).or_insert(VINFO_NEW);
-        let k_q = info.k;
+        let info = self.points.k_mut(q);
+        let k_q = *info;
         let mut k_new = k_q;
         if split_a {
             k_new = k_new.max(a.k + 1);
@@ -801,7 +840,7 @@ impl<W: Winding> Sweep<W> {
         if split_b {
             k_new = k_new.max(b.k + 1);
         }
-        info.k = k_new;
+        *info = k_new;
         if split_a {
             self.split(i, q, k_q);
         }

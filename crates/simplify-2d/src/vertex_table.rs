@@ -1,0 +1,148 @@
+//! The points of the sweep: output vertex ids (assigned when a point is
+//! first processed as an event) and adjustment counts (section 8.4: a
+//! vertex's count is the largest count of the edges created at it).
+//!
+//! Events are processed in lexicographic order except for the rare
+//! backward steps of section 7.6.1, so the table keeps points apart by
+//! state: points not processed yet (few: the computed intersections ahead
+//! of the sweep line) in a small hash map, processed points in the order
+//! they were processed, found by binary search over those processed beyond
+//! every earlier one and by a second hash map for the others. A point is
+//! looked up among the processed ones only when it does not lie beyond all
+//! of them, which the sweep's order makes rare; the large table of every
+//! vertex is never hashed on the hot path.
+
+use crate::point::Pt;
+use crate::sweep::PointMap;
+
+/// Vertex ids and adjustment counts by point.
+#[derive(Debug, Default)]
+pub(crate) struct VertexTable {
+    /// Output vertices, by id (the order in which they were processed).
+    pub(crate) vertices: Vec<[f64; 2]>,
+    /// Adjustment count by vertex id.
+    k: Vec<u32>,
+    /// Adjustment counts of points not processed yet.
+    ahead: PointMap<Pt, u32>,
+    /// Ids of the points processed beyond every earlier one: increasing.
+    in_order: Vec<u32>,
+    /// Ids of the other processed points.
+    late: PointMap<Pt, u32>,
+    /// The largest processed point.
+    max_done: Option<Pt>,
+}
+
+impl VertexTable {
+    /// A table with room for about `n` vertices.
+    pub(crate) fn with_capacity(n: usize) -> Self {
+        VertexTable {
+            vertices: Vec::with_capacity(n),
+            k: Vec::with_capacity(n),
+            in_order: Vec::with_capacity(n),
+            ..VertexTable::default()
+        }
+    }
+
+    /// The id of `q` if it has been processed.
+    fn done_id(&self, q: Pt) -> Option<u32> {
+        match self.max_done {
+            Some(m) if q <= m => {}
+            _ => return None,
+        }
+        let v = &self.vertices;
+        let i = self
+            .in_order
+            .partition_point(|&id| Pt::new(v[id as usize]) < q);
+        if let Some(&id) = self.in_order.get(i) {
+            if Pt::new(v[id as usize]) == q {
+                return Some(id);
+            }
+        }
+        self.late.get(&q).copied()
+    }
+
+    /// The adjustment count of point `q` (0 for a point never adjusted).
+    pub(crate) fn k(&self, q: Pt) -> u32 {
+        match self.done_id(q) {
+            Some(id) => self.k[id as usize],
+            None => self.ahead.get(&q).copied().unwrap_or(0),
+        }
+    }
+
+    /// The adjustment count of point `q`, to read and raise in one look-up.
+    pub(crate) fn k_mut(&mut self, q: Pt) -> &mut u32 {
+        match self.done_id(q) {
+            Some(id) => &mut self.k[id as usize],
+            None => self.ahead.entry(q).or_insert(0),
+        }
+    }
+
+    /// Processes point `p`: its vertex id (a new one the first time) and
+    /// adjustment count.
+    pub(crate) fn process(&mut self, p: Pt) -> (u32, u32) {
+        if let Some(id) = self.done_id(p) {
+            return (id, self.k[id as usize]);
+        }
+        let k = self.ahead.remove(&p).unwrap_or(0);
+        let id = self.vertices.len() as u32;
+        self.vertices.push(p.arr());
+        self.k.push(k);
+        if self.max_done.is_none_or(|m| p > m) {
+            self.in_order.push(id);
+            self.max_done = Some(p);
+        } else {
+            self.late.insert(p, id);
+        }
+        (id, k)
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use std::collections::HashMap;
+
+    /// Random operations, mostly increasing with backward steps and
+    /// repeats, against a plain map.
+    #[test]
+    fn matches_a_plain_map() {
+        let mut s = 0x9E37_79B9_7F4A_7C15u64;
+        let mut rnd = move |n: u64| {
+            s ^= s << 13;
+            s ^= s >> 7;
+            s ^= s << 17;
+            s % n
+        };
+        let mut t = VertexTable::with_capacity(16);
+        let mut ids: HashMap<Pt, u32> = HashMap::new();
+        let mut ks: HashMap<Pt, u32> = HashMap::new();
+        let mut x = 0.0;
+        for _ in 0..20_000 {
+            // The sweep position creeps forward; points near it.
+            if rnd(3) == 0 {
+                x += 1.0;
+            }
+            let p = Pt::new([x - rnd(3) as f64, rnd(4) as f64]);
+            match rnd(3) {
+                0 => {
+                    let (id, k) = t.process(p);
+                    let next = ids.len() as u32;
+                    assert_eq!(id, *ids.entry(p).or_insert(next));
+                    assert_eq!(k, ks.get(&p).copied().unwrap_or(0));
+                }
+                1 => {
+                    let k = rnd(7) as u32;
+                    let slot = t.k_mut(p);
+                    *slot = (*slot).max(k);
+                    let e = ks.entry(p).or_insert(0);
+                    *e = (*e).max(k);
+                }
+                _ => assert_eq!(t.k(p), ks.get(&p).copied().unwrap_or(0)),
+            }
+        }
+        assert_eq!(t.vertices.len(), ids.len());
+        for (p, &id) in &ids {
+            assert_eq!(Pt::new(t.vertices[id as usize]), *p);
+        }
+    }
+}
