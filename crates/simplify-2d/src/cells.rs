@@ -6,6 +6,7 @@ use crate::collection::EdgeCollection;
 use crate::point::Pt;
 use crate::winding::Winding;
 use crate::SimplifyError;
+use rayon::slice::ParallelSliceMut;
 use robust_arith::intersection_error_bound;
 use topology::{Edge2, PolygonSet2};
 
@@ -296,7 +297,7 @@ impl<W: Winding> CellStructure<W> {
                 }
             }
         }
-        used.sort_unstable();
+        sort_unstable(&mut used);
         let mut vertices = Vec::with_capacity(used.len());
         for (i, &(_, id)) in used.iter().enumerate() {
             rank[id as usize] = i as u32;
@@ -306,7 +307,7 @@ impl<W: Winding> CellStructure<W> {
             .iter()
             .map(|&(a, b, m)| (rank[a as usize], rank[b as usize], m))
             .collect();
-        ranked.sort_unstable();
+        sort_unstable(&mut ranked);
         let out = ranked
             .into_iter()
             .map(|(a, b, m)| {
@@ -349,7 +350,8 @@ impl<W: Winding> CellStructure<W> {
 /// Sorts keyed edges `(l, r, m)` and merges identical keys, adding the
 /// multiplicities and dropping those that cancel (section 7.1.2).
 fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
-    sel.sort_unstable_by_key(|&(a, b, _)| (a, b));
+    // Identical keys are summed, so their order does not matter.
+    sort_unstable_by_key(&mut sel, |&(a, b, _)| (a, b));
     let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(sel.len());
     for (a, b, m) in sel {
         match out.last_mut() {
@@ -422,4 +424,27 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
     let mut keep = removed.iter().map(|r| !r);
     edges.retain(|_| keep.next().unwrap_or(true));
     edges.extend(extra);
+}
+
+/// Below this length a sort runs on the calling thread.
+const PARALLEL_SORT_MIN: usize = 1 << 14;
+
+/// Sorts `v`, in parallel when it is long. Only used where equal elements
+/// are indistinguishable, so the result does not depend on the threads.
+pub(crate) fn sort_unstable<T: Ord + Send>(v: &mut [T]) {
+    if v.len() >= PARALLEL_SORT_MIN {
+        v.par_sort_unstable();
+    } else {
+        v.sort_unstable();
+    }
+}
+
+/// Sorts `v` by a key, in parallel when it is long; equal keys must be
+/// interchangeable for the caller.
+fn sort_unstable_by_key<T: Send, K: Ord>(v: &mut [T], key: impl Fn(&T) -> K + Sync) {
+    if v.len() >= PARALLEL_SORT_MIN {
+        v.par_sort_unstable_by_key(key);
+    } else {
+        v.sort_unstable_by_key(key);
+    }
 }

@@ -119,9 +119,18 @@ impl Ord for BufferKey {
 /// multiplicities and keep the larger adjustment count and the first
 /// provenance; an edge whose multiplicity cancels to zero is removed, and
 /// a later identical edge starts afresh.
-fn merge_identical<W: Winding>(items: impl Iterator<Item = Pending<W>>, out: &mut Vec<Pending<W>>) {
+fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>, out: &mut Vec<Pending<W>>) {
+    // Most points start one edge: nothing to merge.
+    if items.len() == 1 {
+        if let Some(e) = items.pop() {
+            if !e.m.is_zero() {
+                out.push(e);
+            }
+        }
+        return;
+    }
     let mut cur: Option<Pending<W>> = None;
-    for it in items {
+    for it in items.drain(..) {
         match &mut cur {
             Some(c) if c.r == it.r => {
                 c.m.add_assign(&it.m);
@@ -258,7 +267,8 @@ pub(crate) fn run<W: Winding>(
         .enumerate()
         .map(|(i, e)| (e.l.sort_key(), e.r.sort_key(), i as u32))
         .collect();
-    order.sort_unstable();
+    // Keys with the index are distinct: any sort gives the same order.
+    crate::cells::sort_unstable(&mut order);
     let mut slots: Vec<Option<Pending<W>>> = keyed.into_iter().map(Some).collect();
     let keyed = order
         .iter()
@@ -274,7 +284,7 @@ pub(crate) fn run<W: Winding>(
             while let Some(next) = it.next_if(|e| e.l == l) {
                 run_.push(next);
             }
-            merge_identical(run_.drain(..), &mut merged);
+            merge_identical(&mut run_, &mut merged);
         }
     }
     let mut s = Sweep {
@@ -460,7 +470,7 @@ impl<W: Winding> Sweep<W> {
         if gather.len() > 1 {
             gather.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
         }
-        merge_identical(gather.drain(..), out);
+        merge_identical(&mut gather, out);
         self.scratch_gather = gather;
     }
 
