@@ -29,6 +29,13 @@ pub fn x01<const N: usize>(va: &[f64; N], bs: &[f64; N], be: &[f64; N]) -> Optio
     }
     // value != 0 means exactly one end has x >= x_A, so the edge is not
     // vertical and x_A lies in (min x, max x].
+    // Theorem 1 at level 1: one end of B shadows v_A (S00 = 1) and v_A
+    // shadows the other (S00 = 0), so both level-0 partners exist and the
+    // point of B at x_A is an interpolation between them.
+    debug_assert!(
+        bs[0].min(be[0]) < va[0] && va[0] <= bs[0].max(be[0]),
+        "Theorem 1 violated in X01"
+    );
     Some(Hit {
         value,
         a: *va,
@@ -49,6 +56,12 @@ pub fn x10<const N: usize>(as_: &[f64; N], ae: &[f64; N], vb: &[f64; N]) -> Opti
         return None;
     }
     // value != 0 means x_B lies in [min x, max x) of the edge.
+    // Theorem 1 at level 1, as in `x01`: v_B shadows one end of A and the
+    // other end shadows v_B.
+    debug_assert!(
+        as_[0].min(ae[0]) <= vb[0] && vb[0] < as_[0].max(ae[0]),
+        "Theorem 1 violated in X10"
+    );
     Some(Hit {
         value,
         a: on_edge_at(as_, ae, vb[0]),
