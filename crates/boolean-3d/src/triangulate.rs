@@ -17,7 +17,11 @@
 //!    Each hole is bridged into the outer boundary its rightmost vertex sees
 //!    first along the +u ray (the scheme of Eberly's and the `earcut`
 //!    library's hole elimination), by an internal edge added as two
-//!    half-edges, one each way.
+//!    half-edges, one each way. A hole whose rightmost vertex is not inside
+//!    a region (the ray meets no boundary, or first meets one from outside)
+//!    bounds an inside-out region (section 4.7): a bridge would only drag
+//!    the region's triangles across the facet, so it is triangulated on its
+//!    own, mirrored.
 //! 4. Each outer polygon is ear-clipped: an ear `(a, b, c)` adds the
 //!    internal edge `c -> a` to the triangle and `a -> c` to the remaining
 //!    polygon. A valid ear (anticlockwise, no other vertex in it) is taken
@@ -28,6 +32,16 @@
 //!    (figure 4.10). Every triangulation of a loop has the loop's winding
 //!    number everywhere (the internal edges cancel), so the covered area
 //!    beyond `|winding|` is exactly the overlap the figure minimises.
+//! 5. Ear clipping is optimal when every triangle faces the polygon's way
+//!    (the covered area is then the polygon's signed area, a lower bound
+//!    for any triangulation). Otherwise the polygon is geometrically
+//!    invalid, and a greedy choice of ears can extend the invalid region
+//!    far more than necessary (a figure eight can be clipped straight
+//!    across its crossing), so a polygon of at most `MAX_OPTIMAL`
+//!    vertices is re-triangulated by the exact minimum of the total
+//!    absolute triangle area over all its triangulations by internal edges
+//!    (section 4.8: "minimises how far any geometrically invalid region is
+//!    extended").
 
 use robust_arith::Point3;
 use topology::{HalfEdge, PolygonMesh, TriangleMesh};
@@ -42,6 +56,12 @@ type P2 = [f64; 2];
 /// every internal edge, so a mesh of facets satisfying shape boundary
 /// closure stays closed. Half-edges referring to a vertex beyond
 /// `positions` make the facet invalid input: it is skipped (no triangles).
+///
+/// A valid facet gives non-overlapping triangles facing its way. An
+/// invalid one (figure 4.10) gives, for each of its polygons of up to 160
+/// vertices, the triangulation covering the least total area, i.e.
+/// extending the invalid region as little as possible, and triangulates
+/// inside-out loops lying outside every region on their own.
 pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &mut Vec<[u32; 3]>) {
     let n = positions.len();
     if half_edges
@@ -102,8 +122,85 @@ pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &
         return;
     }
     for polygon in bridge_holes(rings) {
-        ear_clip(polygon, out);
+        triangulate_polygon(polygon, out);
     }
+}
+
+/// Polygons of at most this many vertices that ear clipping leaves with a
+/// reversed triangle are re-triangulated by the exact minimum-overlap
+/// recurrence (`O(n^3)` time, `O(n^2)` memory; invalid polygons are rare).
+const MAX_OPTIMAL: usize = 160;
+
+/// Triangulates one polygon (an outer boundary with its holes bridged in,
+/// or an inside-out loop on its own), appending triangles of vertex ids.
+fn triangulate_polygon(mut poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
+    // A polygon of negative area (an inside-out loop, section 4.7) is
+    // clipped mirrored, so that its ears are valid, and flipped back:
+    // reversing a ring and every triangle keeps the internal edges paired.
+    let flip = ring_area(&poly) < 0.0;
+    if flip {
+        poly.reverse();
+    }
+    let mut tris = Vec::with_capacity(poly.len().saturating_sub(2));
+    ear_clip(&poly, &mut tris);
+    let twice_area = |t: &[usize; 3]| orient(poly[t[0]].1, poly[t[1]].1, poly[t[2]].1);
+    if poly.len() <= MAX_OPTIMAL && tris.iter().any(|t| twice_area(t) < 0.0) {
+        // Figure 4.10 generalised: the triangulation covering the least
+        // total area, if it beats the ears.
+        let clipped: f64 = tris.iter().map(|t| twice_area(t).abs()).sum();
+        let (least, optimal) = min_overlap(&poly);
+        if least < clipped {
+            tris = optimal;
+        }
+    }
+    out.extend(tris.iter().map(|t| {
+        let [a, b, c] = t.map(|i| poly[i].0);
+        if flip {
+            [a, c, b]
+        } else {
+            [a, b, c]
+        }
+    }));
+}
+
+/// The triangulation of a polygon (as positions in `poly`) of least total
+/// absolute area, and twice that area, by the classic recurrence over
+/// sub-polygons `i..=j` (every internal edge splits a polygon in two, so
+/// these are all the triangulations by internal edges). Non-finite areas
+/// (garbage coordinates) never win a comparison, so the result is always a
+/// complete triangulation.
+fn min_overlap(poly: &[(u32, P2)]) -> (f64, Vec<[usize; 3]>) {
+    let n = poly.len();
+    let mut cost = vec![0.0f64; n * n];
+    let mut split = vec![0u32; n * n];
+    for len in 2..n {
+        for i in 0..n - len {
+            let j = i + len;
+            let (mut best, mut arg) = (f64::INFINITY, i + 1);
+            for k in i + 1..j {
+                let c = cost[i * n + k]
+                    + cost[k * n + j]
+                    + orient(poly[i].1, poly[k].1, poly[j].1).abs();
+                if c < best {
+                    best = c;
+                    arg = k;
+                }
+            }
+            cost[i * n + j] = best;
+            split[i * n + j] = arg as u32;
+        }
+    }
+    let mut tris = Vec::with_capacity(n.saturating_sub(2));
+    let mut stack = vec![(0, n - 1)];
+    while let Some((i, j)) = stack.pop() {
+        if j - i >= 2 {
+            let k = split[i * n + j] as usize;
+            tris.push([i, k, j]);
+            stack.push((k, j));
+            stack.push((i, k));
+        }
+    }
+    (cost[n - 1], tris)
 }
 
 /// Triangulates every facet of a polygon mesh (section 4.8). The result
@@ -211,8 +308,9 @@ fn ring_area(r: &[(u32, P2)]) -> f64 {
     s / 2.0
 }
 
-/// Merges every hole into an outer polygon by bridges (two opposite
-/// half-edges each) and returns the outer polygons.
+/// Merges every hole inside a region into an outer polygon by bridges
+/// (two opposite half-edges each) and returns the outer polygons followed
+/// by the holes left on their own (inside-out regions).
 fn bridge_holes(rings: Vec<Vec<(u32, P2)>>) -> Vec<Vec<(u32, P2)>> {
     let areas: Vec<f64> = rings.iter().map(|r| ring_area(r)).collect();
     let mut outer_idx: Vec<usize> = (0..rings.len()).filter(|&i| areas[i] > 0.0).collect();
@@ -254,10 +352,14 @@ fn bridge_holes(rings: Vec<Vec<(u32, P2)>>) -> Vec<Vec<(u32, P2)>> {
             .then(i.cmp(&j))
     });
     let mut outers: Vec<Vec<(u32, P2)>> = outer_idx.iter().map(|&i| rings[i].clone()).collect();
+    let mut alone = Vec::new();
     for (h, k) in holes {
         let hole = &rings[h];
         let m = hole[k].1;
-        let (oi, pi) = find_bridge(&outers, m);
+        let Some((oi, pi)) = find_bridge(&outers, m) else {
+            alone.push(hole.clone());
+            continue;
+        };
         let outer = &mut outers[oi];
         let mut merged = Vec::with_capacity(outer.len() + hole.len() + 2);
         merged.extend_from_slice(&outer[..=pi]);
@@ -269,44 +371,54 @@ fn bridge_holes(rings: Vec<Vec<(u32, P2)>>) -> Vec<Vec<(u32, P2)>> {
         merged.extend_from_slice(&outer[pi + 1..]);
         *outer = merged;
     }
+    outers.extend(alone);
     outers
 }
 
 /// The outer polygon and vertex a hole's rightmost point `m` is bridged
 /// to: the nearest boundary crossing of the ray from `m` in +u, its
 /// endpoint of larger u, or a vertex inside the triangle (m, crossing,
-/// endpoint) making the smallest angle with the ray. Falls back to the
-/// nearest vertex when no crossing exists (invalid geometry).
-fn find_bridge(outers: &[Vec<(u32, P2)>], m: P2) -> (usize, usize) {
+/// endpoint) making the smallest angle with the ray. `None` when `m` is
+/// not inside a region: the ray meets no boundary, or meets a boundary
+/// going down (entering a region from outside) strictly first.
+fn find_bridge(outers: &[Vec<(u32, P2)>], m: P2) -> Option<(usize, usize)> {
     let mut best: Option<(f64, usize, usize)> = None; // (crossing u, outer, vertex)
+    let mut entering = f64::INFINITY;
     for (oi, r) in outers.iter().enumerate() {
         for i in 0..r.len() {
             let p = r[i].1;
             let q = r[(i + 1) % r.len()].1;
-            // Edges going up cross the +u ray on the right of an
-            // anticlockwise outer boundary.
-            if p[1] <= m[1] && m[1] <= q[1] && p[1] != q[1] {
-                let x = p[0] + (m[1] - p[1]) * (q[0] - p[0]) / (q[1] - p[1]);
-                if x >= m[0] && best.is_none_or(|(bx, _, _)| x < bx) {
+            if p[1] == q[1] || m[1] < p[1].min(q[1]) || m[1] > p[1].max(q[1]) {
+                continue;
+            }
+            // Exact at the endpoints, so that the two edges at a vertex on
+            // the ray cross it at the same u.
+            let x = if m[1] == p[1] {
+                p[0]
+            } else if m[1] == q[1] {
+                q[0]
+            } else {
+                p[0] + (m[1] - p[1]) * (q[0] - p[0]) / (q[1] - p[1])
+            };
+            if x < m[0] {
+                continue;
+            }
+            if p[1] < q[1] {
+                // Edges going up cross the +u ray on the right of an
+                // anticlockwise outer boundary.
+                if best.is_none_or(|(bx, _, _)| x < bx) {
                     let v = if p[0] > q[0] { i } else { (i + 1) % r.len() };
                     best = Some((x, oi, v));
                 }
+            } else {
+                entering = entering.min(x);
             }
         }
     }
-    let Some((qx, oi, mut vi)) = best else {
-        // No crossing: the nearest vertex of any outer polygon.
-        let mut near = (f64::INFINITY, 0, 0);
-        for (oi, r) in outers.iter().enumerate() {
-            for (i, &(_, p)) in r.iter().enumerate() {
-                let d = (p[0] - m[0]).powi(2) + (p[1] - m[1]).powi(2);
-                if d < near.0 {
-                    near = (d, oi, i);
-                }
-            }
-        }
-        return (near.1, near.2);
-    };
+    let (qx, oi, mut vi) = best?;
+    if entering < qx {
+        return None;
+    }
     // Refine: a vertex inside the triangle (m, (qx, m.v), candidate) may
     // block the bridge; the one at the smallest angle to the ray does not.
     let r = &outers[oi];
@@ -326,7 +438,7 @@ fn find_bridge(outers: &[Vec<(u32, P2)>], m: P2) -> (usize, usize) {
             }
         }
     }
-    (oi, vi)
+    Some((oi, vi))
 }
 
 /// Whether `p` lies in the closed triangle `(a, b, c)` of either
@@ -340,8 +452,8 @@ fn in_triangle(a: P2, b: P2, c: P2, p: P2) -> bool {
 }
 
 /// Ear clipping of one polygon (possibly with repeated vertices from
-/// bridges, possibly self-overlapping).
-fn ear_clip(poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
+/// bridges, possibly self-overlapping), as triangles of positions in `poly`.
+fn ear_clip(poly: &[(u32, P2)], out: &mut Vec<[usize; 3]>) {
     let n = poly.len();
     if n < 3 {
         return; // one or two half-edges balance by themselves
@@ -372,8 +484,8 @@ fn ear_clip(poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
                 ac <= bd
             };
             let (p, q, r, s) = if use_ac { (a, b, c, d) } else { (b, c, d, a) };
-            out.push([poly[p].0, poly[q].0, poly[r].0]);
-            out.push([poly[p].0, poly[r].0, poly[s].0]);
+            out.push([p, q, r]);
+            out.push([p, r, s]);
             return;
         }
         // Pass 1: a valid ear; pass 2: a degenerate one; pass 3: the
@@ -414,7 +526,7 @@ fn ear_clip(poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
             .or(smallest.map(|s| s.1))
             .unwrap_or(cur);
         let (a, c) = (prev[ear], next[ear]);
-        out.push([poly[a].0, poly[ear].0, poly[c].0]);
+        out.push([a, ear, c]);
         alive[ear] = false;
         next[a] = c;
         prev[c] = a;
@@ -425,7 +537,7 @@ fn ear_clip(poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
     let b = next[a];
     let c = next[b];
     debug_assert!(alive[a] && alive[b] && alive[c]);
-    out.push([poly[a].0, poly[b].0, poly[c].0]);
+    out.push([a, b, c]);
 }
 
 #[cfg(test)]

@@ -2,12 +2,14 @@
 //! meshes with random-garbage, integer-grid (exact ties) and near-degenerate
 //! coordinates must always give a topologically valid result, the audit
 //! must confirm every theorem, and the fast level 3 (broad phase, winding
-//! propagation) must equal the brute-force Table 4.1 oracle exactly.
+//! propagation) must equal the brute-force Table 4.1 oracle exactly. Both
+//! variants must also give bit-identical output for every thread count.
 
 mod common;
 
 use boolean_3d::{
-    boolean_mesh, boolean_mesh_audit, boolean_triangles_audit, level3, level3_reference, BooleanOp3,
+    boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
+    level3_reference, BooleanOp3, MeshOutput, TriangleOutput,
 };
 use common::{box_mesh, icosphere, tetra, uv_sphere, Rng};
 use proptest::prelude::*;
@@ -176,21 +178,77 @@ proptest! {
     }
 }
 
+/// Every bit of a polygon-mesh result: coordinates by `to_bits` (so that
+/// `-0.0` and `0.0` differ, unlike with `==`), then the facets, the facet
+/// sources and the intersection count.
+fn mesh_bits(o: &MeshOutput) -> (Vec<[u64; 3]>, String, usize) {
+    let bits = o
+        .mesh
+        .vertices
+        .iter()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+    let rest = format!("{:?} {:?}", o.mesh.facets, o.sources);
+    (bits, rest, o.intersections)
+}
+
+/// Every bit of a triangle-mesh result.
+fn triangle_bits(o: &TriangleOutput) -> (Vec<[u64; 3]>, Vec<[u32; 3]>, usize) {
+    let bits = o
+        .mesh
+        .vertices
+        .iter()
+        .map(|p| p.map(f64::to_bits))
+        .collect();
+    (bits, o.mesh.triangles.clone(), o.intersections)
+}
+
+/// Runs `f` in a rayon pool of exactly `threads` threads.
+fn in_pool<T: Send>(threads: usize, f: impl FnOnce() -> T + Send) -> T {
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(threads)
+        .build()
+        .unwrap()
+        .install(|| {
+            assert_eq!(rayon::current_num_threads(), threads);
+            f()
+        })
+}
+
+/// The determinism requirement (the same input gives the same
+/// output bit for bit, whatever the thread count): the level-3 pair work
+/// and the level-5 facet assembly run on rayon (section 4.4's values are
+/// independent per pair), so results must be gathered in an order that
+/// does not depend on how the work was split. Two UV spheres of 2976
+/// triangles each, one shifted by half its radius, give rayon thousands of
+/// items to split; both variants and all three operations are compared
+/// with pools of 1, 2 and 4 threads.
 #[test]
 fn output_is_identical_for_any_thread_count() {
-    let a = icosphere([0.0; 3], 1.0, 3).to_polygon_mesh();
-    let b = uv_sphere([0.4, 0.2, 0.1], 0.9, 24, 12).to_polygon_mesh();
-    let run = |threads| {
-        rayon::ThreadPoolBuilder::new()
-            .num_threads(threads)
-            .build()
-            .unwrap()
-            .install(|| boolean_mesh(&a, &b, BooleanOp3::Difference).unwrap())
-    };
-    let one = run(1);
-    assert!(one.intersections > 0);
-    for threads in [2, 3, 8] {
-        assert_eq!(run(threads), one, "{threads} threads");
+    let ta = uv_sphere([0.0; 3], 1.0, 48, 32);
+    let tb = uv_sphere([0.5, 0.013, 0.029], 1.0, 48, 32);
+    assert_eq!(ta.triangles.len(), 2976);
+    let (pa, pb) = (ta.to_polygon_mesh(), tb.to_polygon_mesh());
+    for op in BooleanOp3::ALL {
+        let polygons =
+            |threads| in_pool(threads, || mesh_bits(&boolean_mesh(&pa, &pb, op).unwrap()));
+        let triangles = |threads| {
+            in_pool(threads, || {
+                triangle_bits(&boolean_triangles(&ta, &tb, op).unwrap())
+            })
+        };
+        let (p1, t1) = (polygons(1), triangles(1));
+        assert!(p1.2 > 100 && t1.2 > 100, "{op:?}: too few intersections");
+        for threads in [2, 4] {
+            assert!(
+                polygons(threads) == p1,
+                "{op:?}: polygon variant differs on {threads} threads"
+            );
+            assert!(
+                triangles(threads) == t1,
+                "{op:?}: triangle variant differs on {threads} threads"
+            );
+        }
     }
 }
 
