@@ -283,34 +283,58 @@ impl<W: Winding> CellStructure<W> {
                 sel.push((b, a, -1));
             }
         }
-        let mut edges = merge_keyed(sel);
-        merge_vertical_edges(&mut edges, v);
-        // Vertices in lexicographic order, edges by key: the canonical
-        // order of `EdgeCollection::to_polygon_set`.
+        // The vertices the selected edges use, in lexicographic order. Ids
+        // were given in event order, which is lexicographic except after
+        // the backward steps of section 7.6.1: check before sorting.
+        let mut order: Vec<u32> = {
+            let mut used = vec![false; v.len()];
+            for &(a, b, _) in &sel {
+                used[a as usize] = true;
+                used[b as usize] = true;
+            }
+            (0..nv).filter(|&i| used[i as usize]).collect()
+        };
+        if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
+            let mut keyed: Vec<(u128, u32)> =
+                order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
+            sort_unstable(&mut keyed);
+            order = keyed.into_iter().map(|(_, i)| i).collect();
+        }
         let mut rank = vec![u32::MAX; v.len()];
-        let mut used: Vec<(u128, u32)> = Vec::with_capacity(edges.len() + 1);
+        for (r, &i) in order.iter().enumerate() {
+            rank[i as usize] = r as u32;
+        }
+        let points: Vec<[f64; 2]> = order.iter().map(|&i| v[i as usize]).collect();
+        // On ranks, sorting by key is the canonical edge order of
+        // `EdgeCollection::to_polygon_set` (vertices lexicographic, edges by
+        // key).
+        let ranked: Vec<(u32, u32, i32)> = sel
+            .into_iter()
+            .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
+            .collect();
+        let mut edges = merge_keyed(ranked);
+        if merge_vertical_edges(&mut edges, &points) {
+            // The merged vertical edges are new keys: restore the order.
+            sort_unstable(&mut edges);
+        }
+        // Keep the vertices some edge still uses (merging can drop some);
+        // renumbering in order keeps the edges sorted.
+        let mut new_index = vec![u32::MAX; points.len()];
         for &(a, b, _) in &edges {
-            for id in [a, b] {
-                if rank[id as usize] == u32::MAX {
-                    rank[id as usize] = 0;
-                    used.push((pt(id).sort_key(), id));
-                }
+            new_index[a as usize] = 0;
+            new_index[b as usize] = 0;
+        }
+        let mut vertices = Vec::with_capacity(points.len());
+        for (i, p) in points.iter().enumerate() {
+            if new_index[i] == 0 {
+                new_index[i] = vertices.len() as u32;
+                vertices.push(*p);
             }
         }
-        sort_unstable(&mut used);
-        let mut vertices = Vec::with_capacity(used.len());
-        for (i, &(_, id)) in used.iter().enumerate() {
-            rank[id as usize] = i as u32;
-            vertices.push(v[id as usize]);
-        }
-        let mut ranked: Vec<(u32, u32, i32)> = edges
-            .iter()
-            .map(|&(a, b, m)| (rank[a as usize], rank[b as usize], m))
-            .collect();
-        sort_unstable(&mut ranked);
-        let out = ranked
+        let out = edges
             .into_iter()
             .map(|(a, b, m)| {
+                let (a, b) = (new_index[a as usize], new_index[b as usize]);
                 if m > 0 || m == i32::MIN {
                     Edge2 {
                         start: a,
@@ -373,13 +397,14 @@ fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
 /// Section 7.6.1, footnote 9: the vertical edges at each x are replaced by
 /// their 1D simplification, the elementary intervals between their end
 /// points with the summed multiplicity (as
-/// [`EdgeCollection::merge_vertical_edges`], on vertex ids).
-fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
+/// [`EdgeCollection::merge_vertical_edges`], on vertex ids). Returns
+/// whether any edge was replaced.
+fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) -> bool {
     let mut vertical: Vec<usize> = (0..edges.len())
         .filter(|&i| v[edges[i].0 as usize][0] == v[edges[i].1 as usize][0])
         .collect();
     if vertical.len() < 2 {
-        return;
+        return false;
     }
     let x_of = |i: usize| v[edges[i].0 as usize][0];
     // The order within one x does not matter: the marks are sorted by y
@@ -423,7 +448,9 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
     }
     let mut keep = removed.iter().map(|r| !r);
     edges.retain(|_| keep.next().unwrap_or(true));
+    let changed = removed.iter().any(|&r| r);
     edges.extend(extra);
+    changed
 }
 
 /// Below this length a sort runs on the calling thread.

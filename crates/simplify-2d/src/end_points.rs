@@ -1,6 +1,6 @@
 //! The multiset of right end points of the sweep-line edges (section
 //! 7.4.1): one entry per sweep-line edge, keyed by its current right point,
-//! in an indexed binary min-heap so that shortening an edge (a split,
+//! in an indexed min-heap so that shortening an edge (a split,
 //! section 7.4.1) moves its entry instead of leaving a stale one behind.
 //!
 //! The next event point of the sweep is the smaller of the first pending
@@ -12,7 +12,12 @@ use crate::point::Pt;
 
 const ABSENT: u32 = u32::MAX;
 
-/// An indexed binary min-heap of `(right point, sweep edge id)`, the
+/// Children per heap node. A 4-ary heap halves the depth but compares more
+/// per level; on the sweep's lines (hundreds to thousands of edges) the
+/// binary heap measured 2-8% faster (random polygons, checkerboards).
+const ARITY: usize = 2;
+
+/// An indexed min-heap of `(right point, sweep edge id)`, the
 /// points held as their [`Pt::sort_key`] so that comparisons are integer
 /// comparisons.
 #[derive(Debug, Default)]
@@ -95,7 +100,8 @@ impl EndPoints {
         }
         while let Some(i) = stack.pop() {
             n += 1;
-            for c in [2 * i as usize + 1, 2 * i as usize + 2] {
+            let first = ARITY * i as usize + 1;
+            for c in first..first + ARITY {
                 if self.heap.get(c).is_some_and(|e| e.0 == p) {
                     stack.push(c as u32);
                 }
@@ -109,7 +115,7 @@ impl EndPoints {
     fn check(&self) {
         for i in 1..self.heap.len() {
             assert!(
-                self.heap[(i - 1) / 2].0 <= self.heap[i].0,
+                self.heap[(i - 1) / ARITY].0 <= self.heap[i].0,
                 "heap order at {i}"
             );
             let p = Pt::from_sort_key(self.heap[i].0);
@@ -127,7 +133,7 @@ impl EndPoints {
     fn sift_up(&mut self, mut at: usize) {
         let item = self.heap[at];
         while at > 0 {
-            let parent = (at - 1) / 2;
+            let parent = (at - 1) / ARITY;
             let up = self.heap[parent];
             if item.0 < up.0 {
                 self.heap[at] = up;
@@ -146,16 +152,16 @@ impl EndPoints {
         let len = self.heap.len();
         let item = self.heap[at];
         loop {
-            let l = 2 * at + 1;
-            if l >= len {
+            let first = ARITY * at + 1;
+            if first >= len {
                 break;
             }
-            let r = l + 1;
-            let c = if r < len && self.heap[r].0 < self.heap[l].0 {
-                r
-            } else {
-                l
-            };
+            let mut c = first;
+            for k in first + 1..(first + ARITY).min(len) {
+                if self.heap[k].0 < self.heap[c].0 {
+                    c = k;
+                }
+            }
             let down = self.heap[c];
             if down.0 < item.0 {
                 self.heap[at] = down;
