@@ -375,7 +375,7 @@ impl<W: Winding> CellStructure<W> {
 /// multiplicities and dropping those that cancel (section 7.1.2).
 fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
     // Identical keys are summed, so their order does not matter.
-    sort_unstable_by_key(&mut sel, |&(a, b, _)| (a, b));
+    sort_unstable_by_key(&mut sel, |&(a, b, _)| (u64::from(a) << 32) | u64::from(b));
     let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(sel.len());
     for (a, b, m) in sel {
         match out.last_mut() {
@@ -463,6 +463,19 @@ pub(crate) fn sort_unstable<T: Ord + Send>(v: &mut [T]) {
         v.par_sort_unstable();
     } else {
         v.sort_unstable();
+    }
+}
+
+/// Sorts `v` by a comparison, in parallel when it is long; elements that
+/// compare equal must be interchangeable for the caller.
+pub(crate) fn sort_unstable_by<T: Send>(
+    v: &mut [T],
+    cmp: impl Fn(&T, &T) -> std::cmp::Ordering + Sync,
+) {
+    if v.len() >= PARALLEL_SORT_MIN {
+        v.par_sort_unstable_by(cmp);
+    } else {
+        v.sort_unstable_by(cmp);
     }
 }
 

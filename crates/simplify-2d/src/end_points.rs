@@ -31,7 +31,10 @@ impl EndPoints {
     /// Adds edge `id` ending at `p` (an id not present).
     pub(crate) fn insert(&mut self, id: u32, p: Pt) {
         let i = id as usize;
-        if self.pos.len() <= i {
+        // Ids are handed out in increasing order: usually one more slot.
+        if self.pos.len() == i {
+            self.pos.push(ABSENT);
+        } else if self.pos.len() < i {
             self.pos.resize(i + 1, ABSENT);
         }
         debug_assert_eq!(self.pos[i], ABSENT);

@@ -262,17 +262,26 @@ pub(crate) fn run<W: Winding>(
     }
     // Sorted by key; identical edges stay in input order (the index breaks
     // ties), as the collection would have merged them one at a time.
-    let mut order: Vec<(u128, u128, u32)> = keyed
+    // Small entries (the x part of the key and the index) move fast; the
+    // full key decides only between equal x. Keys with the index are
+    // distinct, so any sort gives the same order.
+    let keys: Vec<(u128, u128)> = keyed
+        .iter()
+        .map(|e| (e.l.sort_key(), e.r.sort_key()))
+        .collect();
+    let full = |i: u32| (keys[i as usize], i);
+    let mut order: Vec<(u64, u32)> = keys
         .iter()
         .enumerate()
-        .map(|(i, e)| (e.l.sort_key(), e.r.sort_key(), i as u32))
+        .map(|(i, k)| ((k.0 >> 64) as u64, i as u32))
         .collect();
-    // Keys with the index are distinct: any sort gives the same order.
-    crate::cells::sort_unstable(&mut order);
+    crate::cells::sort_unstable_by(&mut order, |a, b| {
+        a.0.cmp(&b.0).then_with(|| full(a.1).cmp(&full(b.1)))
+    });
     let mut slots: Vec<Option<Pending<W>>> = keyed.into_iter().map(Some).collect();
     let keyed = order
         .iter()
-        .filter_map(|&(_, _, i)| slots.get_mut(i as usize).and_then(Option::take));
+        .filter_map(|&(_, i)| slots.get_mut(i as usize).and_then(Option::take));
     let mut merged = Vec::with_capacity(order.len());
     {
         let mut it = keyed.peekable();
@@ -742,7 +751,13 @@ impl<W: Winding> Sweep<W> {
             };
             q.x == e.l.x && lo < q.y && q.y < hi
         } else {
-            e.l.x <= q.x && q.x <= e.r.x && q.y == y_at_x(e.l.arr(), e.r.arr(), q.x)
+            // The computed y never leaves the edge's y-range (see
+            // `classify`), so a point outside it is not on the edge.
+            e.l.x <= q.x
+                && q.x <= e.r.x
+                && q.y >= e.l.y.min(e.r.y)
+                && q.y <= e.l.y.max(e.r.y)
+                && q.y == y_at_x(e.l.arr(), e.r.arr(), q.x)
         }
     }
 
@@ -752,10 +767,21 @@ impl<W: Winding> Sweep<W> {
         if e.is_vertical() {
             (e.l.y, e.r.y)
         } else {
-            (
-                y_at_x(e.l.arr(), e.r.arr(), x_l),
-                y_at_x(e.l.arr(), e.r.arr(), x_r),
-            )
+            (Self::y_at(e, x_l), Self::y_at(e, x_r))
+        }
+    }
+
+    /// `y_at_x` (Table 7.1) on a non-vertical sweep-line edge. At the end
+    /// points it returns their y bit for bit (section 7.1.1; robust-arith
+    /// tests it), which is taken directly there without the division.
+    #[inline]
+    fn y_at(e: &SweepEdge<W>, x: f64) -> f64 {
+        if x == e.l.x {
+            e.l.y
+        } else if x == e.r.x {
+            e.r.y
+        } else {
+            y_at_x(e.l.arr(), e.r.arr(), x)
         }
     }
 
