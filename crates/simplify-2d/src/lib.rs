@@ -58,6 +58,7 @@ mod end_points;
 mod error;
 mod point;
 mod sweep;
+mod sweep_line;
 mod vertex_table;
 mod winding;
 

@@ -26,6 +26,7 @@
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
 use crate::end_points::EndPoints;
 use crate::point::Pt;
+use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
 use crate::SimplifyError;
@@ -214,7 +215,7 @@ struct Sweep<W: Winding> {
     slab: Vec<Option<Pending<W>>>,
     free: Vec<u32>,
     next_seq: u64,
-    line: Vec<SweepEdge<W>>,
+    line: SweepLine<SweepEdge<W>>,
     /// The multiset of right end points of the sweep-line edges.
     ends: EndPoints,
     scratch_ids: Vec<u32>,
@@ -304,7 +305,7 @@ pub(crate) fn run<W: Winding>(
         slab: Vec::new(),
         free: Vec::new(),
         next_seq: 1,
-        line: Vec::new(),
+        line: SweepLine::default(),
         ends: EndPoints::default(),
         scratch_ids: Vec::new(),
         points: VertexTable::with_capacity(n * 2),
@@ -542,30 +543,34 @@ impl<W: Winding> Sweep<W> {
     fn find_group(&mut self, p: Pt, expected_ends: u32) -> Result<(usize, usize), SimplifyError> {
         let line = &self.line;
         let len = line.len();
-        let mut lo = line.partition_point(|e| Self::classify(e, p) == Class::Under);
-        let mut hi = lo + line[lo..].partition_point(|e| Self::classify(e, p) != Class::Over);
-        while lo > 0 && Self::classify(&line[lo - 1], p) != Class::Under {
+        let class = |i: usize| line.get(i).map(|e| Self::classify(e, p));
+        let mut lo = line.partition_point(0, len, |e| Self::classify(e, p) == Class::Under);
+        let mut hi = line.partition_point(lo, len, |e| Self::classify(e, p) != Class::Over);
+        while lo > 0 && class(lo - 1) != Some(Class::Under) {
             lo -= 1;
         }
-        while hi < len && Self::classify(&line[hi], p) != Class::Over {
+        while hi < len && class(hi) != Some(Class::Over) {
             hi += 1;
         }
-        let count = line[lo..hi].iter().filter(|e| e.r == p).count();
+        let ending = |lo: usize, hi: usize| {
+            let mut n = 0;
+            line.for_range(lo, hi, |e| n += usize::from(e.r == p));
+            n
+        };
+        let count = ending(lo, hi);
         if count == expected_ends as usize {
             return Ok((lo, hi));
         }
         // Section 7.6.2, literally.
         self.stats.full_scans += 1;
         let lo = line
-            .iter()
             .position(|e| Self::classify(e, p) != Class::Under)
             .unwrap_or(len);
         let hi = line
-            .iter()
             .rposition(|e| Self::classify(e, p) != Class::Over)
             .map_or(0, |i| i + 1);
         let hi = hi.max(lo);
-        let count = line[lo..hi].iter().filter(|e| e.r == p).count();
+        let count = ending(lo, hi);
         if count != expected_ends as usize {
             return Err(SimplifyError::Internal(format!(
                 "event ({}, {}): {count} of {expected_ends} ending edges found on the sweep line",
@@ -605,10 +610,14 @@ impl<W: Winding> Sweep<W> {
         let expected = self.ends.count_equal_to_min(p, &mut self.scratch_ids);
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
-            let e = &self.line[lo - 1];
-            let mut w = e.below.clone();
-            w.add_assign(&e.m);
-            w
+            match self.line.get(lo - 1) {
+                Some(e) => {
+                    let mut w = e.below.clone();
+                    w.add_assign(&e.m);
+                    w
+                }
+                None => W::zero(self.dims),
+            }
         } else {
             W::zero(self.dims)
         };
@@ -618,7 +627,7 @@ impl<W: Winding> Sweep<W> {
         block.clear();
         let mut group = std::mem::take(&mut self.scratch_group);
         group.clear();
-        group.extend_from_slice(&self.line[lo..hi]);
+        self.line.for_range(lo, hi, |e| group.push(e.clone()));
         let mut w_hi = w_lo.clone();
         let gradient = |r: Pt| -> (bool, f64) {
             if r.x > p.x {
@@ -712,7 +721,7 @@ impl<W: Winding> Sweep<W> {
         let n_new = new_edges.len();
         // One move of the line's tail at most, none when as many edges are
         // inserted as removed (every crossing).
-        self.line.splice(lo..hi, new_edges.drain(..));
+        self.line.replace(lo, hi, &mut new_edges);
         self.scratch_new = new_edges;
         self.stats.max_sweep_len = self.stats.max_sweep_len.max(self.line.len());
         self.fans.push(Fan {
@@ -789,8 +798,10 @@ impl<W: Winding> Sweep<W> {
     /// buffer (section 7.4.1). Returns the new adjustment count (section 8.4:
     /// one more than the edge's, at least the vertex's).
     fn split(&mut self, i: usize, q: Pt, k_q: u32) -> u32 {
+        let Some(e) = self.line.get_mut(i) else {
+            return 0;
+        };
         let (old_r, m, k, origin, id) = {
-            let e = &mut self.line[i];
             let k = (e.k + 1).max(k_q);
             let old_r = e.r;
             e.r = q;
