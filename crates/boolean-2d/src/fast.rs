@@ -1,13 +1,21 @@
-//! The fast evaluation of level 2 (Table 4.1): a sort-and-sweep broad phase
+//! The fast evaluation of level 2 (Table 4.1): a sweep-line broad phase
 //! before any `X11`, `X11` in parallel on the surviving pairs, and the
 //! winding numbers `X02`/`X20` by one ray cast per connected component,
 //! propagated along edges by the closure identity of Theorem 2.
 //!
 //! The result is the same [`LevelData`] as the brute force of
 //! `reference.rs`, integer for integer and point for point: a pair is skipped
-//! only when its `X` is provably 0, and the propagation identity holds
-//! exactly for integers.
+//! only when its `X` is provably 0, a sum over edges is only regrouped (never
+//! approximated), and the propagation identity holds exactly for integers.
+//!
+//! Both sweeps first run with plain active lists, which are fastest on
+//! well-spread input, and fall back to worst-case structures when the lists
+//! do more than a constant times `n + output` work: an [`IntervalSet`] over
+//! y for the broad phase, and for the ray casts a Fenwick tree over x plus
+//! the same interval set. Either way the cost is `O((n + c) log n)` for `c`
+//! overlapping box pairs.
 
+use crate::interval_set::{total_order_key, IntervalSet};
 use crate::reference::LevelData;
 use crate::BooleanError;
 use rayon::prelude::*;
@@ -23,6 +31,58 @@ const PARALLEL_PAIRS: usize = 2048;
 
 /// Edge counts above which the two operands' ray casts run side by side.
 const PARALLEL_EDGES: usize = 16384;
+
+/// The plain active-list sweeps give up (and the worst-case structures take
+/// over) once they have examined more than `LIST_WORK_FACTOR * (m + r) +
+/// LIST_WORK_SLACK` list entries, where `m` counts the boxes entered (and,
+/// for the ray casts, the casts answered) so far and `r` the pairs
+/// reported. So a completed list sweep costs `O(n + c)`, and an abandoned
+/// one no more than that (plus one scan, at most `n`) before the fallback
+/// starts. The Table 7.4 n-gons examine about 1.5 entries per box or pair.
+const LIST_WORK_FACTOR: usize = 8;
+
+/// See [`LIST_WORK_FACTOR`].
+const LIST_WORK_SLACK: usize = 1024;
+
+/// The work limit of a list sweep: `(factor, slack)` as in
+/// [`LIST_WORK_FACTOR`].
+type Budget = (usize, usize);
+
+/// The budget of production runs.
+const LIST_BUDGET: Budget = (LIST_WORK_FACTOR, LIST_WORK_SLACK);
+
+/// The running check of a [`Budget`]: `limit` is the budget at some
+/// earlier progress, never more than the current one, so work within it is
+/// within budget; only work beyond it recomputes the limit (`O(log n)`
+/// times when the work stays a constant factor under budget).
+struct BudgetCheck {
+    budget: Budget,
+    limit: usize,
+}
+
+impl BudgetCheck {
+    fn new(budget: Budget) -> Self {
+        BudgetCheck {
+            budget,
+            limit: budget.1,
+        }
+    }
+
+    /// Whether `work` exceeds the budget for `progress` items handled plus
+    /// outputs reported.
+    #[inline]
+    fn exceeded(&mut self, work: usize, progress: usize) -> bool {
+        if work <= self.limit {
+            return false;
+        }
+        self.limit = self
+            .budget
+            .0
+            .saturating_mul(progress)
+            .saturating_add(self.budget.1);
+        work > self.limit
+    }
+}
 
 /// One `X11` hit as [`LevelData::x11`] stores it: edge of A, edge of B,
 /// value, intersection point.
@@ -53,33 +113,44 @@ struct EdgeBox {
 /// `X01` and `X10` compare x coordinates exactly (`S00`, eq. 4.1), so an
 /// edge whose closed x range misses a vertex's x has `X01 = X10 = 0` there.
 fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
-    let mut boxes: Vec<EdgeBox> = set
-        .edges()
+    let edges = set.edges();
+    // Sort `(x0 by f64::total_cmp, edge index)` as integer keys (the same
+    // order, cheaper to compare and move than whole boxes).
+    let mut order: Vec<(u64, u32)> = edges
         .iter()
         .enumerate()
         .filter(|(_, e)| e.mult != 0)
         .map(|(i, e)| {
             let (p, q) = set.edge_points(e);
+            (total_order_key(p[0].min(q[0])), i as u32)
+        })
+        .collect();
+    order.sort_unstable();
+    order
+        .into_iter()
+        .map(|(_, i)| {
+            let (p, q) = set.edge_points(&edges[i as usize]);
             EdgeBox {
                 x0: p[0].min(q[0]),
                 x1: p[0].max(q[0]),
                 y0: p[1].min(q[1]) - margin,
                 y1: p[1].max(q[1]) + margin,
-                index: i as u32,
+                index: i,
             }
         })
-        .collect();
-    boxes.sort_unstable_by(|a, b| a.x0.total_cmp(&b.x0).then(a.index.cmp(&b.index)));
-    boxes
+        .collect()
 }
 
-/// Every `(edge of A, edge of B)` pair whose boxes overlap (closed ranges).
+/// Every `(edge of A, edge of B)` pair whose boxes overlap (closed ranges),
+/// each exactly once, in no particular order.
 ///
-/// Sort-and-sweep on x: boxes enter in order of `x0`; a box entering tests
-/// the other operand's active boxes (those with `x1 >= x0`, ties kept: the
-/// symbolic perturbation of eq. 4.1 decides touching ranges), dropping the
-/// ones that ended to its left. Each overlapping pair is found exactly once,
-/// by whichever of its two boxes enters second.
+/// Sort-and-sweep on x: boxes enter in order of `x0`; a box entering is
+/// tested against the other operand's active boxes (those with
+/// `x1 >= x0`, ties kept: the symbolic perturbation of eq. 4.1 decides
+/// touching ranges). Each overlapping pair is found exactly once, by
+/// whichever of its two boxes enters second. The active boxes are plain
+/// lists ([`pairs_by_lists`]) unless those exceed their work budget, then
+/// interval sets over y ([`pairs_by_trees`]); both report the same set.
 ///
 /// Why a pair outside this set has `X11 = 0`: if the closed x ranges are
 /// disjoint, every `X01`/`X10` of the pair is 0 (Table 4.1), hence every
@@ -90,10 +161,22 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
 /// the X terms of `X11` cancel by the closure of the two edges' end points
 /// (the argument of Theorem 1, case 2).
 fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
+    pairs_by_lists(a, b, LIST_BUDGET).unwrap_or_else(|| pairs_by_trees(a, b))
+}
+
+/// The sweep of [`overlapping_pairs`] with each operand's active boxes in a
+/// list: an entering box scans the whole list of the other operand,
+/// dropping the boxes that ended to its left. `O(n + c)` on well-spread
+/// input, but quadratic when many boxes share an x range without
+/// overlapping in y (long horizontal edges stacked in y, many components
+/// in one column); `None` as soon as the scans exceed `budget`.
+fn pairs_by_lists(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<(u32, u32)>> {
     let mut pairs = Vec::new();
     let mut active_a: Vec<EdgeBox> = Vec::new();
     let mut active_b: Vec<EdgeBox> = Vec::new();
     let (mut i, mut j) = (0, 0);
+    let mut work = 0usize;
+    let mut check = BudgetCheck::new(budget);
     while i < a.len() || j < b.len() {
         let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
         let (entering, others, own) = if take_a {
@@ -103,6 +186,7 @@ fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
             j += 1;
             (b[j - 1], &mut active_a, &mut active_b)
         };
+        work += others.len();
         let mut k = 0;
         while k < others.len() {
             let o = others[k];
@@ -120,6 +204,54 @@ fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
             k += 1;
         }
         own.push(entering);
+        if check.exceeded(work, i + j + pairs.len()) {
+            return None;
+        }
+    }
+    Some(pairs)
+}
+
+/// The sweep of [`overlapping_pairs`] with each operand's active boxes in
+/// an [`IntervalSet`] over their (widened) y ranges: an entering box visits
+/// only the other operand's members whose y range meets its own, in
+/// `O((1 + r) log n)` for `r` visited. A visited member that ended to the
+/// left of the entering box (`x1 < x0`) can overlap no later box either
+/// (boxes enter by ascending `x0`), so it is removed there and then; every
+/// other visited member overlaps the entering box in both ranges and is
+/// reported. Each box is inserted and removed at most once, so the sweep
+/// costs `O((n + c) log n)` in the worst case, `c` the number of
+/// overlapping pairs.
+fn pairs_by_trees(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
+    let y_ranges =
+        |boxes: &[EdgeBox]| -> Vec<(f64, f64)> { boxes.iter().map(|bx| (bx.y0, bx.y1)).collect() };
+    let mut set_a = IntervalSet::new(&y_ranges(a));
+    let mut set_b = IntervalSet::new(&y_ranges(b));
+    let mut pairs = Vec::new();
+    let mut found = Vec::new();
+    let (mut i, mut j) = (0, 0);
+    while i < a.len() || j < b.len() {
+        let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
+        let (entering, others, other_boxes, own, own_item) = if take_a {
+            i += 1;
+            (a[i - 1], &mut set_b, b, &mut set_a, i - 1)
+        } else {
+            j += 1;
+            (b[j - 1], &mut set_a, a, &mut set_b, j - 1)
+        };
+        others.overlapping(entering.y0, entering.y1, &mut found);
+        for &k in &found {
+            let o = other_boxes[k as usize];
+            if o.x1 < entering.x0 {
+                others.remove(k);
+            } else {
+                pairs.push(if take_a {
+                    (entering.index, o.index)
+                } else {
+                    (o.index, entering.index)
+                });
+            }
+        }
+        own.insert(own_item as u32);
     }
     pairs
 }
@@ -216,42 +348,265 @@ fn propagation_order(set: &PolygonSet2) -> Vec<(u32, Source)> {
     order
 }
 
-/// Casts one ray per query point through the other operand's edges: for a
-/// query `v`, the sum of `term(v, edge)` over every edge of non-zero
-/// multiplicity whose closed x range holds `v.x` (all other edges have
-/// `X01 = X10 = 0` at `v`, so contribute nothing). A sweep over the
-/// queries in x order keeps the edges spanning the current x active.
+/// Which winding number a ray cast computes, hence which edges can
+/// contribute (Table 4.1, eq. 4.1: ties go to B above A).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Ray {
+    /// `X02(v, B) = -sum m S01(v, e_B)`: `S01` is `X01` when the edge is
+    /// above the vertex of A and 0 when it is below.
+    Up,
+    /// `X20(A, w) = sum m S10(e_A, w)`: `S10` is `X10` when the edge is
+    /// below the vertex of B and 0 when it is above.
+    Down,
+}
+
+impl Ray {
+    /// The exact term of one edge of non-zero multiplicity for a query
+    /// vertex `v`: `-m S01(v, e)` or `m S10(e, v)`.
+    fn term(self, v: &[f64; 2], e: &Edge2, (s, t): ([f64; 2], [f64; 2])) -> i64 {
+        i64::from(match self {
+            Ray::Up => -(e.mult * s01(v, &s, &t)),
+            Ray::Down => e.mult * s10(&s, &t, v),
+        })
+    }
+}
+
+/// Casts one ray per query vertex of `own` through the edges of `other`
+/// (`boxes` are their boxes, sorted by `x0`): the sum of [`Ray::term`]
+/// over every edge of non-zero multiplicity, as the brute force sums it
+/// (modulo `2^32`, like its wrapping `i32` sum). Plain active lists first
+/// ([`cast_by_lists`]), the worst-case sweeps ([`cast_by_sweeps`]) when
+/// the lists exceed their budget; both return the same integers.
 fn cast_rays(
     queries: &[u32],
     own: &PolygonSet2,
     boxes: &[EdgeBox],
     other: &PolygonSet2,
-    term: impl Fn(&[f64; 2], &Edge2, ([f64; 2], [f64; 2])) -> i32,
+    ray: Ray,
 ) -> Vec<i32> {
-    let mut by_x: Vec<usize> = (0..queries.len()).collect();
-    by_x.sort_unstable_by(|&p, &q| {
-        own.vertex(queries[p])[0]
-            .total_cmp(&own.vertex(queries[q])[0])
-            .then(p.cmp(&q))
-    });
+    cast_by_lists(queries, own, boxes, other, ray, LIST_BUDGET)
+        .unwrap_or_else(|| cast_by_sweeps(queries, own, boxes, other, ray))
+}
+
+/// The query vertices' points and their indices sorted by x (ties by
+/// index).
+fn queries_by_x(queries: &[u32], own: &PolygonSet2) -> (Vec<[f64; 2]>, Vec<u32>) {
+    let points: Vec<[f64; 2]> = queries.iter().map(|&v| own.vertex(v)).collect();
+    let mut by_x: Vec<(f64, u32)> = points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| (p[0], k as u32))
+        .collect();
+    by_x.sort_unstable_by(|p, q| p.0.total_cmp(&q.0).then(p.1.cmp(&q.1)));
+    (points, by_x.into_iter().map(|p| p.1).collect())
+}
+
+/// [`cast_rays`] by a sweep over the queries in x order that keeps the
+/// edges whose closed x range holds the current x in a list (all other
+/// edges have `X01 = X10 = 0` at the query, so contribute nothing), and
+/// sums the exact term over the whole list. Quadratic when many queries
+/// share an x range with many edges (a column of components); `None` as
+/// soon as the list scans exceed `budget`.
+fn cast_by_lists(
+    queries: &[u32],
+    own: &PolygonSet2,
+    boxes: &[EdgeBox],
+    other: &PolygonSet2,
+    ray: Ray,
+    budget: Budget,
+) -> Option<Vec<i32>> {
     let mut result = vec![0i32; queries.len()];
     let mut active: Vec<EdgeBox> = Vec::new();
     let mut next = 0;
-    for q in by_x {
-        let v = own.vertex(queries[q]);
+    let mut work = 0usize;
+    let mut check = BudgetCheck::new(budget);
+    let (points, by_x) = queries_by_x(queries, own);
+    for (handled, q) in by_x.into_iter().enumerate() {
+        let v = points[q as usize];
         while next < boxes.len() && boxes[next].x0 <= v[0] {
             active.push(boxes[next]);
             next += 1;
         }
+        work += active.len();
         active.retain(|b| b.x1 >= v[0]);
-        let mut sum = 0i32;
+        let mut sum = 0i64;
         for b in &active {
             let e = &other.edges()[b.index as usize];
-            sum += term(&v, e, other.edge_points(e));
+            sum += ray.term(&v, e, other.edge_points(e));
         }
-        result[q] = sum;
+        // Truncation keeps the low 32 bits: the wrapping `i32` sum.
+        result[q as usize] = sum as i32;
+        if check.exceeded(work, next + handled + 1) {
+            return None;
+        }
     }
-    result
+    Some(result)
+}
+
+/// A Fenwick tree over positions `0..n` holding a difference array:
+/// `add_from(i, w)` adds `w` to every position `>= i`, `at(i)` reads
+/// position `i`; both `O(log n)`.
+struct Fenwick {
+    tree: Vec<i64>,
+}
+
+impl Fenwick {
+    fn new(n: usize) -> Self {
+        Fenwick {
+            tree: vec![0; n + 1],
+        }
+    }
+
+    fn add_from(&mut self, i: usize, w: i64) {
+        let mut k = i + 1;
+        while k < self.tree.len() {
+            self.tree[k] = self.tree[k].wrapping_add(w);
+            k += k & k.wrapping_neg();
+        }
+    }
+
+    fn at(&self, i: usize) -> i64 {
+        let mut k = i + 1;
+        let mut sum = 0i64;
+        while k > 0 {
+            sum = sum.wrapping_add(self.tree[k]);
+            k -= k & k.wrapping_neg();
+        }
+        sum
+    }
+}
+
+/// [`cast_rays`] in `O((n + q + c + s) log n)` for `q` queries, whatever
+/// the input (`s` counts the pairs of an isolated query vertex and a box
+/// holding it), by splitting the sum over the edges of `other` by where the edge
+/// lies relative to the query vertex `v`, in its widened y range
+/// (`[y0, y1]` of [`EdgeBox`], the true range plus the `8 u L` margin on
+/// each side):
+///
+/// * **far side** (`y0 > v.y` for [`Ray::Up`], `y1 < v.y` for
+///   [`Ray::Down`]): every computed y of the edge (within `4 u L` of the
+///   true segment, section 8.2) is strictly above (below) `v.y`, so the
+///   shadow equals its `X` (eq. 4.1) and the term is exactly
+///   `-m X01(v, e) = -m [v.x <= t.x] + m [v.x <= s.x]` (Up) or
+///   `m X10(e, v) = m [v.x >= s.x] - m [v.x >= t.x]` (Down), with
+///   `S00(p, q) = [q.x >= p.x]` compared exactly (Table 4.1, `s`/`t` the
+///   edge's start and end). That depends only on x: a sweep in y adds the
+///   far edges, as they become far, to a [`Fenwick`] tree over the queries'
+///   x ranks (each indicator is a prefix or suffix of the ranks), which is
+///   read at each query;
+/// * **near side** (`y0 <= v.y` and `y1 >= v.y`): the exact term, from
+///   the edges reported by an x sweep with an [`IntervalSet`] over y (the
+///   same lazy removal as [`pairs_by_trees`]);
+/// * **other side**: the shadow is 0, nothing to add.
+///
+/// Integer sums are only regrouped, so the result is that of the brute
+/// force. A near pair `(v, box)` with `v` on an edge of its own operand
+/// means that edge's box overlaps `box`, and components have distinct
+/// first vertices, so the near terms number at most `c` plus those of
+/// isolated vertices.
+fn cast_by_sweeps(
+    queries: &[u32],
+    own: &PolygonSet2,
+    boxes: &[EdgeBox],
+    other: &PolygonSet2,
+    ray: Ray,
+) -> Vec<i32> {
+    let n = queries.len();
+    let (points, by_x) = queries_by_x(queries, own);
+    let xs: Vec<f64> = by_x.iter().map(|&k| points[k as usize][0]).collect();
+    let mut rank = vec![0usize; n];
+    for (r, &k) in by_x.iter().enumerate() {
+        rank[k as usize] = r;
+    }
+    let mut sum = vec![0i64; n];
+
+    // Far side. In the Fenwick tree over the queries' x ranks, an edge adds
+    // `m` from rank `plus` on and `-m` from rank `minus` on. Up:
+    // `plus = #{x <= t.x}` and `minus = #{x <= s.x}`, so rank `r` gets
+    // `m [x_r > t.x] - m [x_r > s.x] = -m [x_r <= t.x] + m [x_r <= s.x]`,
+    // which is `-m X01(v, e)`. Down: `plus = #{x < s.x}`,
+    // `minus = #{x < t.x}`, so rank `r` gets
+    // `m [x_r >= s.x] - m [x_r >= t.x] = m X10(e, v)`. (The counts are
+    // prefixes of the ranks: the predicates are monotone along their total
+    // order, the two zeros comparing equal.) An edge with `plus == minus`
+    // (vertical, or spanning no query's x) adds nothing and is dropped.
+    let count = |c: f64, inclusive: bool| {
+        if inclusive {
+            xs.partition_point(|&x| x <= c)
+        } else {
+            xs.partition_point(|&x| x < c)
+        }
+    };
+    // `(key, plus, minus, m)`; the key is when the edge becomes far: Up,
+    // for every query with `y < y0`; Down, for every query with `y > y1`.
+    let mut far_edges: Vec<(f64, u32, u32, i64)> = boxes
+        .iter()
+        .filter_map(|b| {
+            let e = &other.edges()[b.index as usize];
+            let (s, t) = other.edge_points(e);
+            let (plus, minus, key) = match ray {
+                Ray::Up => (count(t[0], true), count(s[0], true), b.y0),
+                Ray::Down => (count(s[0], false), count(t[0], false), b.y1),
+            };
+            (plus != minus).then_some((key, plus as u32, minus as u32, i64::from(e.mult)))
+        })
+        .collect();
+    let mut by_y: Vec<(f64, u32)> = points
+        .iter()
+        .enumerate()
+        .map(|(k, p)| (p[1], k as u32))
+        .collect();
+    by_y.sort_unstable_by(|p, q| p.0.total_cmp(&q.0).then(p.1.cmp(&q.1)));
+    far_edges.sort_unstable_by(|p, q| p.0.total_cmp(&q.0));
+    if ray == Ray::Up {
+        // Sweep downwards: queries by descending y, edges by descending y0.
+        by_y.reverse();
+        far_edges.reverse();
+    }
+    let mut fenwick = Fenwick::new(n);
+    let mut next = 0;
+    for &(vy, k) in &by_y {
+        while let Some(&(key, plus, minus, m)) = far_edges.get(next) {
+            let far = match ray {
+                Ray::Up => key > vy,
+                Ray::Down => key < vy,
+            };
+            if !far {
+                break;
+            }
+            fenwick.add_from(plus as usize, m);
+            fenwick.add_from(minus as usize, m.wrapping_neg());
+            next += 1;
+        }
+        sum[k as usize] = fenwick.at(rank[k as usize]);
+    }
+
+    // Near side.
+    let y_ranges: Vec<(f64, f64)> = boxes.iter().map(|b| (b.y0, b.y1)).collect();
+    let mut set = IntervalSet::new(&y_ranges);
+    let mut found = Vec::new();
+    let mut next = 0;
+    for &k in &by_x {
+        let v = points[k as usize];
+        while next < boxes.len() && boxes[next].x0 <= v[0] {
+            set.insert(next as u32);
+            next += 1;
+        }
+        set.overlapping(v[1], v[1], &mut found);
+        for &i in &found {
+            let b = boxes[i as usize];
+            if b.x1 < v[0] {
+                // Ended left of this query, so of every later one.
+                set.remove(i);
+            } else {
+                let e = &other.edges()[b.index as usize];
+                let t = ray.term(&v, e, other.edge_points(e));
+                sum[k as usize] = sum[k as usize].wrapping_add(t);
+            }
+        }
+    }
+    // Truncation keeps the low 32 bits: the wrapping `i32` sum.
+    sum.into_iter().map(|x| x as i32).collect()
 }
 
 /// Sum of `weight(other edge) * X11` over the hits of each edge of one
@@ -290,6 +645,17 @@ fn propagate(order: &[(u32, Source)], cast: &[i32], delta: &[i32], n: usize) -> 
     value
 }
 
+/// The widening of every edge box's y range, on each side: twice the
+/// `y_at_x` bound `4 u L` of section 8.2 (defence in depth: a wider margin
+/// only adds candidate pairs and near terms). It also covers the rounding
+/// of `y0 - margin` and `y1 + margin` themselves (at most `u L` each), so
+/// a computed `y0`/`y1` still clears the true end points' range by more than
+/// `4 u L`.
+fn margin(a: &PolygonSet2, b: &PolygonSet2) -> f64 {
+    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
+    2.0 * robust_arith::y_at_x_error_bound(max_abs)
+}
+
 /// Level 2 by the fast path.
 ///
 /// Winding numbers: along an edge `e_A` of non-zero multiplicity, Theorem 2
@@ -306,10 +672,7 @@ pub(crate) fn level2_fast(
 ) -> Result<(LevelData, Level2Times), BooleanError> {
     let mut times = Level2Times::default();
     let clock = Instant::now();
-    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
-    // Twice the y_at_x bound of section 8.2 on each side (defence in depth:
-    // a wider margin only adds candidate pairs).
-    let margin = 2.0 * robust_arith::y_at_x_error_bound(max_abs);
+    let margin = margin(a, b);
     let boxes_a = edge_boxes(a, margin);
     let boxes_b = edge_boxes(b, margin);
     let pairs = overlapping_pairs(&boxes_a, &boxes_b);
@@ -331,16 +694,8 @@ pub(crate) fn level2_fast(
             .collect()
     };
     let (cast_a, cast_b) = (casts(&order_a), casts(&order_b));
-    let cast_x02 = || {
-        cast_rays(&cast_a, a, &boxes_b, b, |v, e, (s, t)| {
-            -(e.mult * s01(v, &s, &t))
-        })
-    };
-    let cast_x20 = || {
-        cast_rays(&cast_b, b, &boxes_a, a, |v, e, (s, t)| {
-            e.mult * s10(&s, &t, v)
-        })
-    };
+    let cast_x02 = || cast_rays(&cast_a, a, &boxes_b, b, Ray::Up);
+    let cast_x20 = || cast_rays(&cast_b, b, &boxes_a, a, Ray::Down);
     let (x02_cast, x20_cast) = if a.edge_count() + b.edge_count() >= PARALLEL_EDGES {
         rayon::join(cast_x02, cast_x20)
     } else {
@@ -374,6 +729,7 @@ pub(crate) fn ms(start: Instant) -> f64 {
 #[cfg(test)]
 mod tests {
     use super::*;
+    use crate::interval_set::tests::Rng;
 
     fn boxes(v: &[(f64, f64, f64, f64)]) -> Vec<EdgeBox> {
         let mut b: Vec<EdgeBox> = v
@@ -417,5 +773,161 @@ mod tests {
         want.sort_unstable();
         assert_eq!(got, want);
         assert_eq!(got, vec![(0, 0), (1, 0), (1, 1), (2, 1), (3, 1)]);
+    }
+
+    /// Every pair of `a` and `b` whose closed boxes overlap, sorted.
+    fn brute_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
+        let mut want = Vec::new();
+        for p in a {
+            for q in b {
+                if p.x0 <= q.x1 && q.x0 <= p.x1 && p.y0 <= q.y1 && q.y0 <= p.y1 {
+                    want.push((p.index, q.index));
+                }
+            }
+        }
+        want.sort_unstable();
+        want
+    }
+
+    fn sorted(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+        v.sort_unstable();
+        v
+    }
+
+    /// No budget: the list sweeps always complete.
+    const UNLIMITED: Budget = (usize::MAX, usize::MAX);
+
+    /// How [`random_set`] draws coordinates.
+    #[derive(Clone, Copy)]
+    enum Coords {
+        /// A small integer grid: exact ties, both zeros, vertical and
+        /// horizontal edges, vertices on edges.
+        Grid,
+        /// Dyadic values in the unit square.
+        Unit,
+        /// Any magnitude from 1e-300 to 1e300, zeros, small integers.
+        Garbage,
+    }
+
+    /// A random edge set of up to 40 vertices and 60 edges with
+    /// multiplicities in `-2..=2` (0 included).
+    fn random_set(rng: &mut Rng, coords: Coords) -> PolygonSet2 {
+        let n = 1 + rng.below(40) as usize;
+        let coord = |rng: &mut Rng| {
+            let sign = if rng.below(2) == 0 { 1.0 } else { -1.0 };
+            match coords {
+                Coords::Grid => {
+                    let v = rng.below(9) as i32 - 4;
+                    if v == 0 && rng.below(2) == 0 {
+                        -0.0
+                    } else {
+                        f64::from(v)
+                    }
+                }
+                Coords::Unit => (rng.below(1 << 20) as f64) / f64::from(1 << 19) - 1.0,
+                Coords::Garbage => match rng.below(5) {
+                    0 => sign * 0.0,
+                    1 => sign * 1e300 * (rng.below(1000) as f64 + 1.0) / 1000.0,
+                    2 => sign * 1e-300 * (rng.below(1000) as f64 + 1.0) / 1000.0,
+                    3 => sign * rng.below(1 << 20) as f64 / f64::from(1 << 20),
+                    _ => f64::from(rng.below(9) as i32 - 4),
+                },
+            }
+        };
+        let mut set = PolygonSet2::new();
+        for _ in 0..n {
+            let p = [coord(rng), coord(rng)];
+            set.add_vertex(p);
+        }
+        for _ in 0..rng.below(60) {
+            let (s, t) = (rng.below(n as u64) as u32, rng.below(n as u64) as u32);
+            set.add_edge_mult(s, t, rng.below(5) as i32 - 2);
+        }
+        set
+    }
+
+    const ALL_COORDS: [Coords; 3] = [Coords::Grid, Coords::Unit, Coords::Garbage];
+
+    #[test]
+    fn both_sweeps_find_exactly_the_overlapping_pairs() {
+        let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+        for round in 0..600 {
+            let coords = ALL_COORDS[round % 3];
+            let (a, b) = (random_set(&mut rng, coords), random_set(&mut rng, coords));
+            let m = margin(&a, &b);
+            let (ba, bb) = (edge_boxes(&a, m), edge_boxes(&b, m));
+            let want = brute_pairs(&ba, &bb);
+            let lists = pairs_by_lists(&ba, &bb, UNLIMITED).expect("no budget");
+            assert_eq!(sorted(lists), want, "lists, round {round}");
+            assert_eq!(
+                sorted(pairs_by_trees(&ba, &bb)),
+                want,
+                "trees, round {round}"
+            );
+            assert_eq!(sorted(overlapping_pairs(&ba, &bb)), want, "round {round}");
+        }
+    }
+
+    #[test]
+    fn list_sweeps_give_up_beyond_their_budget() {
+        // Stacked long boxes: every entering box scans every active one.
+        let a = boxes(
+            &(0..64)
+                .map(|i| (0.0, 9.0, 2.0 * f64::from(i), 2.0 * f64::from(i) + 0.5))
+                .collect::<Vec<_>>(),
+        );
+        let b = boxes(
+            &(0..64)
+                .map(|i| (1.0, 9.0, 2.0 * f64::from(i) + 1.0, 2.0 * f64::from(i) + 1.5))
+                .collect::<Vec<_>>(),
+        );
+        assert!(pairs_by_lists(&a, &b, (8, 0)).is_none());
+        assert_eq!(pairs_by_lists(&a, &b, UNLIMITED), Some(Vec::new()));
+        assert!(pairs_by_trees(&a, &b).is_empty());
+    }
+
+    /// The casts by brute force: the sum over every edge, as
+    /// `reference.rs` computes it.
+    fn brute_casts(queries: &[u32], own: &PolygonSet2, other: &PolygonSet2, ray: Ray) -> Vec<i32> {
+        queries
+            .iter()
+            .map(|&q| {
+                let v = own.vertex(q);
+                other
+                    .edges()
+                    .iter()
+                    .map(|e| ray.term(&v, e, other.edge_points(e)) as i32)
+                    .sum()
+            })
+            .collect()
+    }
+
+    #[test]
+    fn both_casts_equal_the_brute_force_sums() {
+        let mut rng = Rng(0x9e6c_63d0_676a_9a99);
+        for round in 0..600 {
+            let coords = ALL_COORDS[round % 3];
+            let (own, other) = (random_set(&mut rng, coords), random_set(&mut rng, coords));
+            let m = margin(&own, &other);
+            let boxes = edge_boxes(&other, m);
+            // Every vertex is a query (duplicates of x and y included).
+            let queries: Vec<u32> = (0..own.vertex_count() as u32).collect();
+            for ray in [Ray::Up, Ray::Down] {
+                let want = brute_casts(&queries, &own, &other, ray);
+                let lists = cast_by_lists(&queries, &own, &boxes, &other, ray, UNLIMITED);
+                assert_eq!(lists.as_ref(), Some(&want), "lists, {ray:?}, round {round}");
+                let sweeps = cast_by_sweeps(&queries, &own, &boxes, &other, ray);
+                assert_eq!(sweeps, want, "sweeps, {ray:?}, round {round}");
+            }
+        }
+    }
+
+    #[test]
+    fn fenwick_adds_suffixes() {
+        let mut f = Fenwick::new(5);
+        f.add_from(0, 3);
+        f.add_from(2, -1);
+        f.add_from(5, 100); // past the end: no position
+        assert_eq!((0..5).map(|i| f.at(i)).collect::<Vec<_>>(), [3, 3, 2, 2, 2]);
     }
 }

@@ -40,6 +40,7 @@ mod composite;
 mod construct;
 mod error;
 mod fast;
+mod interval_set;
 mod op;
 mod reference;
 
@@ -58,7 +59,7 @@ use topology::PolygonSet2;
 pub struct Timings {
     /// Coordinate validation and the closure check of both operands.
     pub validate: f64,
-    /// Edge boxes and the sort-and-sweep broad phase (0 on the reference
+    /// Edge boxes and the sweep-line broad phase (0 on the reference
     /// path).
     pub broad_phase: f64,
     /// `X11` on the candidate pairs (every pair on the reference path).
@@ -94,11 +95,13 @@ pub struct BooleanOutput {
 /// [`BooleanError::InvalidInput`] and nothing else happens.
 ///
 /// Cost `O((n + k) log n)` for `n` edges and `k` candidate pairs of the
-/// broad phase: a sort-and-sweep over edge boxes prunes every pair whose
-/// `X11` is provably 0, `X11` runs on the rest in parallel, and the winding
-/// numbers `X02`/`X20` come from one ray cast per connected component,
-/// propagated along edges. The result is bit for bit that of
-/// [`boolean_reference`], whatever the thread count.
+/// broad phase, whatever the input: a sweep over edge boxes (with an
+/// interval set over y when many boxes share an x range) prunes every pair
+/// whose `X11` is provably 0, `X11` runs on the rest in parallel, and the
+/// winding numbers `X02`/`X20` come from one ray cast per connected
+/// component (by a sweep in y over a Fenwick tree when many components
+/// share an x range), propagated along edges. The result is bit for bit
+/// that of [`boolean_reference`], whatever the thread count.
 pub fn boolean(
     a: &PolygonSet2,
     b: &PolygonSet2,

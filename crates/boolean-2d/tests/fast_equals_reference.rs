@@ -162,3 +162,114 @@ fn many_components_and_long_edges() {
     ]);
     agree(&a, &b).unwrap();
 }
+
+// The adversarial families of a sort-and-sweep broad phase (many boxes
+// sharing an x range without overlapping in y) and of per-component ray
+// casts (many components in one column). Large enough that the fast path
+// abandons its plain active lists for the interval sets over y and the
+// Fenwick-tree ray casts, small enough for the quadratic reference.
+
+/// A comb of `teeth` teeth `[1, w] x [2i, 2i + 1/2]` on the spine `[0, 1]`,
+/// counter-clockwise; with `mirrored`, its mirror image `x -> w + 2 - x`
+/// shifted up by `shift` (spine on the right). Shift 1: interleaved teeth
+/// that never touch; 1/2: teeth touching along whole edges; 1/4: teeth
+/// overlapping (crossings at every tooth tip).
+fn comb(teeth: usize, w: f64, mirrored: bool, shift: f64) -> Vec<[f64; 2]> {
+    let mut pts = vec![[0.0, 0.0]];
+    for i in 0..teeth {
+        let y = 2.0 * i as f64;
+        pts.extend_from_slice(&[[w, y], [w, y + 0.5], [1.0, y + 0.5], [1.0, y + 2.0]]);
+    }
+    pts.truncate(pts.len() - 2);
+    pts.push([0.0, 2.0 * teeth as f64 - 1.5]);
+    if mirrored {
+        pts = pts
+            .iter()
+            .rev()
+            .map(|p| [w + 2.0 - p[0], p[1] + shift])
+            .collect();
+    }
+    pts
+}
+
+/// The square `[x, x + w] x [y, y + h]`, counter-clockwise from its lower
+/// left corner (the vertex that gets the component's ray cast).
+fn rect(x: f64, y: f64, w: f64, h: f64) -> Vec<[f64; 2]> {
+    vec![[x, y], [x + w, y], [x + w, y + h], [x, y + h]]
+}
+
+#[test]
+fn interleaved_combs() {
+    for shift in [1.0, 0.5, 0.25] {
+        let a = set_from(&[(comb(60, 50.0, false, 0.0), 1)]);
+        let b = set_from(&[(comb(60, 50.0, true, shift), 1)]);
+        agree(&a, &b).unwrap();
+    }
+    // Teeth of length 1 (the spine's x range is the teeth's): multiplicity
+    // 2 against an inside-out comb.
+    let a = set_from(&[(comb(60, 2.0, false, 0.0), 2)]);
+    let b = set_from(&[(comb(60, 2.0, true, 1.0), -1)]);
+    agree(&a, &b).unwrap();
+}
+
+#[test]
+fn columns_of_squares() {
+    // A: unit squares stacked with unit gaps. B: the same column shifted in
+    // x by `dx` (0: exact ties in x; -1/2 and 1/2: the corners of one lie
+    // inside the other's edges) with squares filling B's gaps exactly
+    // (touching A along whole edges), leaving a margin, or overlapping A.
+    for dx in [0.0, -0.5, 0.5] {
+        for (lo, hi) in [(1.0, 2.0), (1.25, 1.75), (0.5, 1.5)] {
+            let a: Vec<_> = (0..64)
+                .map(|i| (rect(0.0, 2.0 * f64::from(i), 1.0, 1.0), 1))
+                .collect();
+            let b: Vec<_> = (0..64)
+                .map(|i| (rect(dx, 2.0 * f64::from(i) + lo, 1.0, hi - lo), 1))
+                .collect();
+            agree(&set_from(&a), &set_from(&b)).unwrap();
+        }
+    }
+    // Components with different multiplicities and orientations, one
+    // column of tiny squares inside a big one of the other operand.
+    let a: Vec<_> = (0..96)
+        .map(|i| {
+            let m = [1, -1, 2][i % 3];
+            (rect(0.0, i as f64, 0.5, 0.5), m)
+        })
+        .collect();
+    let b = vec![
+        (rect(-1.0, -1.0, 3.0, 100.0), 1),
+        (rect(0.25, -2.0, 0.125, 200.0), 1),
+    ];
+    agree(&set_from(&a), &set_from(&b)).unwrap();
+}
+
+#[test]
+fn grids_of_squares() {
+    let side = 16;
+    let cells = |parity: usize, shrink: f64, offset: f64| {
+        (0..side * side)
+            .map(move |c| (c / side, c % side))
+            .filter(move |(i, j)| (i + j) % 2 == parity)
+            .map(move |(i, j)| {
+                let (x, y) = (i as f64 + shrink + offset, j as f64 + shrink + offset);
+                (rect(x, y, 1.0 - 2.0 * shrink, 1.0 - 2.0 * shrink), 1)
+            })
+            .collect::<Vec<_>>()
+    };
+    // A checkerboard against the other colour: touching at every edge and
+    // corner (integer grid, exact ties), and shrunk apart.
+    for shrink in [0.0, 0.25] {
+        agree(
+            &set_from(&cells(0, shrink, 0.0)),
+            &set_from(&cells(1, shrink, 0.0)),
+        )
+        .unwrap();
+    }
+    // Against the same colour shifted by half a cell: crossings everywhere.
+    agree(
+        &set_from(&cells(0, 0.0, 0.0)),
+        &set_from(&cells(0, 0.0, 0.5)),
+    )
+    .unwrap();
+}
