@@ -1,7 +1,9 @@
 //! Criterion benchmarks of the 3D Boolean beside `manifold-rust`: sphere
 //! minus a sphere shifted by half its radius (issue 3), UV spheres of 2k
-//! to 200k triangles per operand, Umbra's triangle-mesh and polygon-mesh
-//! variants and `manifold-rust` 0.19 on identical coordinates. Larger sizes
+//! to 200k triangles per operand, Umbra's triangle-mesh variant, its
+//! polygon-mesh variant on the same triangles (`umbra-poly`) and on the
+//! quadrilateral spheres they split (`umbra-quads`, the same vertices), and
+//! `manifold-rust` 0.19 on the triangles. Larger sizes
 //! (to 2M), one-thread runs and peak memory are in the `perf-table-3d`
 //! binary.
 //!
@@ -13,7 +15,9 @@
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
 use std::time::Duration;
-use umbra_benches::solid::{sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraTriangles};
+use umbra_benches::solid::{
+    sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
+};
 
 fn bench_peer<P: SolidPeer>(
     group: &mut criterion::BenchmarkGroup<'_, criterion::measurement::WallTime>,
@@ -39,6 +43,7 @@ fn spheres(c: &mut Criterion) {
         group.measurement_time(Duration::from_secs(if size >= 200_000 { 8 } else { 3 }));
         bench_peer(&mut group, &UmbraTriangles, size);
         bench_peer(&mut group, &UmbraPolygons, size);
+        bench_peer(&mut group, &UmbraQuads, size);
         bench_peer(&mut group, &ManifoldRust, size);
     }
     group.finish();

@@ -1,8 +1,12 @@
 //! 3D inputs and peers: sphere minus a sphere shifted by half its radius
 //! (the 3D bench of issue 3), as UV spheres in two variants (triangles;
 //! quadrilaterals with triangle fans at the poles), run on Umbra's
-//! triangle-mesh and polygon-mesh Booleans and on `manifold-rust` 0.19 (a
-//! Rust port of Manifold) with identical coordinates.
+//! triangle-mesh Boolean (triangles), its polygon-mesh Boolean (on the
+//! triangles, and on the quadrilaterals) and on `manifold-rust` 0.19 (a
+//! Rust port of Manifold) with identical coordinates. Every peer is handed
+//! the triangle spheres; the quadrilateral peer merges them back into the
+//! quadrilaterals they split ([`quads_of_uv_sphere`]), so that all run on
+//! the same vertices and the same surface.
 
 use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
 use manifold_rust::manifold::Manifold;
@@ -72,6 +76,33 @@ pub fn uv_sphere_quads(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> Polygon
         }
     }
     PolygonMesh::new(t.vertices, f)
+}
+
+/// The quadrilateral form of a sphere made by [`uv_sphere`]: each band's
+/// triangle pair `(a, c, d)`, `(a, d, b)` merged back into the
+/// quadrilateral `(a, c, d, b)` it splits, the pole triangles kept, the
+/// vertices shared. This is [`uv_sphere_quads`] of the same sphere (tested);
+/// a triangle pair not of that form is kept as two triangles.
+pub fn quads_of_uv_sphere(m: &TriangleMesh) -> PolygonMesh {
+    let south = (m.vertices.len() as u32).saturating_sub(1);
+    let poles = m
+        .triangles
+        .iter()
+        .take_while(|t| t[0] == 0 || t[0] == south)
+        .count();
+    let mut f: Vec<Facet> = m.triangles[..poles]
+        .iter()
+        .map(|t| Facet::from_loop(t))
+        .collect();
+    for pair in m.triangles[poles..].chunks(2) {
+        match pair {
+            [[a, c, d], [a2, d2, b]] if a == a2 && d == d2 => {
+                f.push(Facet::from_loop(&[*a, *c, *d, *b]));
+            }
+            _ => f.extend(pair.iter().map(|t| Facet::from_loop(t))),
+        }
+    }
+    PolygonMesh::new(m.vertices.clone(), f)
 }
 
 /// Slices and stacks giving about `triangles` triangles (`slices = 2
@@ -232,6 +263,29 @@ impl SolidPeer for UmbraPolygons {
     }
 }
 
+/// Umbra's polygon-mesh variant (`boolean_mesh`) on the quadrilateral
+/// spheres ([`quads_of_uv_sphere`] of the triangle operands: the same
+/// vertices, half as many facets away from the poles).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct UmbraQuads;
+
+impl SolidPeer for UmbraQuads {
+    type Input = (PolygonMesh, PolygonMesh);
+    type Output = Option<PolygonMesh>;
+    fn name(&self) -> &'static str {
+        "umbra-quads"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        (quads_of_uv_sphere(a), quads_of_uv_sphere(b))
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        UmbraPolygons.difference(input)
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        UmbraPolygons.stats(out)
+    }
+}
+
 /// `manifold-rust` 0.19 (feature `parallel`): `Manifold::from_mesh_gl64`
 /// of each operand (not timed), then `difference` (timed; the Boolean is
 /// evaluated eagerly).
@@ -296,14 +350,39 @@ mod tests {
     }
 
     #[test]
+    fn merged_triangles_are_the_quad_spheres() {
+        for size in [2000, 20_000] {
+            let (a, b) = sphere_pair(size);
+            let (qa, qb) = sphere_pair_quads(size);
+            let (ma, mb) = (quads_of_uv_sphere(&a), quads_of_uv_sphere(&b));
+            assert_eq!(ma.vertices, qa.vertices);
+            assert_eq!(ma.facets, qa.facets);
+            assert_eq!(mb.facets, qb.facets);
+            let quads = ma.facets.iter().filter(|f| f.half_edges.len() == 4);
+            let (s, t) = sphere_resolution(size);
+            assert_eq!(quads.count(), (s * (t - 2)) as usize);
+            assert_eq!(ma.facets.len(), a.triangles.len() - (s * (t - 2)) as usize);
+        }
+    }
+
+    #[test]
     fn every_peer_gets_the_same_difference() {
         let (a, b) = sphere_pair(2000);
         let want = analytic_difference_volume();
         let u = UmbraTriangles.stats(&UmbraTriangles.difference(&UmbraTriangles.prepare(&a, &b)));
         let p = UmbraPolygons.stats(&UmbraPolygons.difference(&UmbraPolygons.prepare(&a, &b)));
+        let q = UmbraQuads.stats(&UmbraQuads.difference(&UmbraQuads.prepare(&a, &b)));
         let m = ManifoldRust.stats(&ManifoldRust.difference(&ManifoldRust.prepare(&a, &b)));
-        assert!(u.valid && p.valid && m.valid, "{u:?} {p:?} {m:?}");
+        assert!(
+            u.valid && p.valid && q.valid && m.valid,
+            "{u:?} {p:?} {q:?} {m:?}"
+        );
         assert!((u.volume - p.volume).abs() < 1e-12, "{u:?} {p:?}");
+        // The quadrilaterals are the triangle pairs' union: nearly the same
+        // surface (each quadrilateral is planar up to rounding), fewer
+        // facets.
+        assert!((u.volume - q.volume).abs() < 1e-9, "{u:?} {q:?}");
+        assert!(q.facets < p.facets, "{p:?} {q:?}");
         assert!((u.volume - m.volume).abs() < 1e-9, "{u:?} {m:?}");
         assert!((u.volume - want).abs() < 0.05 * want, "{u:?} vs {want}");
     }

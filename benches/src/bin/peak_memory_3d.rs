@@ -7,7 +7,9 @@
 //! allocations, so timings are taken without it.
 
 use peak_alloc::PeakAlloc;
-use umbra_benches::solid::{sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraTriangles};
+use umbra_benches::solid::{
+    sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
+};
 
 #[global_allocator]
 static PEAK: PeakAlloc = PeakAlloc;
@@ -26,12 +28,13 @@ fn measure<P: SolidPeer>(peer: &P, size: usize) {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (Some(peer), Some(size)) = (args.first(), args.get(1).and_then(|s| s.parse().ok())) else {
-        eprintln!("usage: peak-memory-3d umbra-tri|umbra-poly|manifold-rust TRIANGLES");
+        eprintln!("usage: peak-memory-3d umbra-tri|umbra-poly|umbra-quads|manifold-rust TRIANGLES");
         std::process::exit(2);
     };
     match peer.as_str() {
         "umbra-tri" => measure(&UmbraTriangles, size),
         "umbra-poly" => measure(&UmbraPolygons, size),
+        "umbra-quads" => measure(&UmbraQuads, size),
         "manifold-rust" => measure(&ManifoldRust, size),
         other => {
             eprintln!("unknown peer {other}");

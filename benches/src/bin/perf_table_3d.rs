@@ -1,7 +1,9 @@
 //! `perf-table-3d`: sphere minus a sphere shifted by half its radius (issue
-//! 3), Umbra's triangle-mesh and polygon-mesh variants beside
-//! `manifold-rust` 0.19 on identical UV spheres, with one thread and all
-//! threads, printing a markdown table for `docs/performance.md`: best time
+//! 3), Umbra's triangle-mesh variant, its polygon-mesh variant on the same
+//! triangles (`umbra-poly`) and on the quadrilateral spheres the triangles
+//! split (`umbra-quads`: the same vertices, UV quadrilaterals with triangle
+//! fans at the poles), beside `manifold-rust` 0.19 on the triangles, with
+//! one thread and all threads, printing a markdown table for `docs/performance.md`: best time
 //! of the difference alone, peak extra resident memory during it, result
 //! size, volume against the analytic lens volume, validity, and ratios.
 //!
@@ -22,10 +24,12 @@
 use std::process::Command;
 use std::time::Instant;
 use umbra_benches::solid::{
-    analytic_difference_volume, sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraTriangles,
+    analytic_difference_volume, sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads,
+    UmbraTriangles,
 };
 
-const PEERS: [&str; 3] = ["umbra-tri", "umbra-poly", "manifold-rust"];
+/// The peers, in table order (`cells` below indexes them).
+const PEERS: [&str; 4] = ["umbra-tri", "umbra-poly", "umbra-quads", "manifold-rust"];
 
 fn status_kb(field: &str) -> Option<u64> {
     let text = std::fs::read_to_string("/proc/self/status").ok()?;
@@ -65,6 +69,7 @@ fn child(args: &[String]) {
     match peer {
         "umbra-tri" => child_run(&UmbraTriangles, size, runs),
         "umbra-poly" => child_run(&UmbraPolygons, size, runs),
+        "umbra-quads" => child_run(&UmbraQuads, size, runs),
         "manifold-rust" => child_run(&ManifoldRust, size, runs),
         other => panic!("unknown peer {other}"),
     }
@@ -151,8 +156,8 @@ fn main() {
     println!(
         "<!-- perf-table-3d | {cores} logical cores | best of 3 runs (1 run at >= 1M triangles) | peak = VmHWM - VmRSS before the Boolean -->\n"
     );
-    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | manifold-rust ms | manifold / umbra-tri | heap peak MB (u-tri, u-poly, manifold) | RSS growth MB (u-tri, manifold) | umbra volume err | manifold volume err | valid (u-tri, u-poly, manifold) |");
-    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
+    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | umbra-quads ms | manifold-rust ms | manifold / umbra-tri | manifold / umbra-quads | heap peak MB (u-tri, u-poly, u-quads, manifold) | RSS growth MB (u-tri, u-quads, manifold) | umbra volume err (tri, quads) | manifold volume err | valid (u-tri, u-poly, u-quads, manifold) |");
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
     for &size in &sizes {
         for &t in &threads {
             let cells: Vec<Option<Cell>> = PEERS.iter().map(|p| run_cell(p, size, t)).collect();
@@ -170,7 +175,7 @@ fn main() {
                     format!("{:+.2e}", (c.volume - want) / want)
                 })
             };
-            let ratio = match (&cells[0], &cells[2]) {
+            let ratio = |u: &Option<Cell>, m: &Option<Cell>| match (u, m) {
                 (Some(u), Some(m)) => format!("{:.2}", m.ms / u.ms),
                 _ => "—".into(),
             };
@@ -183,7 +188,7 @@ fn main() {
                 })
                 .collect();
             println!(
-                "| {size} | {} | {} | {} | {} | {ratio} | {}, {}, {} | {}, {} | {} | {} | {} |",
+                "| {size} | {} | {} | {} | {} | {} | {} | {} | {}, {}, {}, {} | {}, {}, {} | {}, {} | {} | {} |",
                 if t == 0 {
                     format!("all ({cores})")
                 } else {
@@ -192,13 +197,19 @@ fn main() {
                 ms(&cells[0]),
                 ms(&cells[1]),
                 ms(&cells[2]),
+                ms(&cells[3]),
+                ratio(&cells[0], &cells[3]),
+                ratio(&cells[2], &cells[3]),
                 heap(&cells[0]),
                 heap(&cells[1]),
                 heap(&cells[2]),
+                heap(&cells[3]),
                 mb(&cells[0]),
                 mb(&cells[2]),
+                mb(&cells[3]),
                 err(&cells[0]),
                 err(&cells[2]),
+                err(&cells[3]),
                 valid.join(", ")
             );
         }

@@ -6,7 +6,8 @@
 //! `o`, `g`, `s`, `usemtl`, `mtllib`, `l`, `p`, ...) and `#` comments are
 //! ignored. OFF: the `OFF` header (or `COFF`/`NOFF`/`CNOFF`), optional `#`
 //! comments, the counts line, the vertices and the faces (`k i1 .. ik`,
-//! 0-based, any trailing colour values ignored).
+//! 0-based, any trailing colour values ignored). Text with a control
+//! character other than whitespace is rejected as binary data.
 //!
 //! A reader only parses: indices out of range are left in the mesh so that
 //! [`topology::PolygonMesh::check_topology`] names them (dangling index,
@@ -86,9 +87,37 @@ fn shorten(s: &str) -> String {
     }
 }
 
+/// Rejects text holding an ASCII control character other than whitespace
+/// (tab, line feed, vertical tab, form feed, carriage return): such a file
+/// is binary data (a binary STL or PLY under another name, say) that
+/// happens to be valid UTF-8, and reading only the lines that look like
+/// statements would turn it into a mesh of whatever they say.
+fn reject_binary(text: &str, file: &str, format: &'static str) -> Result<(), UmbraError> {
+    let bad = |b: u8| (b < 0x20 && !matches!(b, b'\t' | b'\n' | 0x0b | 0x0c | b'\r')) || b == 0x7f;
+    match text.bytes().position(bad) {
+        None => Ok(()),
+        Some(at) => {
+            let line = 1 + text.as_bytes()[..at]
+                .iter()
+                .filter(|&&b| b == b'\n')
+                .count();
+            Err(malformed(
+                file,
+                format,
+                line,
+                format!(
+                    "binary data (control byte 0x{:02x}), not a text {format} file",
+                    text.as_bytes()[at]
+                ),
+            ))
+        }
+    }
+}
+
 /// Parses OBJ text into a polygon mesh (unchecked; see the module docs).
 pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
     const F: &str = "OBJ";
+    reject_binary(text, file, F)?;
     let mut vertices: Vec<Point3> = Vec::new();
     let mut facets: Vec<Facet> = Vec::new();
     let mut loop_: Vec<u32> = Vec::new();
@@ -178,6 +207,7 @@ pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
 /// Parses OFF text into a polygon mesh (unchecked; see the module docs).
 pub fn parse_off(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
     const F: &str = "OFF";
+    reject_binary(text, file, F)?;
     // Tokens with their line numbers, comments removed.
     let mut lines = text
         .lines()
@@ -439,6 +469,14 @@ mod tests {
             ("v 0 0 0\nf 1 -5 1\n", "out of range"),
             ("v 0 0 0\nf 1 a 1\n", "not a vertex reference"),
             ("", "empty"),
+            (
+                "v 0 0 0\n\u{0}\u{1}\u{2}\n",
+                "line 2: binary data (control byte 0x00)",
+            ),
+            (
+                "v 0 0 0 \u{7f}\n",
+                "line 1: binary data (control byte 0x7f)",
+            ),
         ];
         for (text, want) in obj {
             let e = parse_obj(text, "m.obj").unwrap_err().to_string();
@@ -461,6 +499,10 @@ mod tests {
                 "not a number",
             ),
             ("OFF\n99999999999 1 0\n", "too large"),
+            (
+                "OFF\n3 1 0\n\u{1b}[0m\n",
+                "line 3: binary data (control byte 0x1b)",
+            ),
         ];
         for (text, want) in off {
             let e = parse_off(text, "m.off").unwrap_err().to_string();
@@ -469,6 +511,12 @@ mod tests {
                 "{text:?}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn whitespace_controls_are_text() {
+        let m = parse_obj("v 0\t0 0\r\nv 1 0 0\x0c\nv 0 1 0\x0b\nf 1 2 3\n", "w.obj").unwrap();
+        assert_eq!((m.vertices.len(), m.facets.len()), (3, 1));
     }
 
     #[test]

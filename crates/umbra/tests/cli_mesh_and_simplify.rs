@@ -163,7 +163,17 @@ fn cube_booleans_in_both_variants_and_formats() {
             assert_eq!(r["topologically_valid"], true);
             assert_eq!(r["output"]["signed_volume"], want);
             assert!(r["timings_ms"]["total"].as_f64().unwrap() >= 0.0);
-            assert_eq!(r["intersections"], 6);
+            // The six edges of each cube that cross the other cube's faces;
+            // the triangle variant runs on the triangulated quads, whose
+            // diagonals add crossings of their own.
+            let hits = r["intersections"].as_u64().unwrap();
+            if tri {
+                assert_eq!(r["variant"], "triangle mesh");
+                assert!(hits >= 6, "{hits}");
+            } else {
+                assert_eq!(r["variant"], "polygon mesh");
+                assert_eq!(hits, 6);
+            }
         }
     }
     // A op A: union and intersection keep the volume, difference empties.
@@ -180,6 +190,94 @@ fn cube_booleans_in_both_variants_and_formats() {
         assert!(o.status.success(), "{}", stderr(&o));
         assert_eq!(volume(&out), want, "A {op} A");
     }
+}
+
+/// OBJ text of vertices and faces (1-based references).
+fn obj_text(v: &[[f64; 3]], f: &[Vec<usize>]) -> String {
+    let mut text = String::new();
+    for p in v {
+        text += &format!("v {} {} {}\n", p[0], p[1], p[2]);
+    }
+    for q in f {
+        text += "f";
+        for k in q {
+            text += &format!(" {}", k + 1);
+        }
+        text += "\n";
+    }
+    text
+}
+
+#[test]
+fn triangulate_runs_the_triangle_variant_on_quad_input() {
+    let dir = temp_dir("tri");
+    let a = examples().join("cube.obj");
+    let b = examples().join("cube_shifted.off");
+    assert!(read_mesh(&a).1.iter().all(|f| f.len() == 4));
+    assert!(read_mesh(&b).1.iter().all(|f| f.len() == 4));
+    let run = |op: &str, x: &Path, y: &Path, tag: &str, tri: bool| {
+        let out = dir.join(format!("{op}-{tag}.obj"));
+        let report = dir.join(format!("{op}-{tag}.json"));
+        let mut args = vec![
+            "boolean".to_string(),
+            op.to_string(),
+            x.display().to_string(),
+            y.display().to_string(),
+            "-o".into(),
+            out.display().to_string(),
+            "--report".into(),
+            report.display().to_string(),
+        ];
+        if tri {
+            args.push("--triangulate".into());
+        }
+        let o = umbra(&args);
+        assert!(o.status.success(), "{op} {tag}: {}", stderr(&o));
+        (out, json(&report))
+    };
+    for (op, want) in [("union", 15.0), ("intersection", 1.0), ("difference", 7.0)] {
+        // Without --triangulate the polygon variant keeps quads.
+        let (out, r) = run(op, &a, &b, "poly", false);
+        assert_eq!(r["variant"], "polygon mesh");
+        assert_eq!(r["inputs_triangulated"]["a"], false);
+        assert!(read_mesh(&out).1.iter().any(|f| f.len() == 4), "{op}");
+        // With it, the quads are triangulated and the triangle variant
+        // runs: triangles only, closed, the exact volume.
+        let (out, r) = run(op, &a, &b, "tri", true);
+        assert_eq!(r["variant"], "triangle mesh", "{op}");
+        assert_eq!(r["inputs_triangulated"]["a"], true);
+        assert_eq!(r["inputs_triangulated"]["b"], true);
+        assert!(r["timings_ms"]["triangulate_inputs"].as_f64().unwrap() >= 0.0);
+        assert!(
+            r["timings_ms"]["total"].as_f64().unwrap()
+                >= r["timings_ms"]["triangulate_inputs"].as_f64().unwrap()
+        );
+        let (_, faces) = read_mesh(&out);
+        assert!(faces.iter().all(|f| f.len() == 3), "{op}");
+        assert_eq!(r["output"]["facets"], faces.len());
+        assert!(closed(&out), "{op}");
+        assert_eq!(volume(&out), want, "{op}");
+        assert_eq!(r["topologically_valid"], true);
+        // The result is a valid solid: 2-manifold, no self-intersection.
+        let o = umbra(["check", out.to_str().unwrap(), "--json"]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let c: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(c["two_manifold"], true, "{op}");
+        assert_eq!(c["self_intersecting_facet_pairs"], 0, "{op}");
+        assert_eq!(c["signed_volume"], want, "{op}");
+    }
+    // Triangle operands go to the triangle variant as they are.
+    let (v, f) = read_mesh(&a);
+    let tris: Vec<Vec<usize>> = f
+        .iter()
+        .flat_map(|q| [vec![q[0], q[1], q[2]], vec![q[0], q[2], q[3]]])
+        .collect();
+    let ta = write(&dir, "cube_tri.obj", &obj_text(&v, &tris));
+    let (out, r) = run("union", &ta, &ta, "self", true);
+    assert_eq!(r["variant"], "triangle mesh");
+    assert_eq!(r["inputs_triangulated"]["a"], false);
+    assert_eq!(r["inputs_triangulated"]["b"], false);
+    assert_eq!(volume(&out), 8.0);
 }
 
 #[test]
@@ -206,18 +304,7 @@ fn check_reports_manifold_self_intersections_and_volume() {
         f2.into_iter()
             .map(|q| q.into_iter().map(|k| k + n).collect::<Vec<_>>()),
     );
-    let mut text = String::new();
-    for p in &v {
-        text += &format!("v {} {} {}\n", p[0], p[1], p[2]);
-    }
-    for q in &f {
-        text += "f";
-        for k in q {
-            text += &format!(" {}", k + 1);
-        }
-        text += "\n";
-    }
-    let both = write(&dir, "both.obj", &text);
+    let both = write(&dir, "both.obj", &obj_text(&v, &f));
     let o = umbra(["check", both.to_str().unwrap(), "--json"]);
     assert!(o.status.success(), "{}", stderr(&o));
     let r: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
@@ -234,6 +321,7 @@ fn check_reports_manifold_self_intersections_and_volume() {
 fn bad_meshes_exit_1_naming_file_and_constraint() {
     let dir = temp_dir("bad");
     let good = examples().join("cube.obj");
+    // (file, contents, a phrase the one-line message must hold).
     let cases = [
         (
             "open.off",
@@ -245,21 +333,62 @@ fn bad_meshes_exit_1_naming_file_and_constraint() {
             "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 9\n",
             "9",
         ),
+        // OBJ reference 9 is vertex 8 counted from 0, of 3.
+        (
+            "dangling.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 9\n",
+            "dangling index",
+        ),
+        (
+            "dangling_relative.obj",
+            "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 -7\n",
+            "line 5: vertex reference -7 is out of range",
+        ),
         (
             "nan.obj",
             "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n",
             "NaN",
         ),
         (
+            "nan_spelled.obj",
+            "v 0 0 0\nv 1 NaN 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n",
+            "y coordinate NaN is not finite",
+        ),
+        (
             "inf.obj",
             "v 0 0 0\nv inf 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 2\n",
             "not finite",
         ),
-        ("truncated.off", "OFF\n8 6 0\n0 0 0\n1 0 0\n", "truncated"),
+        (
+            "truncated.off",
+            "OFF\n8 6 0\n0 0 0\n1 0 0\n",
+            "truncated: expected 8 vertices, found 2",
+        ),
+        (
+            "truncated_faces.off",
+            "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n",
+            "truncated: expected 2 faces, found 1",
+        ),
         ("garbage.obj", "v 1 2 three\n", "not a number"),
         ("empty.off", "", "empty"),
-        ("binary.obj", "v 0 0 0\n\u{0}\u{1}\u{2}\n", ""),
+        // Valid UTF-8 with control bytes: binary data, not an OBJ whose
+        // unknown statements could be skipped.
+        (
+            "binary.obj",
+            "v 0 0 0\n\u{0}\u{1}\u{2}\n",
+            "line 2: binary data (control byte 0x00)",
+        ),
     ];
+    let one_line_naming = |o: &Output, name: &str, want: &str| {
+        let e = stderr(o);
+        assert_eq!(o.status.code(), Some(1), "{name}: {e}");
+        assert!(e.contains(name) && e.contains(want), "{name}: {e}");
+        assert_eq!(e.trim().lines().count(), 1, "{name}: {e}");
+        assert!(
+            !e.contains("internal error") && !e.contains("panicked"),
+            "{name}: {e}"
+        );
+    };
     for (name, text, want) in cases {
         let bad = write(&dir, name, text);
         let out = dir.join("out.obj");
@@ -272,24 +401,12 @@ fn bad_meshes_exit_1_naming_file_and_constraint() {
                 "-o",
                 out.to_str().unwrap(),
             ]);
-            let e = stderr(&o);
-            if name == "binary.obj" {
-                // Not a mesh format error but a valid-parse of nothing
-                // useful: it must still not panic.
-                assert!(!e.contains("internal error"), "{e}");
-                continue;
-            }
-            assert_eq!(o.status.code(), Some(1), "{name}: {e}");
-            assert!(e.contains(name) && e.contains(want), "{name}: {e}");
-            assert_eq!(e.trim().lines().count(), 1, "{e}");
+            one_line_naming(&o, name, want);
         }
         let o = umbra(["check", bad.to_str().unwrap()]);
-        assert!(o.status.code() != Some(0) || name == "binary.obj", "{name}");
-        assert!(
-            !stderr(&o).contains("internal error"),
-            "{name}: {}",
-            stderr(&o)
-        );
+        one_line_naming(&o, name, want);
+        let o = umbra(["check", bad.to_str().unwrap(), "--json"]);
+        one_line_naming(&o, name, want);
     }
     let missing = dir.join("missing.off");
     let o = umbra(["check", missing.to_str().unwrap()]);

@@ -13,7 +13,9 @@
 //! Boolean of chapter 4 by default and through simplification (chapter 6,
 //! which also resolves self-intersecting input and offers `xor`) with
 //! `--via simplify`; 3D Booleans run the polygon-mesh variant, or the
-//! triangle-mesh variant with `--triangulate` (section 4.8).
+//! triangle-mesh variant with `--triangulate` (section 4.8; operands that
+//! are not triangle meshes are triangulated by internal edges first). The
+//! report's `variant` names the variant that ran.
 //!
 //! Exit codes: 0 success, 1 bad input (a one-line message on stderr naming
 //! the file and the problem), 2 usage error (from clap).
@@ -68,8 +70,9 @@ enum Command {
         /// and simplifies (chapter 6: resolves self-intersections).
         #[arg(long, value_enum, default_value = "basic")]
         via: Via,
-        /// 3D: output triangles (the triangle-mesh variant, section 4.8)
-        /// instead of polygon facets.
+        /// 3D: run the triangle-mesh variant (section 4.8) instead of the
+        /// polygon-mesh one: operands with other facets are triangulated by
+        /// internal edges first, and the output is triangles.
         #[arg(long)]
         triangulate: bool,
     },
@@ -607,7 +610,8 @@ fn run_simplify(
     Ok(ExitCode::SUCCESS)
 }
 
-/// `Some(triangles)` when every facet is one loop of three half-edges.
+/// `Some(triangles)` when every facet is one loop of three half-edges (the
+/// operand is already a triangle mesh).
 fn as_triangles(mesh: &PolygonMesh) -> Option<TriangleMesh> {
     let mut tris = Vec::with_capacity(mesh.facets.len());
     for f in &mesh.facets {
@@ -649,30 +653,33 @@ fn run_boolean_3d(
     };
     let mut timings = Map::new();
     let start = Instant::now();
-    let (mesh, intersections, variant) = match (triangulate, as_triangles(&a), as_triangles(&b)) {
-        (true, Some(ta), Some(tb)) => {
-            let out = boolean_triangles(&ta, &tb, op).map_err(err3)?;
-            (
-                out.mesh.to_polygon_mesh(),
-                out.intersections,
-                "triangle mesh",
-            )
-        }
-        (true, _, _) => {
-            let out = boolean_mesh(&a, &b, op).map_err(err3)?;
-            let t = Instant::now();
-            let tri = triangulate_mesh(&out.mesh);
-            timings.insert("triangulate".into(), json!(millis(t.elapsed())));
-            (
-                tri.to_polygon_mesh(),
-                out.intersections,
-                "polygon mesh, triangulated",
-            )
-        }
-        (false, _, _) => {
-            let out = boolean_mesh(&a, &b, op).map_err(err3)?;
-            (out.mesh, out.intersections, "polygon mesh")
-        }
+    // With --triangulate the triangle-mesh variant runs (section 4.8:
+    // triangles in, every retained facet triangulated by internal edges
+    // only). An operand with other facets is first triangulated the same
+    // way, which keeps it closed, so that variant runs whatever the input.
+    let (mesh, intersections, variant, triangulated) = if triangulate {
+        let t = Instant::now();
+        let ta = as_triangles(&a);
+        let tb = as_triangles(&b);
+        let triangulated = json!({ "a": ta.is_none(), "b": tb.is_none() });
+        let ta = ta.unwrap_or_else(|| triangulate_mesh(&a));
+        let tb = tb.unwrap_or_else(|| triangulate_mesh(&b));
+        timings.insert("triangulate_inputs".into(), json!(millis(t.elapsed())));
+        let out = boolean_triangles(&ta, &tb, op).map_err(err3)?;
+        (
+            out.mesh.to_polygon_mesh(),
+            out.intersections,
+            "triangle mesh",
+            triangulated,
+        )
+    } else {
+        let out = boolean_mesh(&a, &b, op).map_err(err3)?;
+        (
+            out.mesh,
+            out.intersections,
+            "polygon mesh",
+            json!({ "a": false, "b": false }),
+        )
     };
     let total = start.elapsed();
     timings.insert("total".into(), json!(millis(total)));
@@ -681,6 +688,7 @@ fn run_boolean_3d(
     let report_value = json!({
         "operation": op.name(),
         "variant": variant,
+        "inputs_triangulated": triangulated,
         "inputs": { "a": mesh_counts(a_path, &a), "b": mesh_counts(b_path, &b) },
         "output": mesh_counts(out_path, &mesh),
         "intersections": intersections,
