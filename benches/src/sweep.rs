@@ -1,29 +1,83 @@
 //! Inputs and peers for simplification (the bench of issue 4): Umbra's
 //! sweep (`simplify_2d`, chapters 6-7) beside `i_overlay` 9
 //! (`simplify_shape`, 32- and 64-bit engines) with the matching fill rule,
-//! and `geo` 0.33 where it has the operation (the union rows).
+//! `i_overlay`'s Boolean (the union of the two rings as subject and clip,
+//! with the matching fill rule) on the n-gon rows, and `geo` 0.33 where it
+//! has the operation (the n-gon union rows).
 //!
-//! Inputs: the rotated n-gon pair of Table 7.4 assembled into one set (its
-//! nonzero simplification is the union), random topological polygons of
-//! section 7.7 (cyclic sequences of random points in the unit disc, heavily
-//! self-intersecting), and i_overlay's kinds of stress input: two
-//! checkerboards offset by half a cell, a spiral strip against its rotated
-//! copy, and nested squares of alternating orientation.
+//! Inputs: the ten rotated n-gon pairs of Table 7.4 ([`TABLE_7_4`], the
+//! rows of the 2D Boolean bench) assembled into one set (its nonzero
+//! simplification is the union), random topological polygons of section
+//! 7.7 (cyclic sequences of seeded random points in the unit disc, heavily
+//! self-intersecting) by the nonzero rule and, at 1,000 vertices, by the
+//! even-odd and positive rules as well, and i_overlay's kinds of stress
+//! input: two checkerboards offset by half a cell, a spiral strip against
+//! its rotated copy, and nested squares of alternating orientation.
 
-use crate::{rotated_ngon_pair, Ring};
+use crate::{rotated_ngon_pair, Case, Ring, TABLE_7_4};
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon};
 use i_overlay::core::fill_rule::FillRule;
+use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::simplify::SimplifyShape;
-use simplify_2d::{simplify, FillRule as UmbraRule};
+use i_overlay::float::single::SingleFloatOverlay;
+use simplify_2d::{simplify, FillRule as UmbraRule, SimplifyError};
 use topology::PolygonSet2;
 
-/// A simplification row: named input rings and what a correct result is.
+/// The fill rules the table exercises, each with its counterpart in Umbra
+/// and in `i_overlay` (both count counter-clockwise loops as winding +1,
+/// so `Positive` means the same region in both).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum SweepRule {
+    /// Winding number other than zero.
+    NonZero,
+    /// Odd winding number.
+    EvenOdd,
+    /// Winding number greater than zero.
+    Positive,
+}
+
+impl SweepRule {
+    /// Umbra's fill rule.
+    pub fn umbra(self) -> UmbraRule {
+        match self {
+            SweepRule::NonZero => UmbraRule::NonZero,
+            SweepRule::EvenOdd => UmbraRule::EvenOdd,
+            SweepRule::Positive => UmbraRule::Positive,
+        }
+    }
+
+    /// `i_overlay`'s fill rule.
+    pub fn i_overlay(self) -> FillRule {
+        match self {
+            SweepRule::NonZero => FillRule::NonZero,
+            SweepRule::EvenOdd => FillRule::EvenOdd,
+            SweepRule::Positive => FillRule::Positive,
+        }
+    }
+
+    /// A short name for tables.
+    pub fn name(self) -> &'static str {
+        match self {
+            SweepRule::NonZero => "nonzero",
+            SweepRule::EvenOdd => "evenodd",
+            SweepRule::Positive => "positive",
+        }
+    }
+}
+
+/// A simplification row: named input rings, the fill rule and what a
+/// correct result is.
 #[derive(Clone, Debug)]
 pub struct SweepCase {
-    /// Row label.
+    /// Row label, unique over [`sweep_cases`].
     pub label: String,
-    /// The rings, all taken as directed loops (nonzero rule).
+    /// The fill rule of the simplification.
+    pub rule: SweepRule,
+    /// The rings, all taken as directed loops.
     pub rings: Vec<Ring>,
+    /// The Table 7.4 row when the input is a rotated n-gon pair (then
+    /// `rings` holds the two n-gons and the Boolean peers apply).
+    pub ngon: Option<Case>,
     /// The exact ring and vertex counts when known (the n-gon rows: one
     /// ring of `4n` vertices; nested squares: one ring per square).
     pub expected: Option<(usize, Option<usize>)>,
@@ -42,7 +96,9 @@ impl Rng {
     }
 }
 
-/// Section 7.7: `n` random points in the unit disc joined cyclically.
+/// Section 7.7: `n` random points in the unit disc joined cyclically,
+/// drawn from the splitmix64 stream of `seed` (the same seed gives the
+/// same polygon on every machine).
 pub fn random_topological_polygon(seed: u64, n: usize) -> Ring {
     let mut rng = Rng(seed);
     let mut out = Vec::with_capacity(n);
@@ -109,44 +165,73 @@ pub fn nested_squares(k: usize) -> Vec<Ring> {
         .collect()
 }
 
-/// The rows of the simplification table.
-pub fn sweep_cases(max_random: usize) -> Vec<SweepCase> {
-    let mut rows = Vec::new();
-    for (n, alpha) in [
-        (1000, 1e-5),
-        (5000, 1.581e-9),
-        (20000, 9.88e-7),
-        (20000, 1.581e-9),
-    ] {
-        let (a, b) = rotated_ngon_pair(n, alpha);
-        rows.push(SweepCase {
-            label: format!("n-gon union n={n} alpha={alpha:e}"),
-            rings: vec![a, b],
-            expected: Some((1, Some(4 * n))),
-        });
+/// The row of one Table 7.4 case: the two n-gons in one set, nonzero rule.
+pub fn ngon_case(case: Case) -> SweepCase {
+    let (a, b) = rotated_ngon_pair(case.n, case.alpha_deg);
+    SweepCase {
+        label: format!("n-gon union n={} alpha={:e}", case.n, case.alpha_deg),
+        rule: SweepRule::NonZero,
+        rings: vec![a, b],
+        ngon: Some(case),
+        expected: Some((1, Some(case.expected_vertices()))),
     }
+}
+
+/// The row of a random topological polygon of `n` vertices (seed `n`)
+/// simplified by `rule`; the label names the rule unless it is nonzero.
+pub fn random_case(n: usize, rule: SweepRule) -> SweepCase {
+    let label = match rule {
+        SweepRule::NonZero => format!("random polygon n={n}"),
+        _ => format!("random polygon n={n} {}", rule.name()),
+    };
+    SweepCase {
+        label,
+        rule,
+        rings: vec![random_topological_polygon(n as u64, n)],
+        ngon: None,
+        expected: None,
+    }
+}
+
+/// The checkerboard row: two 100 x 100 boards offset by half a cell.
+pub fn checkerboard_case() -> SweepCase {
+    SweepCase {
+        label: "checkerboards 2 x 100x100".into(),
+        rule: SweepRule::NonZero,
+        rings: checkerboards(100),
+        ngon: None,
+        expected: None,
+    }
+}
+
+/// The rows of the simplification table: every Table 7.4 row, random
+/// polygons of 100 to 5,000 vertices (those above `max_random` left out)
+/// by the nonzero rule, the 1,000-vertex one by the even-odd and positive
+/// rules too, and the three stress inputs.
+pub fn sweep_cases(max_random: usize) -> Vec<SweepCase> {
+    let mut rows: Vec<SweepCase> = TABLE_7_4.iter().map(|&c| ngon_case(c)).collect();
     for n in [100, 500, 1000, 2000, 5000] {
         if n <= max_random {
-            rows.push(SweepCase {
-                label: format!("random polygon n={n}"),
-                rings: vec![random_topological_polygon(n as u64, n)],
-                expected: None,
-            });
+            rows.push(random_case(n, SweepRule::NonZero));
         }
     }
-    rows.push(SweepCase {
-        label: "checkerboards 2 x 100x100".into(),
-        rings: checkerboards(100),
-        expected: None,
-    });
+    if 1000 <= max_random {
+        rows.push(random_case(1000, SweepRule::EvenOdd));
+        rows.push(random_case(1000, SweepRule::Positive));
+    }
+    rows.push(checkerboard_case());
     rows.push(SweepCase {
         label: "spirals 2 x 20000 v".into(),
+        rule: SweepRule::NonZero,
         rings: spirals(20000),
+        ngon: None,
         expected: None,
     });
     rows.push(SweepCase {
         label: "nested squares 1000".into(),
+        rule: SweepRule::NonZero,
         rings: nested_squares(1000),
+        ngon: None,
         expected: Some((1000, Some(4000))),
     });
     rows
@@ -159,6 +244,9 @@ pub struct SweepStats {
     pub rings: usize,
     /// Vertices over all rings.
     pub vertices: usize,
+    /// Ring edges of zero length (consecutive equal vertices, the closing
+    /// edge included); a result with exact expected counts has none.
+    pub zero_length_edges: usize,
     /// Sum of signed ring areas.
     pub area: f64,
 }
@@ -175,6 +263,13 @@ fn stats_of(rings: &[Ring]) -> SweepStats {
     SweepStats {
         rings: rings.len(),
         vertices: rings.iter().map(Vec::len).sum(),
+        zero_length_edges: rings
+            .iter()
+            .map(|r| {
+                let next = r.iter().skip(1).chain(r.first());
+                r.iter().zip(next).filter(|(p, q)| p == q).count()
+            })
+            .sum(),
         area: rings.iter().map(ring_area).sum(),
     }
 }
@@ -190,46 +285,46 @@ pub trait SweepPeer {
     /// Converts the rings (not timed); `None` when the peer has no such
     /// operation for this row.
     fn prepare(&self, case: &SweepCase) -> Option<Self::Input>;
-    /// Simplifies by the nonzero rule (timed).
+    /// Simplifies by the row's fill rule (timed).
     fn run(&self, input: &Self::Input) -> Self::Output;
-    /// Counts and area of the output (not timed).
-    fn stats(&self, out: &Self::Output) -> Option<SweepStats>;
+    /// Counts and area of the output (not timed), or why there is none.
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String>;
 }
 
-/// Umbra: `simplify_2d::simplify(set, FillRule::NonZero)`; rings traced
-/// from the output edges with `PolygonSet2::loops` (not timed).
+/// Umbra: `simplify_2d::simplify(set, rule)`; rings traced from the output
+/// edges with `PolygonSet2::loops` (not timed).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct UmbraSweep;
 
 impl SweepPeer for UmbraSweep {
-    type Input = PolygonSet2;
-    type Output = Option<PolygonSet2>;
+    type Input = (PolygonSet2, UmbraRule);
+    type Output = Result<PolygonSet2, SimplifyError>;
     fn name(&self) -> &'static str {
         "umbra"
     }
-    fn prepare(&self, case: &SweepCase) -> Option<PolygonSet2> {
+    fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
         let mut set = PolygonSet2::new();
         for r in &case.rings {
             set.add_loop(r);
         }
-        Some(set)
+        Some((set, case.rule.umbra()))
     }
-    fn run(&self, input: &PolygonSet2) -> Self::Output {
-        simplify(input, UmbraRule::NonZero).ok().map(|s| s.shape)
+    fn run(&self, input: &Self::Input) -> Self::Output {
+        simplify(&input.0, input.1).map(|s| s.shape)
     }
-    fn stats(&self, out: &Self::Output) -> Option<SweepStats> {
-        let set = out.as_ref()?;
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
+        let set = out.as_ref().map_err(|e| e.to_string())?;
         let rings: Vec<Ring> = set
             .loops()
             .iter()
             .map(|l| l.iter().map(|&v| set.vertex(v)).collect())
             .collect();
-        Some(stats_of(&rings))
+        Ok(stats_of(&rings))
     }
 }
 
-/// `i_overlay` 9 `simplify_shape(FillRule::NonZero)` with the default
-/// 32-bit engine, or the 64-bit one (`wide`).
+/// `i_overlay` 9 `simplify_shape(rule)` with the default 32-bit engine, or
+/// the 64-bit one (`wide`, `simplify_shape_as::<i64>`).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct IOverlaySweep {
     /// Use `simplify_shape_as::<i64>`.
@@ -237,7 +332,7 @@ pub struct IOverlaySweep {
 }
 
 impl SweepPeer for IOverlaySweep {
-    type Input = Vec<Vec<[f64; 2]>>;
+    type Input = (Vec<Vec<[f64; 2]>>, FillRule);
     type Output = Vec<Vec<Vec<[f64; 2]>>>;
     fn name(&self) -> &'static str {
         if self.wide {
@@ -247,23 +342,68 @@ impl SweepPeer for IOverlaySweep {
         }
     }
     fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
-        Some(case.rings.clone())
+        Some((case.rings.clone(), case.rule.i_overlay()))
     }
     fn run(&self, input: &Self::Input) -> Self::Output {
         if self.wide {
-            input.simplify_shape_as::<i64>(FillRule::NonZero)
+            input.0.simplify_shape_as::<i64>(input.1)
         } else {
-            input.simplify_shape(FillRule::NonZero)
+            input.0.simplify_shape(input.1)
         }
     }
-    fn stats(&self, out: &Self::Output) -> Option<SweepStats> {
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
         let rings: Vec<Ring> = out.iter().flatten().cloned().collect();
-        Some(stats_of(&rings))
+        Ok(stats_of(&rings))
     }
 }
 
-/// `geo` 0.33 `BooleanOps::union` of the two n-gons (only the n-gon rows:
-/// geo has no fill-rule simplification of a self-intersecting ring).
+/// `i_overlay` 9's Boolean with the matching fill rule on the n-gon rows:
+/// `SingleFloatOverlay::overlay` of the first n-gon (subject) and the
+/// second (clip) with `OverlayRule::Union` and the row's fill rule, on the
+/// default 32-bit engine or the 64-bit one (`wide`, `overlay_as::<i64>`).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct IOverlayBoolSweep {
+    /// Use `overlay_as::<i64>`.
+    pub wide: bool,
+}
+
+impl SweepPeer for IOverlayBoolSweep {
+    type Input = (Vec<Vec<[f64; 2]>>, Vec<Vec<[f64; 2]>>, FillRule);
+    type Output = Vec<Vec<Vec<[f64; 2]>>>;
+    fn name(&self) -> &'static str {
+        if self.wide {
+            "i_overlay-bool-i64"
+        } else {
+            "i_overlay-bool"
+        }
+    }
+    fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
+        (case.ngon.is_some() && case.rings.len() == 2).then(|| {
+            (
+                vec![case.rings[0].clone()],
+                vec![case.rings[1].clone()],
+                case.rule.i_overlay(),
+            )
+        })
+    }
+    fn run(&self, input: &Self::Input) -> Self::Output {
+        if self.wide {
+            input
+                .0
+                .overlay_as::<i64>(&input.1, OverlayRule::Union, input.2)
+        } else {
+            input.0.overlay(&input.1, OverlayRule::Union, input.2)
+        }
+    }
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
+        let rings: Vec<Ring> = out.iter().flatten().cloned().collect();
+        Ok(stats_of(&rings))
+    }
+}
+
+/// `geo` 0.33 `BooleanOps::union` of the two n-gons (only the n-gon rows,
+/// which are by the nonzero rule: geo has no fill-rule simplification of a
+/// self-intersecting ring).
 #[derive(Clone, Copy, Debug, Default)]
 pub struct GeoSweep;
 
@@ -282,13 +422,13 @@ impl SweepPeer for GeoSweep {
         "geo"
     }
     fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
-        (case.label.starts_with("n-gon") && case.rings.len() == 2)
+        (case.ngon.is_some() && case.rule == SweepRule::NonZero && case.rings.len() == 2)
             .then(|| (geo_poly(&case.rings[0]), geo_poly(&case.rings[1])))
     }
     fn run(&self, input: &Self::Input) -> Self::Output {
         input.0.union(&input.1)
     }
-    fn stats(&self, out: &Self::Output) -> Option<SweepStats> {
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
         let mut rings = Vec::new();
         for p in &out.0 {
             for ls in std::iter::once(p.exterior()).chain(p.interiors()) {
@@ -299,7 +439,7 @@ impl SweepPeer for GeoSweep {
                 rings.push(r);
             }
         }
-        Some(stats_of(&rings))
+        Ok(stats_of(&rings))
     }
 }
 
@@ -307,36 +447,36 @@ impl SweepPeer for GeoSweep {
 mod tests {
     use super::*;
 
+    fn run<P: SweepPeer>(peer: &P, case: &SweepCase) -> SweepStats {
+        let input = peer.prepare(case).expect("the peer applies to the row");
+        match peer.stats(&peer.run(&input)) {
+            Ok(s) => s,
+            Err(e) => panic!("{} on {}: {e}", peer.name(), case.label),
+        }
+    }
+
+    fn close(a: f64, b: f64) -> bool {
+        (a - b).abs() < 1e-6 * a.abs().max(b.abs()).max(1.0)
+    }
+
     #[test]
     fn umbra_and_i_overlay_agree_on_small_rows() {
+        let plain = |label: &str, rings: Vec<Ring>, expected| SweepCase {
+            label: label.into(),
+            rule: SweepRule::NonZero,
+            rings,
+            ngon: None,
+            expected,
+        };
         let cases = [
-            SweepCase {
-                label: "checker".into(),
-                rings: checkerboards(6),
-                expected: None,
-            },
-            SweepCase {
-                label: "nested".into(),
-                rings: nested_squares(10),
-                expected: Some((10, Some(40))),
-            },
-            SweepCase {
-                label: "spiral".into(),
-                rings: spirals(400),
-                expected: None,
-            },
+            plain("checker", checkerboards(6), None),
+            plain("nested", nested_squares(10), Some((10, Some(40)))),
+            plain("spiral", spirals(400), None),
         ];
         for case in &cases {
-            let u = UmbraSweep
-                .stats(&UmbraSweep.run(&UmbraSweep.prepare(case).unwrap()))
-                .unwrap();
-            let p = IOverlaySweep { wide: true };
-            let i = p.stats(&p.run(&p.prepare(case).unwrap())).unwrap();
-            assert!(
-                (u.area - i.area).abs() < 1e-6 * u.area.abs().max(1.0),
-                "{}: {u:?} {i:?}",
-                case.label
-            );
+            let u = run(&UmbraSweep, case);
+            let i = run(&IOverlaySweep { wide: true }, case);
+            assert!(close(u.area, i.area), "{}: {u:?} {i:?}", case.label);
             if let Some((rings, vertices)) = case.expected {
                 assert_eq!(u.rings, rings, "{}", case.label);
                 if let Some(v) = vertices {
@@ -345,9 +485,83 @@ mod tests {
             }
         }
         // Two boards of 18 unit cells each, overlapping in part.
-        let u = UmbraSweep
-            .stats(&UmbraSweep.run(&UmbraSweep.prepare(&cases[0]).unwrap()))
-            .unwrap();
+        let u = run(&UmbraSweep, &cases[0]);
         assert!(u.area > 18.0 && u.area < 36.0);
+    }
+
+    #[test]
+    fn the_rows_cover_table_7_4_and_three_fill_rules() {
+        let rows = sweep_cases(1000);
+        let ngons: Vec<Case> = rows.iter().filter_map(|r| r.ngon).collect();
+        assert_eq!(ngons, TABLE_7_4.to_vec());
+        for rule in [SweepRule::NonZero, SweepRule::EvenOdd, SweepRule::Positive] {
+            assert!(rows.iter().any(|r| r.rule == rule), "{rule:?}");
+        }
+        let mut labels: Vec<&str> = rows.iter().map(|r| r.label.as_str()).collect();
+        labels.sort_unstable();
+        labels.dedup();
+        assert_eq!(labels.len(), rows.len(), "labels are unique");
+        // Random rows above `max_random` are left out, the rule rows with them.
+        let small = sweep_cases(500);
+        assert!(small
+            .iter()
+            .all(|r| !r.label.starts_with("random polygon n=1000")));
+        assert!(small.iter().all(|r| r.rule == SweepRule::NonZero));
+    }
+
+    #[test]
+    fn the_fill_rules_mean_the_same_region_in_both_libraries() {
+        // A counter-clockwise 4 x 4 square, a clockwise unit square inside
+        // it (winding 0 there) and a counter-clockwise square overlapping
+        // its corner: winding 2 on 2.25 of area and 1 on the 1.75 outside.
+        let mut inner = square(1.0, 1.0, 1.0);
+        inner.reverse();
+        let rings = vec![square(0.0, 0.0, 4.0), inner, square(2.5, 2.5, 2.0)];
+        for (rule, area) in [
+            (SweepRule::NonZero, 16.0 - 1.0 + 1.75),
+            (SweepRule::EvenOdd, 16.0 - 1.0 - 2.25 + 1.75),
+            (SweepRule::Positive, 16.0 - 1.0 + 1.75),
+        ] {
+            let case = SweepCase {
+                label: rule.name().into(),
+                rule,
+                rings: rings.clone(),
+                ngon: None,
+                expected: None,
+            };
+            let u = run(&UmbraSweep, &case);
+            let i = run(&IOverlaySweep { wide: true }, &case);
+            assert!(close(u.area, area), "umbra {rule:?}: {u:?}");
+            assert!(close(i.area, area), "i_overlay {rule:?}: {i:?}");
+        }
+        // Positive and nonzero differ once a loop is clockwise outside.
+        let mut cw = square(10.0, 10.0, 1.0);
+        cw.reverse();
+        let case = SweepCase {
+            label: "cw".into(),
+            rule: SweepRule::Positive,
+            rings: vec![square(0.0, 0.0, 1.0), cw],
+            ngon: None,
+            expected: None,
+        };
+        assert!(close(run(&UmbraSweep, &case).area, 1.0));
+        assert!(close(run(&IOverlaySweep { wide: true }, &case).area, 1.0));
+    }
+
+    #[test]
+    fn the_boolean_peer_gets_the_n_gon_union() {
+        let case = ngon_case(Case {
+            n: 100,
+            alpha_deg: 1.0e-2,
+        });
+        for wide in [false, true] {
+            let s = run(&IOverlayBoolSweep { wide }, &case);
+            assert_eq!((s.rings, s.vertices, s.zero_length_edges), (1, 400, 0));
+        }
+        let u = run(&UmbraSweep, &case);
+        assert_eq!((u.rings, u.vertices, u.zero_length_edges), (1, 400, 0));
+        assert!(IOverlayBoolSweep::default()
+            .prepare(&random_case(10, SweepRule::NonZero))
+            .is_none());
     }
 }

@@ -1,38 +1,112 @@
-//! `perf-table-simplify`: simplification by the nonzero rule (issue 4) on
-//! Umbra's sweep, `i_overlay` 9 `simplify_shape` (32- and 64-bit engines)
-//! and, on the n-gon union rows, `geo` 0.33 `BooleanOps::union`; prints a
-//! markdown table for `docs/performance.md` with the median time, ratios
-//! and correctness columns.
+//! `perf-table-simplify`: simplification (issue 4) on Umbra's sweep beside
+//! `i_overlay` 9 `simplify_shape` (32- and 64-bit engines) with the
+//! matching fill rule, `i_overlay`'s Boolean (the union of the two n-gons
+//! as subject and clip, matching fill rule, both engines) and `geo` 0.33
+//! `BooleanOps::union` on the n-gon rows; prints a markdown table for
+//! `docs/performance.md` with the median time, each peer's time over
+//! Umbra's and correctness columns.
 //!
 //! ```text
-//! cargo run --release -p umbra-benches --bin perf-table-simplify -- [--max-random 5000] [--budget-ms 1500]
+//! cargo run --release -p umbra-benches --bin perf-table-simplify -- [--max-random 5000] [--budget-ms 1500] [--rows SUBSTRING[,SUBSTRING...]]
 //! ```
 //!
-//! A result is correct when it has the exact ring/vertex counts where the
-//! row knows them (n-gon: one ring of `4n` vertices; nested squares: one
-//! ring of 4 vertices per square), and its area agrees with the 64-bit
-//! i_overlay engine to 1e-9 relative where no exact count is known.
+//! The rows are `umbra_benches::sweep::sweep_cases`: the ten rows of Table
+//! 7.4, random topological polygons of 100 to `--max-random` vertices by
+//! the nonzero rule (and the 1,000-vertex one by the even-odd and positive
+//! rules), checkerboards, spirals and nested squares. `--rows` keeps the
+//! rows whose label contains one of the comma-separated substrings.
+//!
+//! A result is correct when it has the exact ring and vertex counts (and
+//! no zero-length edge) where the row knows them (n-gon: one ring of `4n`
+//! vertices; nested squares: one ring of 4 vertices per square), and where
+//! no exact count is known when its signed area agrees with the 64-bit
+//! i_overlay `simplify_shape` result by the same rule (the reference,
+//! marked `ref`) to 1e-9 relative. A peer that returned an error is marked
+//! `**error**` (the message goes to stderr); `—` means the peer has no such
+//! operation for the row.
 
 use std::time::{Duration, Instant};
 use umbra_benches::sweep::{
-    sweep_cases, GeoSweep, IOverlaySweep, SweepCase, SweepPeer, SweepStats, UmbraSweep,
+    sweep_cases, GeoSweep, IOverlayBoolSweep, IOverlaySweep, SweepCase, SweepPeer, SweepStats,
+    UmbraSweep,
 };
 
-fn time_peer<P: SweepPeer>(
-    peer: &P,
-    case: &SweepCase,
+/// Command-line settings.
+struct Config {
+    max_random: usize,
     budget: Duration,
-) -> Option<(f64, SweepStats)> {
-    let input = peer.prepare(case)?;
+    rows: Vec<String>,
+}
+
+fn parse_args() -> Result<Config, String> {
+    let mut config = Config {
+        max_random: 5000,
+        budget: Duration::from_millis(1500),
+        rows: Vec::new(),
+    };
+    let mut args = std::env::args().skip(1);
+    while let Some(arg) = args.next() {
+        let mut value = || args.next().ok_or_else(|| format!("{arg} needs a value"));
+        match arg.as_str() {
+            "--max-random" => {
+                config.max_random = value()?
+                    .parse()
+                    .map_err(|e| format!("--max-random: {e}"))?;
+            }
+            "--budget-ms" => {
+                let ms: u64 = value()?.parse().map_err(|e| format!("--budget-ms: {e}"))?;
+                config.budget = Duration::from_millis(ms);
+            }
+            "--rows" => {
+                config.rows = value()?
+                    .split(',')
+                    .map(|s| s.trim().to_string())
+                    .filter(|s| !s.is_empty())
+                    .collect();
+            }
+            "-h" | "--help" => {
+                return Err(
+                    "usage: perf-table-simplify [--max-random N] [--budget-ms MS] [--rows SUBSTRING[,SUBSTRING...]]".into(),
+                )
+            }
+            other => return Err(format!("unknown argument {other}")),
+        }
+    }
+    Ok(config)
+}
+
+/// One peer on one row.
+enum Outcome {
+    /// The peer has no such operation for the row.
+    Skipped,
+    /// The peer returned an error.
+    Failed,
+    /// The median time in milliseconds and the result's statistics.
+    Done(f64, SweepStats),
+}
+
+/// Runs `peer` once (checked), then repeats it to fill `budget` (at least
+/// 2 and at most 50 more runs; none when the first run alone exceeded the
+/// budget) and returns the median.
+fn time_peer<P: SweepPeer>(peer: &P, case: &SweepCase, budget: Duration) -> Outcome {
+    let Some(input) = peer.prepare(case) else {
+        return Outcome::Skipped;
+    };
     let t = Instant::now();
     let out = peer.run(&input);
     let first = t.elapsed();
-    let stats = peer.stats(&out)?;
+    let stats = match peer.stats(&out) {
+        Ok(stats) => stats,
+        Err(e) => {
+            eprintln!("error: {} on {}: {e}", peer.name(), case.label);
+            return Outcome::Failed;
+        }
+    };
     drop(out);
     let runs = if first > budget {
         0
     } else {
-        (budget.as_secs_f64() / first.as_secs_f64().max(1e-6)).clamp(2.0, 51.0) as usize
+        (budget.as_secs_f64() / first.as_secs_f64().max(1e-6)).clamp(2.0, 50.0) as usize
     };
     let mut times = vec![first.as_secs_f64() * 1e3];
     for _ in 0..runs {
@@ -42,13 +116,30 @@ fn time_peer<P: SweepPeer>(
         drop(out);
     }
     times.sort_by(f64::total_cmp);
-    Some((times[times.len() / 2], stats))
+    Outcome::Done(times[times.len() / 2], stats)
 }
 
-fn verdict(case: &SweepCase, s: &SweepStats, reference: Option<&SweepStats>) -> &'static str {
+/// The correctness verdict of one outcome; `is_reference` marks the
+/// 64-bit i_overlay simplification the areas are compared with.
+fn verdict(
+    case: &SweepCase,
+    outcome: &Outcome,
+    reference: Option<&SweepStats>,
+    is_reference: bool,
+) -> &'static str {
+    let s = match outcome {
+        Outcome::Skipped => return "—",
+        Outcome::Failed => return "**error**",
+        Outcome::Done(_, s) => s,
+    };
     if let Some((rings, vertices)) = case.expected {
-        let ok = s.rings == rings && vertices.is_none_or(|v| s.vertices == v);
+        let ok = s.rings == rings
+            && vertices.is_none_or(|v| s.vertices == v)
+            && s.zero_length_edges == 0;
         return if ok { "yes" } else { "**no**" };
+    }
+    if is_reference {
+        return "ref";
     }
     match reference {
         Some(r) if (s.area - r.area).abs() <= 1e-9 * r.area.abs().max(1.0) => "yes (area)",
@@ -58,59 +149,73 @@ fn verdict(case: &SweepCase, s: &SweepStats, reference: Option<&SweepStats>) -> 
 }
 
 fn main() {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let get = |name: &str, default: usize| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(default)
+    let config = match parse_args() {
+        Ok(config) => config,
+        Err(e) => {
+            eprintln!("{e}");
+            std::process::exit(2);
+        }
     };
-    let max_random = get("--max-random", 5000);
-    let budget = Duration::from_millis(get("--budget-ms", 1500) as u64);
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(
-        "<!-- perf-table-simplify | {cores} logical cores | median of runs within the budget -->\n"
+        "<!-- perf-table-simplify | {cores} logical cores | median of runs within the budget | (x) = peer time / umbra time -->\n"
     );
-    println!("| row | umbra ms | i_overlay ms | i_overlay / umbra | i_overlay-i64 ms | i_overlay-i64 / umbra | geo ms | geo / umbra | correct (umbra, i_overlay, i64, geo) | umbra rings / vertices |");
-    println!("|---|---:|---:|---:|---:|---:|---:|---:|---|---:|");
-    for case in sweep_cases(max_random) {
+    println!("| row | rule | umbra ms | i_overlay ms (x) | i_overlay-i64 ms (x) | i_overlay-bool ms (x) | i_overlay-bool-i64 ms (x) | geo ms (x) | correct (umbra, i_overlay, i64, bool, bool-i64, geo) | umbra rings / vertices |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---|---:|");
+    let rows = sweep_cases(config.max_random)
+        .into_iter()
+        .filter(|c| config.rows.is_empty() || config.rows.iter().any(|s| c.label.contains(s)));
+    for case in rows {
         eprintln!("row: {}", case.label);
+        let budget = config.budget;
         let u = time_peer(&UmbraSweep, &case, budget);
-        let i = time_peer(&IOverlaySweep { wide: false }, &case, budget);
-        let w = time_peer(&IOverlaySweep { wide: true }, &case, budget);
-        let g = time_peer(&GeoSweep, &case, budget);
-        let reference = w.as_ref().map(|(_, s)| s);
-        let cell = |x: &Option<(f64, SweepStats)>| {
-            x.as_ref()
-                .map_or("—".to_string(), |(ms, _)| format!("{ms:.2}"))
+        let peers = [
+            time_peer(&IOverlaySweep { wide: false }, &case, budget),
+            time_peer(&IOverlaySweep { wide: true }, &case, budget),
+            time_peer(&IOverlayBoolSweep { wide: false }, &case, budget),
+            time_peer(&IOverlayBoolSweep { wide: true }, &case, budget),
+            time_peer(&GeoSweep, &case, budget),
+        ];
+        // The 64-bit i_overlay simplification is the area reference.
+        let reference = match &peers[1] {
+            Outcome::Done(_, s) => Some(s),
+            _ => None,
         };
-        let ratio = |x: &Option<(f64, SweepStats)>| match (x, &u) {
-            (Some((p, _)), Some((um, _))) => format!("{:.2}", p / um),
+        let umbra_ms = match &u {
+            Outcome::Done(ms, _) => Some(*ms),
+            _ => None,
+        };
+        let cell = |x: &Outcome| match (x, umbra_ms) {
+            (Outcome::Done(ms, _), Some(um)) => format!("{ms:.2} ({:.2})", ms / um),
+            (Outcome::Done(ms, _), None) => format!("{ms:.2}"),
+            (Outcome::Failed, _) => "error".into(),
+            (Outcome::Skipped, _) => "—".into(),
+        };
+        let umbra_cell = match &u {
+            Outcome::Done(ms, _) => format!("{ms:.2}"),
+            Outcome::Failed => "error".into(),
+            Outcome::Skipped => "—".into(),
+        };
+        let mut verdicts = vec![verdict(&case, &u, reference, false)];
+        verdicts.extend(
+            peers
+                .iter()
+                .enumerate()
+                .map(|(i, p)| verdict(&case, p, reference, i == 1)),
+        );
+        let counts = match &u {
+            Outcome::Done(_, s) => format!("{} / {}", s.rings, s.vertices),
             _ => "—".into(),
         };
-        let ok = |x: &Option<(f64, SweepStats)>| {
-            x.as_ref()
-                .map_or("—", |(_, s)| verdict(&case, s, reference))
-        };
+        let peer_cells: Vec<String> = peers.iter().map(cell).collect();
         println!(
-            "| {} | {} | {} | {} | {} | {} | {} | {} | {}, {}, {}, {} | {} |",
+            "| {} | {} | {} | {} | {} | {} |",
             case.label,
-            cell(&u),
-            cell(&i),
-            ratio(&i),
-            cell(&w),
-            ratio(&w),
-            cell(&g),
-            ratio(&g),
-            ok(&u),
-            ok(&i),
-            ok(&w),
-            ok(&g),
-            u.as_ref().map_or("—".into(), |(_, s)| format!(
-                "{} / {}",
-                s.rings, s.vertices
-            )),
+            case.rule.name(),
+            umbra_cell,
+            peer_cells.join(" | "),
+            verdicts.join(", "),
+            counts,
         );
     }
 }
