@@ -490,6 +490,7 @@ impl<W: Winding> Sweep<W> {
 
     /// The relation of sweep-line edge `e` to event point `p`, decided with
     /// `y_at_x` (Table 7.1) exactly as the vertex-on-edge rule of section 6.5.
+    #[inline]
     fn classify(e: &SweepEdge<W>, p: Pt) -> Class {
         if e.r == p {
             return Class::Ends;

@@ -16,8 +16,10 @@
 //! exactly as it would on a vector even where the computed order of the
 //! edges is inconsistent (section 7.2), when the predicate is not monotone.
 
+use std::cell::Cell;
+
 /// Target chunk length; a chunk is split beyond twice this.
-const CHUNK: usize = 256;
+const CHUNK: usize = 512;
 
 /// A sequence addressed by global index, stored in chunks.
 #[derive(Clone, Debug)]
@@ -26,6 +28,9 @@ pub(crate) struct SweepLine<T> {
     /// Global index of the first element of each chunk.
     starts: Vec<usize>,
     len: usize,
+    /// The chunk of the last look-up: the probes of a search and the
+    /// neighbour accesses of an event mostly fall in one chunk.
+    last: Cell<usize>,
 }
 
 impl<T> Default for SweepLine<T> {
@@ -34,6 +39,7 @@ impl<T> Default for SweepLine<T> {
             chunks: Vec::new(),
             starts: Vec::new(),
             len: 0,
+            last: Cell::new(0),
         }
     }
 }
@@ -57,13 +63,23 @@ impl<T: Clone> SweepLine<T> {
         if self.chunks.len() == 1 {
             return (0, i);
         }
+        let c = self.last.get();
+        if let (Some(&s), Some(chunk)) = (self.starts.get(c), self.chunks.get(c)) {
+            if s <= i && i < s + chunk.len() {
+                return (c, i - s);
+            }
+        }
         let c = self.starts.partition_point(|&s| s <= i) - 1;
+        self.last.set(c);
         (c, i - self.starts[c])
     }
 
     /// The element at global index `i`.
     #[inline]
     pub(crate) fn get(&self, i: usize) -> Option<&T> {
+        if let [chunk] = self.chunks.as_slice() {
+            return chunk.get(i);
+        }
         if i >= self.len {
             return None;
         }
@@ -74,6 +90,9 @@ impl<T: Clone> SweepLine<T> {
     /// The element at global index `i`, mutably.
     #[inline]
     pub(crate) fn get_mut(&mut self, i: usize) -> Option<&mut T> {
+        if self.chunks.len() == 1 {
+            return self.chunks[0].get_mut(i);
+        }
         if i >= self.len {
             return None;
         }
@@ -165,6 +184,15 @@ impl<T: Clone> SweepLine<T> {
         let hi = hi.clamp(lo, self.len);
         let lo = lo.min(self.len);
         let removed = hi - lo;
+        // One chunk that stays within bounds: a plain splice (short lines).
+        if let [chunk] = self.chunks.as_mut_slice() {
+            let after = chunk.len() - removed + new.len();
+            if after > 0 && after <= 2 * CHUNK {
+                chunk.splice(lo..hi, new.drain(..));
+                self.len = after;
+                return;
+            }
+        }
         if self.chunks.is_empty() {
             if !new.is_empty() {
                 self.len = new.len();
