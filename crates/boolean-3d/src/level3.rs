@@ -297,10 +297,15 @@ fn x30_cast(a: &Flat<'_>, v: &Point3, bvh: &Bvh, boxes: &[Aabb]) -> Result<i32, 
 
 /// Winding numbers of every referenced vertex by propagation along edges
 /// from one ray cast per connected component (identity in the module
-/// documentation). `dsum[e]` is `sum_f X(e, f)` for edge `e`.
+/// documentation), with `sum_f X(e, f)` per edge `e` from `hits`.
+///
+/// The two operands propagate in parallel, so each one's temporaries are
+/// freed as soon as the next step no longer needs them (the adjacency
+/// before the edge sums are built): this step holds the heap peak of the
+/// whole Boolean.
 fn propagate(
     mesh: &Flat<'_>,
-    dsum: &[i32],
+    hits: &[EdgeFacetHit],
     cast: impl Fn(&Point3) -> Result<i32, Boolean3Error> + Sync,
 ) -> Result<(Vec<i32>, usize), Boolean3Error> {
     let n = mesh.pos.len();
@@ -325,6 +330,7 @@ fn propagate(
             fill[t as usize] += 1;
         }
     }
+    drop(fill);
     let referenced = &mesh.referenced;
     let mut seen = vec![false; n];
     // (vertex, edge it was reached by, or u32::MAX for a root)
@@ -352,6 +358,8 @@ fn propagate(
             }
         }
     }
+    drop((adj, deg, seen));
+    let dsum = edge_sums(mesh.edges.len(), hits);
     let cast_values: Vec<i32> = roots
         .par_iter()
         .map(|&r| cast(&mesh.pos[r as usize]))
@@ -438,10 +446,8 @@ pub(crate) fn level3(
     let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a);
     let (x03, x30, casts) = match winding {
         Winding::Propagate => {
-            let (r03, r30) = rayon::join(
-                || propagate(a, &edge_sums(a.edges.len(), &x12), cast03),
-                || propagate(b, &edge_sums(b.edges.len(), &x21), cast30),
-            );
+            let (r03, r30) =
+                rayon::join(|| propagate(a, &x12, cast03), || propagate(b, &x21, cast30));
             let ((x03, n03), (x30, n30)) = (r03?, r30?);
             (x03, x30, n03 + n30)
         }
