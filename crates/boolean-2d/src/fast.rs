@@ -15,10 +15,11 @@
 //! the same interval set. Either way the cost is `O((n + c) log n)` for `c`
 //! overlapping box pairs.
 
-use crate::interval_set::{total_order_key, IntervalSet};
+use crate::interval_set::IntervalSet;
 use crate::reference::LevelData;
 use crate::BooleanError;
 use rayon::prelude::*;
+use robust_arith::total_order_key;
 use shadow_1d::{s01, s10};
 use shadow_2d::x11;
 use std::time::Instant;

@@ -46,7 +46,7 @@ pub use bounds::{
 };
 pub use error::ArithError;
 pub use interpolate::interpolate;
-pub use order::{lex_cmp, lex_less};
+pub use order::{from_total_order_key, lex_cmp, lex_less, total_order_key};
 pub use pair::interpolate_pair;
 pub use segment::{point_at_x, y_at_x};
 

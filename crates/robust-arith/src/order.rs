@@ -32,3 +32,71 @@ pub fn lex_cmp<const N: usize>(a: &[f64; N], b: &[f64; N]) -> Ordering {
 pub fn lex_less<const N: usize>(a: &[f64; N], b: &[f64; N]) -> bool {
     lex_cmp(a, b) == Ordering::Less
 }
+
+/// The integer image of `f64::total_cmp`: `total_order_key(a) <
+/// total_order_key(b)` exactly when `a.total_cmp(&b)` is `Less`, so sorts
+/// and heaps over coordinates can compare integers. On finite values with
+/// `-0.0` normalised to `+0.0` (what validated data holds) it is the order
+/// of [`lex_cmp`] per coordinate.
+///
+/// ```
+/// use robust_arith::{from_total_order_key, total_order_key};
+/// assert!(total_order_key(-1.0) < total_order_key(0.5));
+/// assert_eq!(from_total_order_key(total_order_key(-2.5)), -2.5);
+/// ```
+#[inline]
+pub fn total_order_key(x: f64) -> u64 {
+    let bits = x.to_bits();
+    if bits >> 63 == 1 {
+        !bits
+    } else {
+        bits | (1 << 63)
+    }
+}
+
+/// The inverse of [`total_order_key`], bit for bit.
+#[inline]
+pub fn from_total_order_key(key: u64) -> f64 {
+    f64::from_bits(if key >> 63 == 1 {
+        key & !(1 << 63)
+    } else {
+        !key
+    })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn total_order_key_is_total_cmp_and_invertible() {
+        let values = [
+            f64::NEG_INFINITY,
+            -f64::MAX,
+            -1.5,
+            -f64::MIN_POSITIVE,
+            -5e-324,
+            -0.0,
+            0.0,
+            5e-324,
+            f64::MIN_POSITIVE,
+            1.0,
+            1.5,
+            f64::MAX,
+            f64::INFINITY,
+        ];
+        for a in values {
+            assert_eq!(
+                from_total_order_key(total_order_key(a)).to_bits(),
+                a.to_bits()
+            );
+            for b in values {
+                assert_eq!(
+                    total_order_key(a).cmp(&total_order_key(b)),
+                    a.total_cmp(&b),
+                    "{a} vs {b}"
+                );
+            }
+        }
+    }
+}

@@ -2,7 +2,7 @@
 //! of section 7.7 with winding numbers, section 7.4.3), its validity check,
 //! and the simplified shape for a rule.
 
-use crate::collection::EdgeCollection;
+use crate::collection::{elementary_intervals, EdgeCollection};
 use crate::point::Pt;
 use crate::winding::Winding;
 use crate::SimplifyError;
@@ -428,21 +428,7 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) -> boo
                 marks.push((v[l as usize][1], l, m));
                 marks.push((v[r as usize][1], r, m.wrapping_neg()));
             }
-            // Equal y values are one point (one id) and their marks are
-            // summed, so an unstable sort gives the same intervals.
-            marks.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
-            let mut run = 0i32;
-            let mut k = 0;
-            while k < marks.len() {
-                let (y, id) = (marks[k].0, marks[k].1);
-                while k < marks.len() && marks[k].0 == y {
-                    run = run.wrapping_add(marks[k].2);
-                    k += 1;
-                }
-                if k < marks.len() && run != 0 {
-                    extra.push((id, marks[k].1, run));
-                }
-            }
+            elementary_intervals(&mut marks, |from, to, run| extra.push((from, to, run)));
         }
         i = j;
     }

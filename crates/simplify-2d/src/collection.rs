@@ -115,27 +115,15 @@ impl EdgeCollection {
                 j += 1;
             }
             if j - i >= 2 {
-                // Difference array over the y break points.
-                let mut marks: Vec<(f64, i32)> = Vec::with_capacity(2 * (j - i));
+                let mut marks: Vec<(f64, f64, i32)> = Vec::with_capacity(2 * (j - i));
                 for &(l, r, m) in &vertical[i..j] {
                     self.edges.remove(&(l, r));
-                    marks.push((l.y, m));
-                    marks.push((r.y, m.wrapping_neg()));
+                    marks.push((l.y, l.y, m));
+                    marks.push((r.y, r.y, m.wrapping_neg()));
                 }
-                marks.sort_by(|a, b| a.0.total_cmp(&b.0));
-                let mut run = 0i32;
-                let mut k = 0;
-                while k < marks.len() {
-                    let y = marks[k].0;
-                    while k < marks.len() && marks[k].0 == y {
-                        run = run.wrapping_add(marks[k].1);
-                        k += 1;
-                    }
-                    if k < marks.len() && run != 0 {
-                        let y_next = marks[k].0;
-                        self.add_ordered(Pt::new([x, y]), Pt::new([x, y_next]), run);
-                    }
-                }
+                elementary_intervals(&mut marks, |y, y_next, run| {
+                    self.add_ordered(Pt::new([x, y]), Pt::new([x, y_next]), run);
+                });
             }
             i = j;
         }
@@ -196,5 +184,33 @@ impl EdgeCollection {
             }
         }
         c
+    }
+}
+
+/// The 1D simplification of section 7.6.1 (footnote 9) for the vertical
+/// edges at one x: each edge leaves a mark `(y, end, m)` at its lower end
+/// and `(y, end, -m)` at its upper end, and every elementary interval
+/// between consecutive break points with a non-zero running sum is passed
+/// to `emit(from, to, sum)`, `from` and `to` being the ends at those break
+/// points. Marks at equal y belong to one point and are summed, so their
+/// order does not matter.
+pub(crate) fn elementary_intervals<T: Copy>(
+    marks: &mut [(f64, T, i32)],
+    mut emit: impl FnMut(T, T, i32),
+) {
+    marks.sort_unstable_by(|a, b| a.0.total_cmp(&b.0));
+    let mut run = 0i32;
+    let mut k = 0;
+    while k < marks.len() {
+        let (y, at) = (marks[k].0, marks[k].1);
+        while k < marks.len() && marks[k].0 == y {
+            run = run.wrapping_add(marks[k].2);
+            k += 1;
+        }
+        if let Some(next) = marks.get(k) {
+            if run != 0 {
+                emit(at, next.1, run);
+            }
+        }
     }
 }

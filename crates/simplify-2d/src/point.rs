@@ -1,6 +1,7 @@
 //! The point key of the sweep: a 2D point with the lexicographic order of
 //! section 7.1.2 as a total order, usable as a map key.
 
+use robust_arith::{from_total_order_key, total_order_key};
 use std::cmp::Ordering;
 use std::hash::{Hash, Hasher};
 
@@ -31,27 +32,19 @@ impl Pt {
     }
 
     /// An integer key whose order is the lexicographic order of points
-    /// (IEEE total order per coordinate), for sorting.
+    /// (IEEE total order per coordinate, `robust_arith::total_order_key`),
+    /// for sorting.
     #[inline]
     pub(crate) fn sort_key(self) -> u128 {
-        let f = |v: f64| {
-            let b = v.to_bits();
-            if b >> 63 == 1 {
-                !b
-            } else {
-                b | (1 << 63)
-            }
-        };
-        (u128::from(f(self.x)) << 64) | u128::from(f(self.y))
+        (u128::from(total_order_key(self.x)) << 64) | u128::from(total_order_key(self.y))
     }
 
     /// The point whose [`Pt::sort_key`] is `key`.
     #[inline]
     pub(crate) fn from_sort_key(key: u128) -> Pt {
-        let g = |k: u64| f64::from_bits(if k >> 63 == 1 { k & !(1 << 63) } else { !k });
         Pt {
-            x: g((key >> 64) as u64),
-            y: g(key as u64),
+            x: from_total_order_key((key >> 64) as u64),
+            y: from_total_order_key(key as u64),
         }
     }
 }

@@ -32,43 +32,7 @@ use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::{interpolate, y_at_x};
 use std::cmp::Ordering;
-use std::collections::{BinaryHeap, HashMap};
-use std::hash::{BuildHasherDefault, Hasher};
-
-/// A small multiplicative hasher for point keys (two `u64` bit patterns):
-/// the vertex map is on the hot path and needs no DoS resistance.
-#[derive(Default)]
-pub(crate) struct PointHasher(u64);
-
-impl Hasher for PointHasher {
-    #[inline]
-    fn finish(&self) -> u64 {
-        // The murmur3 finalizer: coordinates on a grid (integers, halves)
-        // have all-zero low mantissa bits, and the multiply below keeps
-        // them zero; hashbrown picks buckets by the low bits, so without
-        // this every grid point collided (the checkerboard bench ran 9x
-        // slower than it should).
-        let mut h = self.0;
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
-        h ^ (h >> 33)
-    }
-    #[inline]
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-    #[inline]
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-}
-
-/// A hash map keyed by sweep points (or anything hashed as `u64` words).
-pub(crate) type PointMap<K, V> = HashMap<K, V, BuildHasherDefault<PointHasher>>;
+use std::collections::BinaryHeap;
 
 /// One directed input edge `a -> b` with multiplicity `mult`, and the index
 /// of the original edge it stands for (provenance).
@@ -796,11 +760,11 @@ impl<W: Winding> Sweep<W> {
     }
 
     /// Shortens sweep-line edge `i` to end at `q`, sending the rest to the
-    /// buffer (section 7.4.1). Returns the new adjustment count (section 8.4:
-    /// one more than the edge's, at least the vertex's).
-    fn split(&mut self, i: usize, q: Pt, k_q: u32) -> u32 {
+    /// buffer (section 7.4.1). Both parts get the adjustment count of
+    /// section 8.4: one more than the edge's, at least the vertex's `k_q`.
+    fn split(&mut self, i: usize, q: Pt, k_q: u32) {
         let Some(e) = self.line.get_mut(i) else {
-            return 0;
+            return;
         };
         let (old_r, m, k, origin, id) = {
             let k = (e.k + 1).max(k_q);
@@ -811,7 +775,6 @@ impl<W: Winding> Sweep<W> {
         };
         self.ends.update(id, q);
         self.add_pending(q, old_r, m, k, origin);
-        k
     }
 
     /// Tests the adjacent sweep-line edges `i` (logically below) and `i + 1`.
@@ -844,7 +807,9 @@ impl<W: Winding> Sweep<W> {
         }
         // Disjoint y-ranges cannot cross: every y-value below lies in its
         // edge's y-range (see `classify`).
-        if a.l.y.max(a.r.y) < b.l.y.min(b.r.y) || b.l.y.max(b.r.y) < a.l.y.min(a.r.y) {
+        let (a_lo, a_hi) = (a.l.y.min(a.r.y), a.l.y.max(a.r.y));
+        let (b_lo, b_hi) = (b.l.y.min(b.r.y), b.l.y.max(b.r.y));
+        if a_hi < b_lo || b_hi < a_lo {
             return;
         }
         // The x-range both edges span to the right of the sweep line.
@@ -864,8 +829,6 @@ impl<W: Winding> Sweep<W> {
         let q = interpolate(x_l, y_al, y_bl, x_r, y_ar, y_br);
         // Eq. 8.18-8.19 guarantee q lies in both bounding boxes; clamping
         // changes nothing then and keeps the sweep monotone in x otherwise.
-        let (a_lo, a_hi) = (a.l.y.min(a.r.y), a.l.y.max(a.r.y));
-        let (b_lo, b_hi) = (b.l.y.min(b.r.y), b.l.y.max(b.r.y));
         let qx = q[0].clamp(x_l, x_r);
         let (ylo, yhi) = (a_lo.max(b_lo), a_hi.min(b_hi));
         let qy = if ylo <= yhi {

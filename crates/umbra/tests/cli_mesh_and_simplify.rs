@@ -129,6 +129,24 @@ fn json(path: &Path) -> serde_json::Value {
     serde_json::from_str(&std::fs::read_to_string(path).unwrap()).unwrap()
 }
 
+/// Runs `umbra boolean OP A B -o OUT --report REPORT [--triangulate]`.
+fn boolean(op: &str, a: &Path, b: &Path, out: &Path, report: &Path, triangulate: bool) -> Output {
+    let mut args = vec![
+        "boolean".to_string(),
+        op.to_string(),
+        a.display().to_string(),
+        b.display().to_string(),
+        "-o".into(),
+        out.display().to_string(),
+        "--report".into(),
+        report.display().to_string(),
+    ];
+    if triangulate {
+        args.push("--triangulate".into());
+    }
+    umbra(&args)
+}
+
 #[test]
 fn cube_booleans_in_both_variants_and_formats() {
     let dir = temp_dir("cubes");
@@ -139,20 +157,7 @@ fn cube_booleans_in_both_variants_and_formats() {
         for (ext, tri) in [("obj", false), ("off", false), ("obj", true), ("off", true)] {
             let out = dir.join(format!("{op}-{tri}.{ext}"));
             let report = dir.join(format!("{op}-{tri}-{ext}.json"));
-            let mut args = vec![
-                "boolean".to_string(),
-                op.to_string(),
-                a.display().to_string(),
-                b.display().to_string(),
-                "-o".into(),
-                out.display().to_string(),
-                "--report".into(),
-                report.display().to_string(),
-            ];
-            if tri {
-                args.push("--triangulate".into());
-            }
-            let o = umbra(&args);
+            let o = boolean(op, &a, &b, &out, &report, tri);
             assert!(o.status.success(), "{op}: {}", stderr(&o));
             assert_eq!(volume(&out), want, "{op} {ext} triangulate={tri}");
             assert!(closed(&out), "{op}: output not closed");
@@ -218,20 +223,7 @@ fn triangulate_runs_the_triangle_variant_on_quad_input() {
     let run = |op: &str, x: &Path, y: &Path, tag: &str, tri: bool| {
         let out = dir.join(format!("{op}-{tag}.obj"));
         let report = dir.join(format!("{op}-{tag}.json"));
-        let mut args = vec![
-            "boolean".to_string(),
-            op.to_string(),
-            x.display().to_string(),
-            y.display().to_string(),
-            "-o".into(),
-            out.display().to_string(),
-            "--report".into(),
-            report.display().to_string(),
-        ];
-        if tri {
-            args.push("--triangulate".into());
-        }
-        let o = umbra(&args);
+        let o = boolean(op, x, y, &out, &report, tri);
         assert!(o.status.success(), "{op} {tag}: {}", stderr(&o));
         (out, json(&report))
     };
