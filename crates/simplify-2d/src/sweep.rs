@@ -8,7 +8,8 @@
 //!   (section 7.1.2), keyed by (leftmost, rightmost) point;
 //! - the *sweep line*: a vector of edges in logical bottom-to-top order, each
 //!   holding the winding number of the cell below it (section 7.4.3);
-//! - the multiset of right end points of sweep-line edges.
+//! - the right end points of sweep-line edges, counted by point
+//!   (`end_points.rs`).
 //!
 //! The next event point is the smaller of the first pending left point and
 //! the first sweep-line right point. Processing an event (section 7.6.2):
@@ -156,6 +157,15 @@ enum Class {
 
 const NO_ID: u32 = u32::MAX;
 
+/// The sweep keeps counts of right points by point while the line is
+/// longer than `COUNT_ABOVE` edges and until it is shorter than
+/// `COUNT_BELOW`; on shorter lines it counts the edges ending at an event
+/// by looking at each. A count update is a hash operation (about a hundred
+/// instructions, three or four per event) and a look costs a few
+/// instructions per edge: they break even near a hundred edges.
+const COUNT_ABOVE: usize = 128;
+const COUNT_BELOW: usize = 64;
+
 /// An edge about to be inserted at the event point: its right point, the
 /// gradient key of section 7.3 (non-vertical by slope, vertical last),
 /// multiplicity, adjustment count, provenance.
@@ -180,9 +190,8 @@ struct Sweep<W: Winding> {
     free: Vec<u32>,
     next_seq: u64,
     line: SweepLine<SweepEdge<W>>,
-    /// The multiset of right end points of the sweep-line edges.
+    /// The right end points of the sweep-line edges.
     ends: EndPoints,
-    scratch_ids: Vec<u32>,
     points: VertexTable,
     scratch_group: Vec<SweepEdge<W>>,
     scratch_block: Vec<NewEdge<W>>,
@@ -261,6 +270,7 @@ pub(crate) fn run<W: Winding>(
             merge_identical(&mut run_, &mut merged);
         }
     }
+    let ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
     let mut s = Sweep {
         dims,
         input: merged,
@@ -270,8 +280,7 @@ pub(crate) fn run<W: Winding>(
         free: Vec::new(),
         next_seq: 1,
         line: SweepLine::default(),
-        ends: EndPoints::default(),
-        scratch_ids: Vec::new(),
+        ends,
         points: VertexTable::with_capacity(n * 2),
         scratch_group: Vec::new(),
         scratch_block: Vec::new(),
@@ -298,7 +307,7 @@ pub(crate) fn run<W: Winding>(
         .saturating_add(1 << 20);
     loop {
         let pe = s.first_pending();
-        let se = s.first_end();
+        let se = s.ends.candidate();
         let p = match (pe, se) {
             (Some(a), Some(b)) => a.min(b),
             (Some(a), None) => a,
@@ -310,8 +319,13 @@ pub(crate) fn run<W: Winding>(
         if pe == Some(p) {
             s.take_pending_at(p, &mut pending);
         }
-        // Pending edges that cancelled out never made `p` an event.
-        if pending.is_empty() && se != Some(p) {
+        let ending = match s.ends.reach(p) {
+            Some(n) => n,
+            None => s.ending_at(p),
+        };
+        // Pending edges that cancelled out, and a candidate whose edges were
+        // shortened or cancelled, never made `p` an event.
+        if pending.is_empty() && ending == 0 {
             s.scratch_pending = pending;
             continue;
         }
@@ -321,9 +335,20 @@ pub(crate) fn run<W: Winding>(
                 "event limit {cap} exceeded (section 7.6.3 bound)"
             )));
         }
-        let r = s.process(p, &mut pending);
+        let r = s.process(p, ending, &mut pending);
         s.scratch_pending = pending;
         r?;
+        // Counts by point pay off on long lines only (`end_points.rs`).
+        let len = s.line.len();
+        if s.ends.counting() {
+            if len < COUNT_BELOW {
+                s.ends.stop_counting();
+            }
+        } else if len > COUNT_ABOVE {
+            let mut ends = Vec::with_capacity(len);
+            s.line.for_range(0, len, |e| ends.push(e.r));
+            s.ends.start_counting(ends.into_iter());
+        }
     }
     if !s.line.is_empty() {
         return Err(SimplifyError::Internal(format!(
@@ -406,11 +431,6 @@ impl<W: Winding> Sweep<W> {
         }
     }
 
-    /// The smallest right point of a sweep-line edge.
-    fn first_end(&mut self) -> Option<Pt> {
-        self.ends.min()
-    }
-
     /// Removes the pending edges whose left point is `p` and returns them
     /// merged (section 7.1.2), sorted by right point, non-zero.
     fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) {
@@ -446,6 +466,14 @@ impl<W: Winding> Sweep<W> {
         }
         merge_identical(&mut gather, out);
         self.scratch_gather = gather;
+    }
+
+    /// The number of sweep-line edges ending at `p`, by looking at each.
+    fn ending_at(&self, p: Pt) -> u32 {
+        let mut n = 0;
+        self.line
+            .for_range(0, self.line.len(), |e| n += u32::from(e.r == p));
+        n
     }
 
     fn vertex_k(&self, p: Pt) -> u32 {
@@ -564,15 +592,19 @@ impl<W: Winding> Sweep<W> {
         if let Some(slot) = self.id_to_edge.get_mut(e.id as usize) {
             *slot = idx;
         }
-        self.ends.remove(e.id);
     }
 
-    /// Processes event point `p` (section 7.6.2) with the pending edges
-    /// starting there (merged, sorted by right point).
-    fn process(&mut self, p: Pt, pending: &mut Vec<Pending<W>>) -> Result<(), SimplifyError> {
+    /// Processes event point `p` (section 7.6.2), at which `expected`
+    /// sweep-line edges end, with the pending edges starting there (merged,
+    /// sorted by right point).
+    fn process(
+        &mut self,
+        p: Pt,
+        expected: u32,
+        pending: &mut Vec<Pending<W>>,
+    ) -> Result<(), SimplifyError> {
         self.x_s = p.x;
         let (vid, k_p) = self.points.process(p);
-        let expected = self.ends.count_equal_to_min(p, &mut self.scratch_ids);
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
             match self.line.get(lo - 1) {
@@ -615,6 +647,8 @@ impl<W: Winding> Sweep<W> {
                 }
                 let k = (e.k + 1).max(k_p);
                 self.emit(&e, vid, k);
+                // Its right part is inserted again below (or merged away).
+                self.ends.remove(e.r);
                 let (vertical, slope) = gradient(e.r);
                 block.push(NewEdge {
                     r: e.r,
@@ -667,7 +701,7 @@ impl<W: Winding> Sweep<W> {
             }
             let id = self.id_to_edge.len() as u32;
             self.id_to_edge.push(NO_ID);
-            self.ends.insert(id, it.r);
+            self.ends.add(it.r);
             self.fan_ids.push(id);
             let below = w.clone();
             w.add_assign(&it.m);
@@ -766,14 +800,22 @@ impl<W: Winding> Sweep<W> {
         let Some(e) = self.line.get_mut(i) else {
             return;
         };
-        let (old_r, m, k, origin, id) = {
+        let (old_r, m, k, origin) = {
             let k = (e.k + 1).max(k_q);
             let old_r = e.r;
             e.r = q;
             e.k = k;
-            (old_r, e.m.clone(), k, e.origin, e.id)
+            (old_r, e.m.clone(), k, e.origin)
         };
-        self.ends.update(id, q);
+        self.ends.remove(old_r);
+        // The buffer edge from q makes q an event (section 7.4.1), unless
+        // it runs downwards vertically and is keyed from its other end
+        // (section 7.6.1).
+        if q < old_r {
+            self.ends.add(q);
+        } else {
+            self.ends.add_uncovered(q);
+        }
         self.add_pending(q, old_r, m, k, origin);
     }
 

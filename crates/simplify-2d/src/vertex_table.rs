@@ -12,44 +12,7 @@
 //! of them, which the sweep's order makes rare; the large table of every
 //! vertex is never hashed on the hot path.
 
-use crate::point::Pt;
-use std::collections::HashMap;
-use std::hash::{BuildHasherDefault, Hasher};
-
-/// A small multiplicative hasher for point keys (two `u64` bit patterns):
-/// the vertex map is on the hot path and needs no DoS resistance.
-#[derive(Default)]
-struct PointHasher(u64);
-
-impl Hasher for PointHasher {
-    #[inline]
-    fn finish(&self) -> u64 {
-        // The murmur3 finalizer: coordinates on a grid (integers, halves)
-        // have all-zero low mantissa bits, and the multiply below keeps
-        // them zero; hashbrown picks buckets by the low bits, so without
-        // this every grid point collided (the checkerboard bench ran 9x
-        // slower than it should).
-        let mut h = self.0;
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xff51_afd7_ed55_8ccd);
-        h ^= h >> 33;
-        h = h.wrapping_mul(0xc4ce_b9fe_1a85_ec53);
-        h ^ (h >> 33)
-    }
-    #[inline]
-    fn write(&mut self, bytes: &[u8]) {
-        for &b in bytes {
-            self.write_u64(u64::from(b));
-        }
-    }
-    #[inline]
-    fn write_u64(&mut self, v: u64) {
-        self.0 = (self.0.rotate_left(5) ^ v).wrapping_mul(0x51_7c_c1_b7_27_22_0a_95);
-    }
-}
-
-/// A hash map keyed by sweep points.
-type PointMap<V> = HashMap<Pt, V, BuildHasherDefault<PointHasher>>;
+use crate::point::{PointMap, Pt};
 
 /// Vertex ids and adjustment counts by point.
 #[derive(Debug, Default)]
