@@ -312,7 +312,7 @@ impl<W: Winding> CellStructure<W> {
             .into_iter()
             .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
             .collect();
-        let mut edges = merge_keyed(ranked);
+        let mut edges = merge_keyed(ranked, points.len());
         if merge_vertical_edges(&mut edges, &points) {
             // The merged vertical edges are new keys: restore the order.
             sort_unstable(&mut edges);
@@ -371,11 +371,11 @@ impl<W: Winding> CellStructure<W> {
     }
 }
 
-/// Sorts keyed edges `(l, r, m)` and merges identical keys, adding the
-/// multiplicities and dropping those that cancel (section 7.1.2).
-fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
-    // Identical keys are summed, so their order does not matter.
-    sort_unstable_by_key(&mut sel, |&(a, b, _)| (u64::from(a) << 32) | u64::from(b));
+/// Sorts keyed edges `(l, r, m)` on the ranks `0..n` and merges identical
+/// keys, adding the multiplicities and dropping those that cancel (section
+/// 7.1.2).
+fn merge_keyed(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
+    let sel = sort_by_rank(sel, n);
     let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(sel.len());
     for (a, b, m) in sel {
         match out.last_mut() {
@@ -390,6 +390,43 @@ fn merge_keyed(mut sel: Vec<(u32, u32, i32)>) -> Vec<(u32, u32, i32)> {
     }
     if out.last().is_some_and(|l| l.2 == 0) {
         out.pop();
+    }
+    out
+}
+
+/// Sorts keyed edges `(l, r, m)` with `l, r < n` by `(l, r)`: a counting
+/// sort by `l` (the ranks are dense), then each run of equal `l` (the few
+/// edges leaving one vertex rightwards) by `r`. Identical keys are summed
+/// by the caller, so their order does not matter.
+fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
+    if sel
+        .iter()
+        .any(|&(a, b, _)| a as usize >= n || b as usize >= n)
+    {
+        // Not on ranks (never from `shape_with`): a plain sort.
+        let mut sel = sel;
+        sort_unstable_by_key(&mut sel, |&(a, b, _)| (u64::from(a) << 32) | u64::from(b));
+        return sel;
+    }
+    let mut next = vec![0u32; n + 1];
+    for &(a, _, _) in &sel {
+        next[a as usize + 1] += 1;
+    }
+    for i in 1..=n {
+        next[i] += next[i - 1];
+    }
+    let starts = next.clone();
+    let mut out = vec![(0u32, 0u32, 0i32); sel.len()];
+    for e in sel {
+        let at = &mut next[e.0 as usize];
+        out[*at as usize] = e;
+        *at += 1;
+    }
+    for w in starts.windows(2) {
+        let run = &mut out[w[0] as usize..w[1] as usize];
+        if run.len() > 1 {
+            run.sort_unstable_by_key(|e| e.1);
+        }
     }
     out
 }

@@ -125,9 +125,10 @@ impl EndPoints {
 
     /// Adds a sweep-line edge ending at `r`, whose end is already a
     /// candidate unless it lies at or behind a point reached before.
+    #[inline]
     pub(crate) fn add(&mut self, r: Pt) {
         if self.counting {
-            *self.count.entry(r).or_insert(0) += 1;
+            self.increment(r);
         }
         let key = r.sort_key();
         if self.passed.is_some_and(|m| key <= m) {
@@ -139,16 +140,29 @@ impl EndPoints {
     /// any case (the upper end of a reversed buffer edge).
     pub(crate) fn add_uncovered(&mut self, r: Pt) {
         if self.counting {
-            *self.count.entry(r).or_insert(0) += 1;
+            self.increment(r);
         }
         self.extra.push(Reverse(r.sort_key()));
     }
 
     /// Removes one sweep-line edge ending at `r`.
+    #[inline]
     pub(crate) fn remove(&mut self, r: Pt) {
-        if !self.counting {
-            return;
+        if self.counting {
+            self.decrement(r);
         }
+    }
+
+    /// One more edge ending at `r` (out of line: the short-line path stays
+    /// small where it is inlined).
+    #[inline(never)]
+    fn increment(&mut self, r: Pt) {
+        *self.count.entry(r).or_insert(0) += 1;
+    }
+
+    /// One edge fewer ending at `r`.
+    #[inline(never)]
+    fn decrement(&mut self, r: Pt) {
         if let Some(n) = self.count.get_mut(&r) {
             *n -= 1;
             if *n == 0 {

@@ -82,7 +82,11 @@ impl VertexTable {
         if let Some(id) = self.done_id(p) {
             return (id, self.k[id as usize]);
         }
-        let k = self.ahead.remove(&p).unwrap_or(0);
+        let k = if self.ahead.is_empty() {
+            0
+        } else {
+            self.ahead.remove(&p).unwrap_or(0)
+        };
         let id = self.vertices.len() as u32;
         self.vertices.push(p.arr());
         self.k.push(k);
