@@ -120,6 +120,43 @@ fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>, out: &mut Vec<Pendin
     }
 }
 
+/// Merges the sorted input edges in place, exactly as [`merge_identical`]
+/// merges each run of one left point: identical edges add their
+/// multiplicities (keeping the larger adjustment count and the first
+/// provenance), an edge cancelled to zero is removed and a later identical
+/// edge starts afresh. Input edges get `seq` 0 (they precede every buffer
+/// edge).
+fn merge_sorted_input<W: Winding>(items: &mut Vec<Pending<W>>) {
+    // Items before `w` are the result; `open` when the last of them may
+    // still absorb identical edges (the accumulator of `merge_identical`).
+    let mut w: usize = 0;
+    let mut open = false;
+    for rd in 0..items.len() {
+        let (done, rest) = items.split_at_mut(rd);
+        let it = &mut rest[0];
+        it.seq = 0;
+        if open {
+            if let Some(last) = done.get_mut(w.wrapping_sub(1)) {
+                if last.l == it.l && last.r == it.r {
+                    last.m.add_assign(&it.m);
+                    last.k = last.k.max(it.k);
+                    if last.m.is_zero() {
+                        w -= 1;
+                        open = false;
+                    }
+                    continue;
+                }
+            }
+        }
+        open = !it.m.is_zero();
+        if open {
+            items.swap(w, rd);
+            w += 1;
+        }
+    }
+    items.truncate(w);
+}
+
 /// A sweep-line edge from its logical left point `l` (already processed)
 /// to its logical right point `r` (not yet processed). Normally `l ≺ r`;
 /// a downward vertical edge (section 7.6.1) has `r ≺ l` with equal x.
@@ -218,58 +255,34 @@ pub(crate) fn run<W: Winding>(
     // right to left, zero-length edges dropped, identical edges merged in
     // input order.
     let mut keyed: Vec<Pending<W>> = Vec::with_capacity(n);
-    for e in input {
+    for (i, e) in input.into_iter().enumerate() {
         let (a, b) = (Pt::new(e.a), Pt::new(e.b));
         let (l, r, m) = match a.cmp(&b) {
             Ordering::Less => (a, b, e.mult),
             Ordering::Greater => (b, a, e.mult.negated()),
             Ordering::Equal => continue,
         };
+        // The input position, for the sort below.
         keyed.push(Pending {
             l,
             r,
-            seq: 0,
+            seq: i as u64,
             m,
             k: 0,
             origin: e.origin,
         });
     }
-    // Sorted by key; identical edges stay in input order (the index breaks
-    // ties), as the collection would have merged them one at a time.
-    // Small entries (the x part of the key and the index) move fast; the
-    // full key decides only between equal x. Keys with the index are
-    // distinct, so any sort gives the same order.
-    let keys: Vec<(u128, u128)> = keyed
-        .iter()
-        .map(|e| (e.l.sort_key(), e.r.sort_key()))
-        .collect();
-    let full = |i: u32| (keys[i as usize], i);
-    let mut order: Vec<(u64, u32)> = keys
-        .iter()
-        .enumerate()
-        .map(|(i, k)| ((k.0 >> 64) as u64, i as u32))
-        .collect();
-    crate::cells::sort_unstable_by(&mut order, |a, b| {
-        a.0.cmp(&b.0).then_with(|| full(a.1).cmp(&full(b.1)))
+    // Sorted by key; identical edges stay in input order (the position
+    // breaks ties), as the collection would have merged them one at a
+    // time. Keys with the position are distinct, so any sort gives the
+    // same order; sorting in place keeps one copy of the input.
+    crate::cells::sort_unstable_by(&mut keyed, |a, b| {
+        a.l.cmp(&b.l)
+            .then_with(|| a.r.cmp(&b.r))
+            .then(a.seq.cmp(&b.seq))
     });
-    let mut slots: Vec<Option<Pending<W>>> = keyed.into_iter().map(Some).collect();
-    let keyed = order
-        .iter()
-        .filter_map(|&(_, i)| slots.get_mut(i as usize).and_then(Option::take));
-    let mut merged = Vec::with_capacity(order.len());
-    {
-        let mut it = keyed.peekable();
-        let mut run_: Vec<Pending<W>> = Vec::new();
-        while let Some(first) = it.next() {
-            let l = first.l;
-            run_.clear();
-            run_.push(first);
-            while let Some(next) = it.next_if(|e| e.l == l) {
-                run_.push(next);
-            }
-            merge_identical(&mut run_, &mut merged);
-        }
-    }
+    merge_sorted_input(&mut keyed);
+    let merged = keyed;
     let ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
     let mut s = Sweep {
         dims,
@@ -676,12 +689,26 @@ impl<W: Winding> Sweep<W> {
         // Order by gradient (section 7.3), vertical (upwards) last; identical
         // segments become adjacent and are merged (section 6.5).
         if block.len() > 1 {
-            block.sort_by(|a, b| {
+            let order = |a: &NewEdge<W>, b: &NewEdge<W>| {
                 a.vertical
                     .cmp(&b.vertical)
                     .then(a.slope.total_cmp(&b.slope))
                     .then(a.r.cmp(&b.r))
-            });
+            };
+            // A stable sort (identical segments keep their order, so the
+            // first one's provenance is kept); by insertion on the few
+            // edges of most events.
+            if block.len() <= 8 {
+                for i in 1..block.len() {
+                    let mut j = i;
+                    while j > 0 && order(&block[j - 1], &block[j]) == Ordering::Greater {
+                        block.swap(j - 1, j);
+                        j -= 1;
+                    }
+                }
+            } else {
+                block.sort_by(order);
+            }
             block.dedup_by(|item, last| {
                 if last.r == item.r {
                     last.m.add_assign(&item.m);

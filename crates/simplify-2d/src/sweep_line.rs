@@ -184,6 +184,21 @@ impl<T: Clone> SweepLine<T> {
         let hi = hi.clamp(lo, self.len);
         let lo = lo.min(self.len);
         let removed = hi - lo;
+        // As many in as out (every crossing): overwrite in place.
+        if removed == new.len() && removed > 0 {
+            let mut items = new.drain(..);
+            let mut i = lo;
+            while i < hi {
+                let (c, o) = self.locate(i);
+                let chunk = &mut self.chunks[c];
+                let take = (chunk.len() - o).min(hi - i);
+                for (slot, item) in chunk[o..o + take].iter_mut().zip(&mut items) {
+                    *slot = item;
+                }
+                i += take;
+            }
+            return;
+        }
         // One chunk that stays within bounds: a plain splice (short lines).
         if let [chunk] = self.chunks.as_mut_slice() {
             let after = chunk.len() - removed + new.len();

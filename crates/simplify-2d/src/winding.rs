@@ -12,7 +12,7 @@ use std::fmt;
 /// input panic-free, and since wrapping integers still form a group the cell
 /// structure stays consistent; the values are the true winding numbers
 /// unless those exceed `i32` in magnitude.
-pub trait Winding: Clone + PartialEq + fmt::Debug {
+pub trait Winding: Clone + PartialEq + fmt::Debug + Send {
     /// The zero value for `dims` operands.
     fn zero(dims: usize) -> Self;
     /// `self += other`.
