@@ -42,30 +42,44 @@ fn validate(set: &PolygonSet2, operand: usize) -> Result<(), SimplifyError> {
         .map_err(|source| SimplifyError::InvalidInput { operand, source })
 }
 
-/// The directed edges of `set` as sweep input, with `mult` mapping an edge
-/// multiplicity to the winding type.
-fn push_edges<W>(
-    set: &PolygonSet2,
+/// The edges of `set` with non-zero multiplicity as sweep input, their
+/// provenance offset by `origin_offset`.
+fn edges_of<'a, W>(
+    set: &'a PolygonSet2,
     origin_offset: u32,
-    out: &mut Vec<InputEdge<W>>,
-    mult: impl Fn(i32) -> W,
-) {
+    mult: impl Fn(i32) -> W + 'a,
+) -> impl Iterator<Item = InputEdge<W>> + 'a {
     let v = set.vertices();
-    for (i, e) in set.edges().iter().enumerate() {
+    set.edges().iter().enumerate().filter_map(move |(i, e)| {
         if e.mult == 0 {
-            continue;
+            return None;
         }
-        if let (Some(&a), Some(&b)) = (v.get(e.start as usize), v.get(e.end as usize)) {
-            out.push(InputEdge {
-                a,
-                b,
-                mult: mult(e.mult),
-                origin: origin_offset.wrapping_add(i as u32),
-            });
-        }
-    }
+        let (&a, &b) = (v.get(e.start as usize)?, v.get(e.end as usize)?);
+        Some(InputEdge {
+            a,
+            b,
+            mult: mult(e.mult),
+            origin: origin_offset.wrapping_add(i as u32),
+        })
+    })
 }
 
+/// The operands with their index and provenance offset (the edge counts
+/// of the operands before them).
+fn operands(sets: &[PolygonSet2]) -> impl Iterator<Item = (usize, &PolygonSet2, u32)> {
+    sets.iter().enumerate().scan(0u32, |offset, (i, s)| {
+        let at = *offset;
+        *offset = offset.wrapping_add(s.edge_count() as u32);
+        Some((i, s, at))
+    })
+}
+
+/// The number of edges of all operands.
+fn total_edges(sets: &[PolygonSet2]) -> usize {
+    sets.iter().map(|s| s.edge_count()).sum()
+}
+
+/// The largest coordinate magnitude of the operands.
 fn max_abs(sets: &[&PolygonSet2]) -> f64 {
     sets.iter()
         .map(|s| s.max_abs_coordinate())
@@ -89,9 +103,12 @@ fn max_abs(sets: &[&PolygonSet2]) -> f64 {
 /// ```
 pub fn cell_structure(set: &PolygonSet2) -> Result<CellStructure<i32>, SimplifyError> {
     validate(set, 0)?;
-    let mut input = Vec::with_capacity(set.edge_count());
-    push_edges(set, 0, &mut input, |m| m);
-    run(input, 1, max_abs(&[set]))
+    run(
+        edges_of(set, 0, |m| m),
+        set.edge_count(),
+        1,
+        max_abs(&[set]),
+    )
 }
 
 /// Simplifies a polygon set: the cells whose winding number the rule
@@ -124,10 +141,8 @@ pub fn boolean_cells(
 ) -> Result<CellStructure<[i32; 2]>, SimplifyError> {
     validate(a, 0)?;
     validate(b, 1)?;
-    let mut input = Vec::with_capacity(a.edge_count() + b.edge_count());
-    push_edges(a, 0, &mut input, |m| [m, 0]);
-    push_edges(b, a.edge_count() as u32, &mut input, |m| [0, m]);
-    run(input, 2, max_abs(&[a, b]))
+    let input = edges_of(a, 0, |m| [m, 0]).chain(edges_of(b, a.edge_count() as u32, |m| [0, m]));
+    run(input, a.edge_count() + b.edge_count(), 2, max_abs(&[a, b]))
 }
 
 /// A Boolean operation through simplification (section 6.1): both
@@ -163,18 +178,15 @@ pub fn cell_structure_n(sets: &[PolygonSet2]) -> Result<CellStructure<Vec<i32>>,
         validate(s, i)?;
     }
     let n = sets.len();
-    let mut input = Vec::with_capacity(sets.iter().map(|s| s.edge_count()).sum());
-    let mut offset = 0u32;
-    for (i, s) in sets.iter().enumerate() {
-        push_edges(s, offset, &mut input, |m| {
+    let input = operands(sets).flat_map(|(i, s, offset)| {
+        edges_of(s, offset, move |m| {
             let mut w = vec![0; n];
             w[i] = m;
             w
-        });
-        offset = offset.wrapping_add(s.edge_count() as u32);
-    }
+        })
+    });
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    run(input, n, max_abs(&refs))
+    run(input, total_edges(sets), n, max_abs(&refs))
 }
 
 /// An n-ary Boolean in one sweep: `keep` receives the winding number of
@@ -198,13 +210,8 @@ pub fn union_all(sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
     for (i, s) in sets.iter().enumerate() {
         validate(s, i)?;
     }
-    let mut input = Vec::with_capacity(sets.iter().map(|s| s.edge_count()).sum());
-    let mut offset = 0u32;
-    for s in sets {
-        push_edges(s, offset, &mut input, |m| m);
-        offset = offset.wrapping_add(s.edge_count() as u32);
-    }
+    let input = operands(sets).flat_map(|(_, s, offset)| edges_of(s, offset, |m| m));
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    let cells = run(input, 1, max_abs(&refs))?;
+    let cells = run(input, total_edges(sets), 1, max_abs(&refs))?;
     Ok(Simplified::from_cells(&cells, |w| *w > 0))
 }

@@ -375,22 +375,25 @@ impl<W: Winding> CellStructure<W> {
 /// keys, adding the multiplicities and dropping those that cancel (section
 /// 7.1.2).
 fn merge_keyed(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
-    let sel = sort_by_rank(sel, n);
-    let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(sel.len());
-    for (a, b, m) in sel {
-        match out.last_mut() {
-            Some(last) if last.0 == a && last.1 == b => last.2 = last.2.wrapping_add(m),
-            _ => {
-                if out.last().is_some_and(|l| l.2 == 0) {
-                    out.pop();
-                }
-                out.push((a, b, m));
+    let mut out = sort_by_rank(sel, n);
+    // In place: the first `w` entries are the result so far.
+    let mut w = 0;
+    for i in 0..out.len() {
+        let (a, b, m) = out[i];
+        if w > 0 && out[w - 1].0 == a && out[w - 1].1 == b {
+            out[w - 1].2 = out[w - 1].2.wrapping_add(m);
+        } else {
+            if w > 0 && out[w - 1].2 == 0 {
+                w -= 1;
             }
+            out[w] = (a, b, m);
+            w += 1;
         }
     }
-    if out.last().is_some_and(|l| l.2 == 0) {
-        out.pop();
+    if w > 0 && out[w - 1].2 == 0 {
+        w -= 1;
     }
+    out.truncate(w);
     out
 }
 
@@ -415,18 +418,21 @@ fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
     for i in 1..=n {
         next[i] += next[i - 1];
     }
-    let starts = next.clone();
     let mut out = vec![(0u32, 0u32, 0i32); sel.len()];
     for e in sel {
         let at = &mut next[e.0 as usize];
         out[*at as usize] = e;
         *at += 1;
     }
-    for w in starts.windows(2) {
-        let run = &mut out[w[0] as usize..w[1] as usize];
+    // Now `next[l]` is where the edges of `l` end and those of `l + 1`
+    // start.
+    let mut from = 0;
+    for &to in &next[..n] {
+        let run = &mut out[from as usize..to as usize];
         if run.len() > 1 {
             run.sort_unstable_by_key(|e| e.1);
         }
+        from = to;
     }
     out
 }

@@ -243,19 +243,22 @@ struct Sweep<W: Winding> {
     stats: SweepStats,
 }
 
-/// Runs the sweep on the given edges and returns the cell structure.
+/// Runs the sweep on the given edges (about `n` of them) and returns the
+/// cell structure.
 pub(crate) fn run<W: Winding>(
-    input: Vec<InputEdge<W>>,
+    input: impl IntoIterator<Item = InputEdge<W>>,
+    n: usize,
     dims: usize,
     max_abs: f64,
 ) -> Result<CellStructure<W>, SimplifyError> {
-    let n = input.len();
     // The edge collection of section 7.1.2 for the input: keyed by
     // (leftmost, rightmost) point, negative multiplicity for edges running
     // right to left, zero-length edges dropped, identical edges merged in
     // input order.
     let mut keyed: Vec<Pending<W>> = Vec::with_capacity(n);
+    let mut count = 0;
     for (i, e) in input.into_iter().enumerate() {
+        count = i + 1;
         let (a, b) = (Pt::new(e.a), Pt::new(e.b));
         let (l, r, m) = match a.cmp(&b) {
             Ordering::Less => (a, b, e.mult),
@@ -272,6 +275,18 @@ pub(crate) fn run<W: Winding>(
             origin: e.origin,
         });
     }
+    sweep(keyed, count, dims, max_abs)
+}
+
+/// The sweep proper, on the keyed input edges (in input order, `seq` the
+/// position) of `n` input edges. Not generic over the input's source, so
+/// that one copy serves every entry point.
+fn sweep<W: Winding>(
+    mut keyed: Vec<Pending<W>>,
+    n: usize,
+    dims: usize,
+    max_abs: f64,
+) -> Result<CellStructure<W>, SimplifyError> {
     // Sorted by key; identical edges stay in input order (the position
     // breaks ties), as the collection would have merged them one at a
     // time. Keys with the position are distinct, so any sort gives the
