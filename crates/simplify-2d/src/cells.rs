@@ -397,20 +397,12 @@ fn merge_keyed(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
     out
 }
 
-/// Sorts keyed edges `(l, r, m)` with `l, r < n` by `(l, r)`: a counting
+/// Sorts keyed edges `(l, r, m)` by `(l, r)`, given ranks `l, r < n` (as
+/// `shape_with` builds them): a counting
 /// sort by `l` (the ranks are dense), then each run of equal `l` (the few
 /// edges leaving one vertex rightwards) by `r`. Identical keys are summed
 /// by the caller, so their order does not matter.
 fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
-    if sel
-        .iter()
-        .any(|&(a, b, _)| a as usize >= n || b as usize >= n)
-    {
-        // Not on ranks (never from `shape_with`): a plain sort.
-        let mut sel = sel;
-        sort_unstable_by_key(&mut sel, |&(a, b, _)| (u64::from(a) << 32) | u64::from(b));
-        return sel;
-    }
     let mut next = vec![0u32; n + 1];
     for &(a, _, _) in &sel {
         next[a as usize + 1] += 1;
@@ -505,15 +497,5 @@ pub(crate) fn sort_unstable_by<T: Send>(
         v.par_sort_unstable_by(cmp);
     } else {
         v.sort_unstable_by(cmp);
-    }
-}
-
-/// Sorts `v` by a key, in parallel when it is long; equal keys must be
-/// interchangeable for the caller.
-fn sort_unstable_by_key<T: Send, K: Ord>(v: &mut [T], key: impl Fn(&T) -> K + Sync) {
-    if v.len() >= PARALLEL_SORT_MIN {
-        v.par_sort_unstable_by_key(key);
-    } else {
-        v.sort_unstable_by_key(key);
     }
 }

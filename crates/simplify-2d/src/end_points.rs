@@ -83,13 +83,10 @@ impl EndPoints {
         self.counting
     }
 
-    /// Starts keeping the counts, given the right points of the sweep-line
-    /// edges.
-    pub(crate) fn start_counting(&mut self, ends: impl Iterator<Item = Pt>) {
+    /// Starts keeping the counts; the caller then [`EndPoints::add`]s the
+    /// right point of every sweep-line edge.
+    pub(crate) fn start_counting(&mut self) {
         self.count.clear();
-        for r in ends {
-            *self.count.entry(r).or_insert(0) += 1;
-        }
         self.counting = true;
     }
 
@@ -195,7 +192,7 @@ mod tests {
             .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
             .collect();
         let mut e = EndPoints::new(input.iter().map(|p| p.sort_key()).collect());
-        e.start_counting(std::iter::empty());
+        e.start_counting();
         let mut plain: HashMap<Pt, u32> = HashMap::new();
         // Points made events by other means (the pending left points).
         let mut pending: Vec<Pt> = Vec::new();
@@ -249,8 +246,12 @@ mod tests {
                     if rnd(50) == 0 {
                         e.stop_counting();
                         assert_eq!(e.reach(Pt::new([-1.0, 0.0])), None);
-                        let ends = plain.iter().flat_map(|(&q, &n)| (0..n).map(move |_| q));
-                        e.start_counting(ends);
+                        e.start_counting();
+                        for (&q, &n) in &plain {
+                            for _ in 0..n {
+                                e.add(q);
+                            }
+                        }
                     }
                 }
             }

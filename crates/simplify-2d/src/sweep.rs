@@ -79,62 +79,27 @@ impl Ord for BufferKey {
     }
 }
 
-/// Merges pending edges that share their left point, given sorted by
-/// `(r, seq)`, exactly as the edge collection of section 7.1.2 would have
-/// merged them one at a time in `seq` order: identical edges add their
-/// multiplicities and keep the larger adjustment count and the first
-/// provenance; an edge whose multiplicity cancels to zero is removed, and
-/// a later identical edge starts afresh.
-fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>, out: &mut Vec<Pending<W>>) {
+/// Merges pending edges in place, given sorted by `(l, r, seq)`, exactly
+/// as the edge collection of section 7.1.2 would have merged them one at a
+/// time in `seq` order: identical edges add their multiplicities and keep
+/// the larger adjustment count and the first provenance; an edge whose
+/// multiplicity cancels to zero is removed, and a later identical edge
+/// starts afresh.
+fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Most points start one edge: nothing to merge.
-    if items.len() == 1 {
-        if let Some(e) = items.pop() {
-            if !e.m.is_zero() {
-                out.push(e);
-            }
+    if let [only] = items.as_slice() {
+        if only.m.is_zero() {
+            items.clear();
         }
         return;
     }
-    let mut cur: Option<Pending<W>> = None;
-    for it in items.drain(..) {
-        match &mut cur {
-            Some(c) if c.r == it.r => {
-                c.m.add_assign(&it.m);
-                c.k = c.k.max(it.k);
-                if c.m.is_zero() {
-                    cur = None;
-                }
-            }
-            _ => {
-                if let Some(c) = cur.take() {
-                    out.push(c);
-                }
-                if !it.m.is_zero() {
-                    cur = Some(it);
-                }
-            }
-        }
-    }
-    if let Some(c) = cur {
-        out.push(c);
-    }
-}
-
-/// Merges the sorted input edges in place, exactly as [`merge_identical`]
-/// merges each run of one left point: identical edges add their
-/// multiplicities (keeping the larger adjustment count and the first
-/// provenance), an edge cancelled to zero is removed and a later identical
-/// edge starts afresh. Input edges get `seq` 0 (they precede every buffer
-/// edge).
-fn merge_sorted_input<W: Winding>(items: &mut Vec<Pending<W>>) {
-    // Items before `w` are the result; `open` when the last of them may
-    // still absorb identical edges (the accumulator of `merge_identical`).
+    // Items before `w` are the result; `open` while the last of them may
+    // still absorb identical edges.
     let mut w: usize = 0;
     let mut open = false;
     for rd in 0..items.len() {
         let (done, rest) = items.split_at_mut(rd);
-        let it = &mut rest[0];
-        it.seq = 0;
+        let it = &rest[0];
         if open {
             if let Some(last) = done.get_mut(w.wrapping_sub(1)) {
                 if last.l == it.l && last.r == it.r {
@@ -233,7 +198,6 @@ struct Sweep<W: Winding> {
     scratch_group: Vec<SweepEdge<W>>,
     scratch_block: Vec<NewEdge<W>>,
     scratch_new: Vec<SweepEdge<W>>,
-    scratch_gather: Vec<Pending<W>>,
     scratch_pending: Vec<Pending<W>>,
     edges: Vec<CellEdge<W>>,
     id_to_edge: Vec<u32>,
@@ -296,7 +260,11 @@ fn sweep<W: Winding>(
             .then_with(|| a.r.cmp(&b.r))
             .then(a.seq.cmp(&b.seq))
     });
-    merge_sorted_input(&mut keyed);
+    merge_identical(&mut keyed);
+    // Input edges precede every buffer edge at their left point.
+    for e in &mut keyed {
+        e.seq = 0;
+    }
     let merged = keyed;
     let ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
     let mut s = Sweep {
@@ -313,7 +281,6 @@ fn sweep<W: Winding>(
         scratch_group: Vec::new(),
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
-        scratch_gather: Vec::new(),
         scratch_pending: Vec::new(),
         edges: Vec::with_capacity(n * 2),
         id_to_edge: Vec::with_capacity(n * 2),
@@ -349,7 +316,7 @@ fn sweep<W: Winding>(
         }
         let ending = match s.ends.reach(p) {
             Some(n) => n,
-            None => s.ending_at(p),
+            None => Sweep::ending_in(&s.line, p, 0, s.line.len()),
         };
         // Pending edges that cancelled out, and a candidate whose edges were
         // shortened or cancelled, never made `p` an event.
@@ -373,9 +340,9 @@ fn sweep<W: Winding>(
                 s.ends.stop_counting();
             }
         } else if len > COUNT_ABOVE {
-            let mut ends = Vec::with_capacity(len);
-            s.line.for_range(0, len, |e| ends.push(e.r));
-            s.ends.start_counting(ends.into_iter());
+            let ends = &mut s.ends;
+            ends.start_counting();
+            s.line.for_range(0, len, |e| ends.add(e.r));
         }
     }
     if !s.line.is_empty() {
@@ -460,17 +427,16 @@ impl<W: Winding> Sweep<W> {
     }
 
     /// Removes the pending edges whose left point is `p` and returns them
-    /// merged (section 7.1.2), sorted by right point, non-zero.
+    /// merged (section 7.1.2), sorted by right point, non-zero, in `out`
+    /// (empty on entry).
     fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) {
-        let mut gather = std::mem::take(&mut self.scratch_gather);
-        gather.clear();
         while let Some(e) = self.input.get_mut(self.next_input) {
             if e.l != p {
                 break;
             }
             // Input edges are already merged; move one out.
             let z = W::zero(self.dims);
-            gather.push(Pending {
+            out.push(Pending {
                 l: e.l,
                 r: e.r,
                 seq: 0,
@@ -484,23 +450,21 @@ impl<W: Winding> Sweep<W> {
         while self.buffer.peek().is_some_and(|e| e.key == key) {
             if let Some(e) = self.buffer.pop() {
                 if let Some(edge) = self.slab.get_mut(e.slot as usize).and_then(Option::take) {
-                    gather.push(edge);
+                    out.push(edge);
                 }
                 self.free.push(e.slot);
             }
         }
-        if gather.len() > 1 {
-            gather.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
+        if out.len() > 1 {
+            out.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
         }
-        merge_identical(&mut gather, out);
-        self.scratch_gather = gather;
+        merge_identical(out);
     }
 
-    /// The number of sweep-line edges ending at `p`, by looking at each.
-    fn ending_at(&self, p: Pt) -> u32 {
+    /// The number of edges `lo..hi` of `line` that end at `p`.
+    fn ending_in(line: &SweepLine<SweepEdge<W>>, p: Pt, lo: usize, hi: usize) -> u32 {
         let mut n = 0;
-        self.line
-            .for_range(0, self.line.len(), |e| n += u32::from(e.r == p));
+        line.for_range(lo, hi, |e| n += u32::from(e.r == p));
         n
     }
 
@@ -573,13 +537,8 @@ impl<W: Winding> Sweep<W> {
         while hi < len && class(hi) != Some(Class::Over) {
             hi += 1;
         }
-        let ending = |lo: usize, hi: usize| {
-            let mut n = 0;
-            line.for_range(lo, hi, |e| n += usize::from(e.r == p));
-            n
-        };
-        let count = ending(lo, hi);
-        if count == expected_ends as usize {
+        let count = Self::ending_in(line, p, lo, hi);
+        if count == expected_ends {
             return Ok((lo, hi));
         }
         // Section 7.6.2, literally.
@@ -591,8 +550,8 @@ impl<W: Winding> Sweep<W> {
             .rposition(|e| Self::classify(e, p) != Class::Over)
             .map_or(0, |i| i + 1);
         let hi = hi.max(lo);
-        let count = ending(lo, hi);
-        if count != expected_ends as usize {
+        let count = Self::ending_in(line, p, lo, hi);
+        if count != expected_ends {
             return Err(SimplifyError::Internal(format!(
                 "event ({}, {}): {count} of {expected_ends} ending edges found on the sweep line",
                 p.x, p.y
