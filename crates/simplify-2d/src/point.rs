@@ -70,9 +70,20 @@ impl PartialOrd for Pt {
 impl Ord for Pt {
     #[inline]
     fn cmp(&self, other: &Self) -> Ordering {
-        self.x
-            .total_cmp(&other.x)
-            .then_with(|| self.y.total_cmp(&other.y))
+        // Coordinates are finite and never `-0.0` (see [`Pt::new`]), where
+        // the IEEE total order is the plain `<` of floating point, which
+        // costs one comparison instead of two bit transformations.
+        if self.x < other.x {
+            Ordering::Less
+        } else if self.x > other.x {
+            Ordering::Greater
+        } else if self.y < other.y {
+            Ordering::Less
+        } else if self.y > other.y {
+            Ordering::Greater
+        } else {
+            Ordering::Equal
+        }
     }
 }
 
