@@ -16,41 +16,55 @@
 //!   list;
 //! - the few right points that are neither (a point reached again after a
 //!   backward step of section 7.6.1, the upper end of a split downward
-//!   vertical edge whose buffer part is reversed) go to a small heap;
-//! - the counts live in a hash map holding the distinct right points of the
-//!   sweep line, kept only while the line is long: on a short line the
-//!   sweep counts the edges ending at the event point by looking at each
-//!   (a few comparisons per edge), which costs less than the hash updates
-//!   of every insertion and split.
+//!   vertical edge whose buffer part is reversed) go to a small heap.
+//!
+//! The counts are kept by *slot*, not by point, so that no point is ever
+//! hashed: every distinct input right point has a slot, and every split
+//! point gets one when it is created (a split at an existing right point
+//! shares that point's slot). Each sweep-line edge carries the slot of its
+//! right point. Two slots may stand for the same point (a computed crossing
+//! that lands on an input point, say), so the count at an event point is
+//! the sum over the slots *visited* there: the input right point's slot
+//! when the sweep reaches it, the slots of the heap entries at the point,
+//! and the slots the sweep hands in with the buffer edges that start there
+//! ([`EndPoints::take`]). Every slot with a live edge is visited at its
+//! point: an input slot is reached in order, a split slot through the
+//! buffer edge created with it or the heap, and a slot whose point has
+//! already been passed gets a heap entry when an edge is added to it. A
+//! visit reads the count and zeroes it, since the event removes every edge
+//! ending there.
 //!
 //! A candidate at which no edge ends and no pending edge starts (its edges
 //! were shortened, or cancelled when merged) is passed over by the sweep
 //! exactly as the exact multiset of right points would never have produced
 //! it: every event point with work to do is still reached, in the same
-//! order. Per event this costs a few hash operations instead of a heap
-//! operation per edge.
+//! order. Per event this costs a few array updates instead of a heap
+//! operation per edge or a hash operation per update.
 
-use crate::point::{PointMap, Pt};
+use crate::point::Pt;
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
+
+/// A slot: the index of a counter of sweep-line edges ending at one point.
+pub(crate) type Slot = u32;
 
 /// Counts of sweep-line edges by right point, and the queue of candidate
 /// event points that covers them.
 #[derive(Debug, Default)]
 pub(crate) struct EndPoints {
     /// The distinct right points of the input edges (as [`Pt::sort_key`]),
-    /// increasing; those before `next` have been passed.
+    /// increasing; those before `next` have been passed. Input right point
+    /// `input[i]` has slot `i`.
     input: Vec<u128>,
     next: usize,
-    /// Right points not covered by `input` or the pending edges.
-    extra: BinaryHeap<Reverse<u128>>,
-    /// The number of sweep-line edges ending at each point (no zeros),
-    /// while `counting`.
-    count: PointMap<u32>,
-    counting: bool,
+    /// Right points not covered by `input` or the pending edges, with
+    /// their slots.
+    extra: BinaryHeap<Reverse<(u128, Slot)>>,
+    /// The number of sweep-line edges by slot.
+    count: Vec<u32>,
     /// The largest candidate passed so far: a right point beyond it is
     /// still ahead in `input` or among the pending left points.
-    passed: Option<u128>,
+    passed: Option<Pt>,
 }
 
 impl EndPoints {
@@ -59,17 +73,37 @@ impl EndPoints {
     pub(crate) fn new(mut input: Vec<u128>) -> Self {
         crate::cells::sort_unstable(&mut input);
         input.dedup();
+        // Room for as many split points as input points, so that the
+        // counters rarely move while the sweep allocates its output.
+        let mut count = Vec::with_capacity(input.len() * 2);
+        count.resize(input.len(), 0);
         EndPoints {
+            count,
             input,
             ..EndPoints::default()
         }
+    }
+
+    /// The slot of input right point `r` (one of those given to
+    /// [`EndPoints::new`]), or a new slot if it is not one.
+    pub(crate) fn input_slot(&mut self, r: Pt) -> Slot {
+        match self.input.binary_search(&r.sort_key()) {
+            Ok(i) => i as Slot,
+            Err(_) => self.new_slot(),
+        }
+    }
+
+    /// A new slot, for a point at which an edge was split.
+    pub(crate) fn new_slot(&mut self) -> Slot {
+        self.count.push(0);
+        (self.count.len() - 1) as Slot
     }
 
     /// The smallest candidate event point not passed yet.
     #[inline]
     pub(crate) fn candidate(&self) -> Option<Pt> {
         let a = self.input.get(self.next).copied();
-        let b = self.extra.peek().map(|r| r.0);
+        let b = self.extra.peek().map(|r| r.0 .0);
         match (a, b) {
             (Some(a), Some(b)) => Some(Pt::from_sort_key(a.min(b))),
             (Some(k), None) | (None, Some(k)) => Some(Pt::from_sort_key(k)),
@@ -77,94 +111,66 @@ impl EndPoints {
         }
     }
 
-    /// `true` while the counts are kept.
-    #[inline]
-    pub(crate) fn counting(&self) -> bool {
-        self.counting
-    }
-
-    /// Starts keeping the counts; the caller then [`EndPoints::add`]s the
-    /// right point of every sweep-line edge.
-    pub(crate) fn start_counting(&mut self) {
-        self.count.clear();
-        self.counting = true;
-    }
-
-    /// Stops keeping the counts.
-    pub(crate) fn stop_counting(&mut self) {
-        self.count.clear();
-        self.counting = false;
-    }
-
     /// Marks the event point `p`, the smallest of all candidates and
     /// pending left points, as reached, and returns the number of
-    /// sweep-line edges that end there (all of which the event removes),
-    /// or `None` when the counts are not kept.
-    pub(crate) fn reach(&mut self, p: Pt) -> Option<u32> {
+    /// sweep-line edges that end there in the slots visited here: the input
+    /// right point's and the heap's. The caller adds the slots of the
+    /// buffer edges starting at `p` ([`EndPoints::take`]).
+    pub(crate) fn reach(&mut self, p: Pt) -> u32 {
         let key = p.sort_key();
+        let mut n = 0;
         if self.input.get(self.next) == Some(&key) {
+            n += self.take(self.next as Slot);
             self.next += 1;
         }
-        while self.extra.peek().is_some_and(|r| r.0 == key) {
-            self.extra.pop();
-        }
-        if self.passed.is_none_or(|m| key > m) {
-            self.passed = Some(key);
-        }
-        if !self.counting {
-            return None;
-        }
-        if self.count.is_empty() {
-            return Some(0);
-        }
-        Some(self.count.remove(&p).unwrap_or(0))
-    }
-
-    /// Adds a sweep-line edge ending at `r`, whose end is already a
-    /// candidate unless it lies at or behind a point reached before.
-    #[inline]
-    pub(crate) fn add(&mut self, r: Pt) {
-        if self.counting {
-            self.increment(r);
-        }
-        let key = r.sort_key();
-        if self.passed.is_some_and(|m| key <= m) {
-            self.extra.push(Reverse(key));
-        }
-    }
-
-    /// Adds a sweep-line edge ending at `r` and makes `r` a candidate in
-    /// any case (the upper end of a reversed buffer edge).
-    pub(crate) fn add_uncovered(&mut self, r: Pt) {
-        if self.counting {
-            self.increment(r);
-        }
-        self.extra.push(Reverse(r.sort_key()));
-    }
-
-    /// Removes one sweep-line edge ending at `r`.
-    #[inline]
-    pub(crate) fn remove(&mut self, r: Pt) {
-        if self.counting {
-            self.decrement(r);
-        }
-    }
-
-    /// One more edge ending at `r` (out of line: the short-line path stays
-    /// small where it is inlined).
-    #[inline(never)]
-    fn increment(&mut self, r: Pt) {
-        *self.count.entry(r).or_insert(0) += 1;
-    }
-
-    /// One edge fewer ending at `r`.
-    #[inline(never)]
-    fn decrement(&mut self, r: Pt) {
-        if let Some(n) = self.count.get_mut(&r) {
-            *n -= 1;
-            if *n == 0 {
-                self.count.remove(&r);
+        while let Some(&Reverse((k, slot))) = self.extra.peek() {
+            if k != key {
+                break;
             }
+            self.extra.pop();
+            n += self.take(slot);
+        }
+        if self.passed.is_none_or(|m| p > m) {
+            self.passed = Some(p);
+        }
+        n
+    }
+
+    /// Visits `slot` at its point: returns its count and zeroes it (the
+    /// event removes every edge ending there).
+    #[inline]
+    pub(crate) fn take(&mut self, slot: Slot) -> u32 {
+        self.count.get_mut(slot as usize).map_or(0, std::mem::take)
+    }
+
+    /// Adds a sweep-line edge ending at `r` (slot `slot`), whose end is
+    /// already a candidate unless it lies at or behind a point reached
+    /// before.
+    #[inline]
+    pub(crate) fn add(&mut self, r: Pt, slot: Slot) {
+        if let Some(c) = self.count.get_mut(slot as usize) {
+            *c += 1;
+        }
+        if self.passed.is_some_and(|m| r <= m) {
+            self.extra.push(Reverse((r.sort_key(), slot)));
+        }
+    }
+
+    /// Adds a sweep-line edge ending at `r` (slot `slot`) and makes `r` a
+    /// candidate in any case (the upper end of a reversed buffer edge).
+    pub(crate) fn add_uncovered(&mut self, r: Pt, slot: Slot) {
+        if let Some(c) = self.count.get_mut(slot as usize) {
+            *c += 1;
+        }
+        self.extra.push(Reverse((r.sort_key(), slot)));
+    }
+
+    /// Removes one sweep-line edge ending in slot `slot`.
+    #[inline]
+    pub(crate) fn remove(&mut self, slot: Slot) {
+        if let Some(c) = self.count.get_mut(slot as usize) {
+            debug_assert!(*c > 0, "slot {slot} has no edge to remove");
+            *c = c.saturating_sub(1);
         }
     }
 }
@@ -172,12 +178,15 @@ impl EndPoints {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use std::collections::HashMap;
 
-    /// Random additions, removals and events, as the sweep makes them
-    /// (events at the smallest candidate or at points behind it), against
-    /// a plain multiset: the counts are exact and every right point of a
-    /// live edge stays a candidate until reached.
+    /// Random additions, splits and events, as the sweep makes them
+    /// (events at the smallest candidate or pending left point, which may
+    /// lie behind points reached before), against the plain list of live
+    /// edge ends: the count visited at every event is exact, and every
+    /// right point of a live edge stays a candidate until reached. Splits
+    /// share a slot with an existing end (a vertex on an edge, section 6.5)
+    /// or get a new one, sometimes at an input point, so that two slots
+    /// stand for one point.
     #[test]
     fn counts_exactly_and_covers_every_live_end() {
         let mut s = 0x2545_F491_4F6C_DD1Du64;
@@ -185,76 +194,97 @@ mod tests {
             s ^= s << 13;
             s ^= s >> 7;
             s ^= s << 17;
-            s % n
+            s % n.max(1)
         };
-        // Input right points on a small grid, so that ties are everywhere.
-        let input: Vec<Pt> = (0..200)
-            .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
-            .collect();
-        let mut e = EndPoints::new(input.iter().map(|p| p.sort_key()).collect());
-        e.start_counting();
-        let mut plain: HashMap<Pt, u32> = HashMap::new();
-        // Points made events by other means (the pending left points).
-        let mut pending: Vec<Pt> = Vec::new();
-        let mut unreached_inputs: Vec<Pt> = input.clone();
-        for _ in 0..5_000 {
-            match rnd(5) {
-                // An edge to an input right point not reached yet.
-                0 | 1 if !unreached_inputs.is_empty() => {
-                    let r = unreached_inputs[rnd(unreached_inputs.len() as u64) as usize];
-                    e.add(r);
-                    *plain.entry(r).or_insert(0) += 1;
-                }
-                // A split: one edge shortened to a new point, which
-                // becomes a pending left point (or, reversed, uncovered).
-                2 => {
-                    let live: Vec<Pt> = plain.keys().copied().collect();
-                    if let Some(&old) = live.get(rnd(live.len().max(1) as u64) as usize) {
-                        let q = Pt::new([rnd(40) as f64 + 0.25, rnd(5) as f64]);
-                        e.remove(old);
-                        let n = plain.get_mut(&old).unwrap();
-                        *n -= 1;
-                        if *n == 0 {
-                            plain.remove(&old);
-                        }
-                        if rnd(8) == 0 {
-                            e.add_uncovered(q);
+        let mut events = 0;
+        for _round in 0..40 {
+            let mut passed: Option<Pt> = None;
+            // Input right points on a small grid, so that ties are everywhere.
+            let input: Vec<Pt> = (0..200)
+                .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
+                .collect();
+            let mut e = EndPoints::new(input.iter().map(|p| p.sort_key()).collect());
+            // The right point and slot of every live sweep-line edge.
+            let mut live: Vec<(Pt, Slot)> = Vec::new();
+            // The pending left points of buffer edges, with their slots.
+            let mut pending: Vec<(Pt, Slot)> = Vec::new();
+            let mut unreached: Vec<Pt> = input.clone();
+            for _ in 0..2_000 {
+                match rnd(5) {
+                    // An edge to an input right point not reached yet.
+                    0 | 1 if !unreached.is_empty() => {
+                        let r = unreached[rnd(unreached.len() as u64) as usize];
+                        let slot = e.input_slot(r);
+                        e.add(r, slot);
+                        live.push((r, slot));
+                    }
+                    // An edge to a point at or behind the points reached,
+                    // with a new slot and no pending edge there: a backward
+                    // step of section 7.6.1.
+                    3 if rnd(4) == 0 && passed.is_some() => {
+                        let r = Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]);
+                        let r = if passed.is_some_and(|m| r <= m) {
+                            r
                         } else {
-                            e.add(q);
-                            pending.push(q);
+                            passed.unwrap_or(r)
+                        };
+                        let slot = e.new_slot();
+                        e.add(r, slot);
+                        live.push((r, slot));
+                    }
+                    // A split: one edge shortened to a point, which becomes a
+                    // pending left point (or, reversed, uncovered).
+                    2 if !live.is_empty() => {
+                        let (_, old) = live.swap_remove(rnd(live.len() as u64) as usize);
+                        e.remove(old);
+                        let (q, slot) = match rnd(4) {
+                            0 if !live.is_empty() => live[rnd(live.len() as u64) as usize],
+                            1 if !unreached.is_empty() => (
+                                unreached[rnd(unreached.len() as u64) as usize],
+                                e.new_slot(),
+                            ),
+                            _ => (
+                                Pt::new([rnd(40) as f64 + 0.25, rnd(5) as f64]),
+                                e.new_slot(),
+                            ),
+                        };
+                        if rnd(8) == 0 {
+                            e.add_uncovered(q, slot);
+                        } else {
+                            e.add(q, slot);
+                            pending.push((q, slot));
                         }
-                        *plain.entry(q).or_insert(0) += 1;
+                        live.push((q, slot));
                     }
-                }
-                // An event at the smallest candidate or pending point.
-                _ => {
-                    let pmin = pending.iter().min().copied();
-                    let p = match (e.candidate(), pmin) {
-                        (Some(a), Some(b)) => a.min(b),
-                        (a, None) => a.unwrap_or(Pt::new([1e9, 0.0])),
-                        (None, b) => b.unwrap_or(Pt::new([1e9, 0.0])),
-                    };
-                    // Every live end is covered: none lies before p.
-                    for q in plain.keys() {
-                        assert!(*q >= p, "live end {q:?} skipped before {p:?}");
-                    }
-                    pending.retain(|&q| q != p);
-                    unreached_inputs.retain(|&q| q != p);
-                    let n = e.reach(p);
-                    assert_eq!(n, Some(plain.remove(&p).unwrap_or(0)));
-                    // Counting stopped and restarted from the live ends.
-                    if rnd(50) == 0 {
-                        e.stop_counting();
-                        assert_eq!(e.reach(Pt::new([-1.0, 0.0])), None);
-                        e.start_counting();
-                        for (&q, &n) in &plain {
-                            for _ in 0..n {
-                                e.add(q);
+                    // An event at the smallest candidate or pending point.
+                    _ => {
+                        let pmin = pending.iter().map(|q| q.0).min();
+                        let p = match (e.candidate(), pmin) {
+                            (Some(a), Some(b)) => a.min(b),
+                            (Some(a), None) | (None, Some(a)) => a,
+                            (None, None) => continue,
+                        };
+                        // Every live end is covered: none lies before p.
+                        for (q, _) in &live {
+                            assert!(*q >= p, "live end {q:?} skipped before {p:?}");
+                        }
+                        let mut n = e.reach(p);
+                        passed = passed.max(Some(p));
+                        for &(q, slot) in &pending {
+                            if q == p {
+                                n += e.take(slot);
                             }
                         }
+                        pending.retain(|q| q.0 != p);
+                        unreached.retain(|&q| q != p);
+                        let expected = live.iter().filter(|q| q.0 == p).count();
+                        live.retain(|q| q.0 != p);
+                        assert_eq!(n as usize, expected, "count at {p:?}");
+                        events += 1;
                     }
                 }
             }
         }
+        assert!(events > 4_000, "{events} events");
     }
 }

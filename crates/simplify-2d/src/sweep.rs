@@ -8,7 +8,7 @@
 //!   (section 7.1.2), keyed by (leftmost, rightmost) point;
 //! - the *sweep line*: a vector of edges in logical bottom-to-top order, each
 //!   holding the winding number of the cell below it (section 7.4.3);
-//! - the right end points of sweep-line edges, counted by point
+//! - the right end points of sweep-line edges, counted by slot
 //!   (`end_points.rs`).
 //!
 //! The next event point is the smaller of the first pending left point and
@@ -25,7 +25,7 @@
 //! 2): the sweep never iterates to a fixed point (section 7.6.3).
 
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
-use crate::end_points::EndPoints;
+use crate::end_points::{EndPoints, Slot};
 use crate::point::Pt;
 use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
@@ -54,6 +54,8 @@ struct Pending<W> {
     m: W,
     k: u32,
     origin: u32,
+    /// The counting slot of `r` (`end_points.rs`).
+    rslot: Slot,
 }
 
 /// A buffer edge's place in the min-heap of pending buffer edges: its left
@@ -64,6 +66,9 @@ struct BufferKey {
     key: u128,
     seq: u64,
     slot: u32,
+    /// The counting slot that this edge's left point covers
+    /// (`end_points.rs`), visited when the edge is taken.
+    lslot: Slot,
 }
 
 impl PartialOrd for BufferKey {
@@ -139,6 +144,8 @@ struct SweepEdge<W> {
     id: u32,
     /// The output vertex id of `l` (processed, so already a vertex).
     lid: u32,
+    /// The counting slot of `r` (`end_points.rs`).
+    rslot: Slot,
 }
 
 impl<W> SweepEdge<W> {
@@ -159,15 +166,6 @@ enum Class {
 
 const NO_ID: u32 = u32::MAX;
 
-/// The sweep keeps counts of right points by point while the line is
-/// longer than `COUNT_ABOVE` edges and until it is shorter than
-/// `COUNT_BELOW`; on shorter lines it counts the edges ending at an event
-/// by looking at each. A count update is a hash operation (about a hundred
-/// instructions, three or four per event) and a look costs a few
-/// instructions per edge: they break even near a hundred edges.
-const COUNT_ABOVE: usize = 128;
-const COUNT_BELOW: usize = 64;
-
 /// An edge about to be inserted at the event point: its right point, the
 /// gradient key of section 7.3 (non-vertical by slope, vertical last),
 /// multiplicity, adjustment count, provenance.
@@ -178,6 +176,7 @@ struct NewEdge<W> {
     m: W,
     k: u32,
     origin: u32,
+    rslot: Slot,
 }
 
 struct Sweep<W: Winding> {
@@ -237,6 +236,7 @@ pub(crate) fn run<W: Winding>(
             m,
             k: 0,
             origin: e.origin,
+            rslot: 0,
         });
     }
     sweep(keyed, count, dims, max_abs)
@@ -265,8 +265,11 @@ fn sweep<W: Winding>(
     for e in &mut keyed {
         e.seq = 0;
     }
-    let merged = keyed;
-    let ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
+    let mut merged = keyed;
+    let mut ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
+    for e in &mut merged {
+        e.rslot = ends.input_slot(e.r);
+    }
     let mut s = Sweep {
         dims,
         input: merged,
@@ -311,13 +314,17 @@ fn sweep<W: Winding>(
         };
         let mut pending = std::mem::take(&mut s.scratch_pending);
         pending.clear();
+        let mut ending = s.ends.reach(p);
         if pe == Some(p) {
-            s.take_pending_at(p, &mut pending);
+            ending += s.take_pending_at(p, &mut pending);
         }
-        let ending = match s.ends.reach(p) {
-            Some(n) => n,
-            None => Sweep::ending_in(&s.line, p, 0, s.line.len()),
-        };
+        debug_assert_eq!(
+            ending,
+            Sweep::ending_in(&s.line, p, 0, s.line.len()),
+            "end point count at ({}, {})",
+            p.x,
+            p.y
+        );
         // Pending edges that cancelled out, and a candidate whose edges were
         // shortened or cancelled, never made `p` an event.
         if pending.is_empty() && ending == 0 {
@@ -333,17 +340,6 @@ fn sweep<W: Winding>(
         let r = s.process(p, ending, &mut pending);
         s.scratch_pending = pending;
         r?;
-        // Counts by point pay off on long lines only (`end_points.rs`).
-        let len = s.line.len();
-        if s.ends.counting() {
-            if len < COUNT_BELOW {
-                s.ends.stop_counting();
-            }
-        } else if len > COUNT_ABOVE {
-            let ends = &mut s.ends;
-            ends.start_counting();
-            s.line.for_range(0, len, |e| ends.add(e.r));
-        }
     }
     if !s.line.is_empty() {
         return Err(SimplifyError::Internal(format!(
@@ -382,12 +378,13 @@ impl<W: Winding> Sweep<W> {
     /// of section 7.1.2, so a buffer edge going downwards vertically is
     /// reversed with its multiplicity negated (section 7.6.1); identical
     /// pending edges merge when their left point is reached.
-    fn add_pending(&mut self, a: Pt, b: Pt, m: W, k: u32, origin: u32) {
-        let (l, r, m) = match a.cmp(&b) {
+    fn add_pending(&mut self, a: (Pt, Slot), b: (Pt, Slot), m: W, k: u32, origin: u32) {
+        let (l, r, m) = match a.0.cmp(&b.0) {
             Ordering::Less => (a, b, m),
             Ordering::Greater => (b, a, m.negated()),
             Ordering::Equal => return,
         };
+        let ((l, lslot), (r, rslot)) = (l, r);
         let seq = self.next_seq;
         self.next_seq += 1;
         let edge = Some(Pending {
@@ -397,6 +394,7 @@ impl<W: Winding> Sweep<W> {
             m,
             k,
             origin,
+            rslot,
         });
         let slot = match self.free.pop() {
             Some(slot) => {
@@ -412,6 +410,7 @@ impl<W: Winding> Sweep<W> {
             key: l.sort_key(),
             seq,
             slot,
+            lslot,
         });
     }
 
@@ -428,8 +427,9 @@ impl<W: Winding> Sweep<W> {
 
     /// Removes the pending edges whose left point is `p` and returns them
     /// merged (section 7.1.2), sorted by right point, non-zero, in `out`
-    /// (empty on entry).
-    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) {
+    /// (empty on entry). Returns the number of sweep-line edges ending at
+    /// `p` in the counting slots the buffer edges cover (`end_points.rs`).
+    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> u32 {
         while let Some(e) = self.input.get_mut(self.next_input) {
             if e.l != p {
                 break;
@@ -443,12 +443,15 @@ impl<W: Winding> Sweep<W> {
                 m: std::mem::replace(&mut e.m, z),
                 k: e.k,
                 origin: e.origin,
+                rslot: e.rslot,
             });
             self.next_input += 1;
         }
         let key = p.sort_key();
+        let mut ending = 0;
         while self.buffer.peek().is_some_and(|e| e.key == key) {
             if let Some(e) = self.buffer.pop() {
+                ending += self.ends.take(e.lslot);
                 if let Some(edge) = self.slab.get_mut(e.slot as usize).and_then(Option::take) {
                     out.push(edge);
                 }
@@ -459,6 +462,7 @@ impl<W: Winding> Sweep<W> {
             out.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
         }
         merge_identical(out);
+        ending
     }
 
     /// The number of edges `lo..hi` of `line` that end at `p`.
@@ -521,24 +525,44 @@ impl<W: Winding> Sweep<W> {
     /// index range `[lo, hi)`. Section 7.6.2 examines the edges from the
     /// bottom until one ends at `p` or does not pass under it, and from the
     /// top until one ends at `p` or does not pass over it. For O(log n) per
-    /// event that scan is done by binary search, extended locally past any
-    /// misgrouped neighbours; when the result does not hold every edge that
-    /// ends at `p` (only possible with inconsistent data), the linear scans
-    /// of section 7.6.2 are run instead.
+    /// event the lower end is found by binary search, extended locally past
+    /// any misgrouped neighbours, and the upper end by scanning up from
+    /// there to the first edge passing over `p` (the scan costs no more
+    /// than removing the group). When the result does not hold every edge
+    /// that ends at `p` (only possible with inconsistent data), the linear
+    /// scans of section 7.6.2 are run instead.
     fn find_group(&mut self, p: Pt, expected_ends: u32) -> Result<(usize, usize), SimplifyError> {
         let line = &self.line;
         let len = line.len();
         let class = |i: usize| line.get(i).map(|e| Self::classify(e, p));
         let mut lo = line.partition_point(0, len, |e| Self::classify(e, p) == Class::Under);
-        let mut hi = line.partition_point(lo, len, |e| Self::classify(e, p) != Class::Over);
         while lo > 0 && class(lo - 1) != Some(Class::Under) {
             lo -= 1;
         }
+        // The group's upper end is found by a linear scan from its lower
+        // end, counting the edges that end at `p`: every edge it passes is
+        // in the group, which the event removes anyway.
+        let mut hi = lo;
+        let mut count = 0;
+        while let Some(c) = class(hi) {
+            match c {
+                Class::Over => break,
+                Class::Ends => count += 1,
+                Class::Under | Class::Through => {}
+            }
+            hi += 1;
+        }
+        if count == expected_ends {
+            return Ok((lo, hi));
+        }
+        // Inconsistent data (section 7.2) can put an edge passing over `p`
+        // below one that ends there: a binary search for the upper end
+        // looks past such an edge.
+        let mut hi = line.partition_point(lo, len, |e| Self::classify(e, p) != Class::Over);
         while hi < len && class(hi) != Some(Class::Over) {
             hi += 1;
         }
-        let count = Self::ending_in(line, p, lo, hi);
-        if count == expected_ends {
+        if Self::ending_in(line, p, lo, hi) == expected_ends {
             return Ok((lo, hi));
         }
         // Section 7.6.2, literally.
@@ -635,7 +659,7 @@ impl<W: Winding> Sweep<W> {
                 let k = (e.k + 1).max(k_p);
                 self.emit(&e, vid, k);
                 // Its right part is inserted again below (or merged away).
-                self.ends.remove(e.r);
+                self.ends.remove(e.rslot);
                 let (vertical, slope) = gradient(e.r);
                 block.push(NewEdge {
                     r: e.r,
@@ -644,6 +668,7 @@ impl<W: Winding> Sweep<W> {
                     m: e.m,
                     k,
                     origin: e.origin,
+                    rslot: e.rslot,
                 });
             }
         }
@@ -658,6 +683,7 @@ impl<W: Winding> Sweep<W> {
                 m: d.m,
                 k: d.k,
                 origin: d.origin,
+                rslot: d.rslot,
             });
         }
         // Order by gradient (section 7.3), vertical (upwards) last; identical
@@ -702,7 +728,7 @@ impl<W: Winding> Sweep<W> {
             }
             let id = self.id_to_edge.len() as u32;
             self.id_to_edge.push(NO_ID);
-            self.ends.add(it.r);
+            self.ends.add(it.r, it.rslot);
             self.fan_ids.push(id);
             let below = w.clone();
             w.add_assign(&it.m);
@@ -715,6 +741,7 @@ impl<W: Winding> Sweep<W> {
                 origin: it.origin,
                 id,
                 lid: vid,
+                rslot: it.rslot,
             });
         }
         self.scratch_block = block;
@@ -797,27 +824,29 @@ impl<W: Winding> Sweep<W> {
     /// Shortens sweep-line edge `i` to end at `q`, sending the rest to the
     /// buffer (section 7.4.1). Both parts get the adjustment count of
     /// section 8.4: one more than the edge's, at least the vertex's `k_q`.
-    fn split(&mut self, i: usize, q: Pt, k_q: u32) {
+    /// `q_slot` is the counting slot of `q` (`end_points.rs`).
+    fn split(&mut self, i: usize, q: Pt, q_slot: Slot, k_q: u32) {
         let Some(e) = self.line.get_mut(i) else {
             return;
         };
-        let (old_r, m, k, origin) = {
+        let (old_r, old_slot, m, k, origin) = {
             let k = (e.k + 1).max(k_q);
-            let old_r = e.r;
+            let old = (e.r, e.rslot);
             e.r = q;
+            e.rslot = q_slot;
             e.k = k;
-            (old_r, e.m.clone(), k, e.origin)
+            (old.0, old.1, e.m.clone(), k, e.origin)
         };
-        self.ends.remove(old_r);
+        self.ends.remove(old_slot);
         // The buffer edge from q makes q an event (section 7.4.1), unless
         // it runs downwards vertically and is keyed from its other end
         // (section 7.6.1).
         if q < old_r {
-            self.ends.add(q);
+            self.ends.add(q, q_slot);
         } else {
-            self.ends.add_uncovered(q);
+            self.ends.add_uncovered(q, q_slot);
         }
-        self.add_pending(q, old_r, m, k, origin);
+        self.add_pending((q, q_slot), (old_r, old_slot), m, k, origin);
     }
 
     /// Tests the adjacent sweep-line edges `i` (logically below) and `i + 1`.
@@ -832,16 +861,16 @@ impl<W: Winding> Sweep<W> {
         // A limit point of one edge in the interior of the other (section
         // 6.5, figure 7.6): split the other there.
         if Self::on_interior(a.r, b) {
-            let v = a.r;
+            let (v, v_slot) = (a.r, a.rslot);
             let kv = self.vertex_k(v);
-            self.split(i + 1, v, kv);
+            self.split(i + 1, v, v_slot, kv);
             self.stats.vertex_on_edge_splits += 1;
             return;
         }
         if Self::on_interior(b.r, a) {
-            let v = b.r;
+            let (v, v_slot) = (b.r, b.rslot);
             let kv = self.vertex_k(v);
-            self.split(i, v, kv);
+            self.split(i, v, v_slot, kv);
             self.stats.vertex_on_edge_splits += 1;
             return;
         }
@@ -883,6 +912,17 @@ impl<W: Winding> Sweep<W> {
         self.stats.intersections += 1;
         let split_a = q != a.l && q != a.r;
         let split_b = q != b.l && q != b.r;
+        // The counting slot of q: an end point's when q is one, else new.
+        let q_slot = if q == a.r {
+            a.rslot
+        } else if q == b.r {
+            b.rslot
+        } else if split_a || split_b {
+            self.ends.new_slot()
+        } else {
+            // Not used: nothing is split.
+            Slot::MAX
+        };
         // One look-up for the vertex's adjustment count: the new edges get
         // `max(k + 1, k_q)` (section 8.4), the vertex the larger of those.
         let info = self.points.k_mut(q);
@@ -896,10 +936,10 @@ impl<W: Winding> Sweep<W> {
         }
         *info = k_new;
         if split_a {
-            self.split(i, q, k_q);
+            self.split(i, q, q_slot, k_q);
         }
         if split_b {
-            self.split(i + 1, q, k_q);
+            self.split(i + 1, q, q_slot, k_q);
         }
     }
 }
