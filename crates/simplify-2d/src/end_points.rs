@@ -52,10 +52,10 @@ pub(crate) type Slot = u32;
 /// event points that covers them.
 #[derive(Debug, Default)]
 pub(crate) struct EndPoints {
-    /// The distinct right points of the input edges (as [`Pt::sort_key`]),
-    /// increasing; those before `next` have been passed. Input right point
-    /// `input[i]` has slot `i`.
-    input: Vec<u128>,
+    /// The right points of the input edges (as [`Pt::sort_key`]) with the
+    /// positions they were given in, sorted by point; those before `next`
+    /// have been passed. The first of a run of equal points is its slot.
+    input: Vec<(u128, u32)>,
     next: usize,
     /// Right points not covered by `input` or the pending edges, with
     /// their slots.
@@ -68,11 +68,17 @@ pub(crate) struct EndPoints {
 }
 
 impl EndPoints {
-    /// The queue for input edges with the given right points (sort keys, in
-    /// any order, repeats allowed).
-    pub(crate) fn new(mut input: Vec<u128>) -> Self {
-        crate::cells::sort_unstable(&mut input);
-        input.dedup();
+    /// The queue for input edges with the given right points (in any
+    /// order, repeats allowed).
+    pub(crate) fn new(rights: impl ExactSizeIterator<Item = Pt>) -> Self {
+        // One sort of (point, position) pairs gives the points in order
+        // and, through the runs of equal points, every position's slot;
+        // the order within a run does not matter.
+        let mut input: Vec<(u128, u32)> = rights
+            .enumerate()
+            .map(|(i, r)| (r.sort_key(), i as u32))
+            .collect();
+        crate::cells::sort_unstable_by(&mut input, |a, b| a.0.cmp(&b.0));
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
@@ -84,13 +90,16 @@ impl EndPoints {
         }
     }
 
-    /// The slot of input right point `r` (one of those given to
-    /// [`EndPoints::new`]), or a new slot if it is not one.
-    pub(crate) fn input_slot(&mut self, r: Pt) -> Slot {
-        match self.input.binary_search(&r.sort_key()) {
-            Ok(i) => i as Slot,
-            Err(_) => self.new_slot(),
-        }
+    /// The slot of every input right point, as (position given to
+    /// [`EndPoints::new`], slot) pairs.
+    pub(crate) fn input_slots(&self) -> impl Iterator<Item = (usize, Slot)> + '_ {
+        let mut first = 0;
+        self.input.iter().enumerate().map(move |(j, &(key, i))| {
+            if self.input.get(first).is_none_or(|f| f.0 != key) {
+                first = j;
+            }
+            (i as usize, first as Slot)
+        })
     }
 
     /// A new slot, for a point at which an edge was split.
@@ -102,7 +111,7 @@ impl EndPoints {
     /// The smallest candidate event point not passed yet.
     #[inline]
     pub(crate) fn candidate(&self) -> Option<Pt> {
-        let a = self.input.get(self.next).copied();
+        let a = self.input.get(self.next).map(|e| e.0);
         let b = self.extra.peek().map(|r| r.0 .0);
         match (a, b) {
             (Some(a), Some(b)) => Some(Pt::from_sort_key(a.min(b))),
@@ -119,9 +128,12 @@ impl EndPoints {
     pub(crate) fn reach(&mut self, p: Pt) -> u32 {
         let key = p.sort_key();
         let mut n = 0;
-        if self.input.get(self.next) == Some(&key) {
+        if self.input.get(self.next).is_some_and(|e| e.0 == key) {
             n += self.take(self.next as Slot);
             self.next += 1;
+            while self.input.get(self.next).is_some_and(|e| e.0 == key) {
+                self.next += 1;
+            }
         }
         while let Some(&Reverse((k, slot))) = self.extra.peek() {
             if k != key {
@@ -203,18 +215,28 @@ mod tests {
             let input: Vec<Pt> = (0..200)
                 .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
                 .collect();
-            let mut e = EndPoints::new(input.iter().map(|p| p.sort_key()).collect());
+            let mut e = EndPoints::new(input.iter().copied());
+            let mut input_slots = vec![Slot::MAX; input.len()];
+            for (i, slot) in e.input_slots() {
+                input_slots[i] = slot;
+            }
+            // Equal input points share a slot.
+            for (i, p) in input.iter().enumerate() {
+                for (j, q) in input.iter().enumerate() {
+                    assert_eq!(p == q, input_slots[i] == input_slots[j]);
+                }
+            }
             // The right point and slot of every live sweep-line edge.
             let mut live: Vec<(Pt, Slot)> = Vec::new();
             // The pending left points of buffer edges, with their slots.
             let mut pending: Vec<(Pt, Slot)> = Vec::new();
-            let mut unreached: Vec<Pt> = input.clone();
+            let mut unreached: Vec<(Pt, Slot)> = input.iter().copied().zip(input_slots).collect();
             for _ in 0..2_000 {
                 match rnd(5) {
                     // An edge to an input right point not reached yet.
                     0 | 1 if !unreached.is_empty() => {
-                        let r = unreached[rnd(unreached.len() as u64) as usize];
-                        let slot = e.input_slot(r);
+                        let j = rnd(unreached.len() as u64) as usize;
+                        let (r, slot) = unreached[j];
                         e.add(r, slot);
                         live.push((r, slot));
                     }
@@ -240,7 +262,7 @@ mod tests {
                         let (q, slot) = match rnd(4) {
                             0 if !live.is_empty() => live[rnd(live.len() as u64) as usize],
                             1 if !unreached.is_empty() => (
-                                unreached[rnd(unreached.len() as u64) as usize],
+                                unreached[rnd(unreached.len() as u64) as usize].0,
                                 e.new_slot(),
                             ),
                             _ => (
@@ -276,7 +298,7 @@ mod tests {
                             }
                         }
                         pending.retain(|q| q.0 != p);
-                        unreached.retain(|&q| q != p);
+                        unreached.retain(|q| q.0 != p);
                         let expected = live.iter().filter(|q| q.0 == p).count();
                         live.retain(|q| q.0 != p);
                         assert_eq!(n as usize, expected, "count at {p:?}");

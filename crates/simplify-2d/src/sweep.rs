@@ -266,9 +266,11 @@ fn sweep<W: Winding>(
         e.seq = 0;
     }
     let mut merged = keyed;
-    let mut ends = EndPoints::new(merged.iter().map(|e| e.r.sort_key()).collect());
-    for e in &mut merged {
-        e.rslot = ends.input_slot(e.r);
+    let ends = EndPoints::new(merged.iter().map(|e| e.r));
+    for (i, slot) in ends.input_slots() {
+        if let Some(e) = merged.get_mut(i) {
+            e.rslot = slot;
+        }
     }
     let mut s = Sweep {
         dims,
