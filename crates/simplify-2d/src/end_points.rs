@@ -124,10 +124,12 @@ impl EndPoints {
     /// pending left points, as reached, and returns the number of
     /// sweep-line edges that end there in the slots visited here: the input
     /// right point's and the heap's. The caller adds the slots of the
-    /// buffer edges starting at `p` ([`EndPoints::take`]).
-    pub(crate) fn reach(&mut self, p: Pt) -> u32 {
+    /// buffer edges starting at `p` ([`EndPoints::take`]). Also returns
+    /// whether the heap held `p` (every uncovered split point is there).
+    pub(crate) fn reach(&mut self, p: Pt) -> (u32, bool) {
         let key = p.sort_key();
         let mut n = 0;
+        let mut extra = false;
         if self.input.get(self.next).is_some_and(|e| e.0 == key) {
             n += self.take(self.next as Slot);
             self.next += 1;
@@ -141,11 +143,12 @@ impl EndPoints {
             }
             self.extra.pop();
             n += self.take(slot);
+            extra = true;
         }
         if self.passed.is_none_or(|m| p > m) {
             self.passed = Some(p);
         }
-        n
+        (n, extra)
     }
 
     /// Visits `slot` at its point: returns its count and zeroes it (the
@@ -290,7 +293,7 @@ mod tests {
                         for (q, _) in &live {
                             assert!(*q >= p, "live end {q:?} skipped before {p:?}");
                         }
-                        let mut n = e.reach(p);
+                        let mut n = e.reach(p).0;
                         passed = passed.max(Some(p));
                         for &(q, slot) in &pending {
                             if q == p {

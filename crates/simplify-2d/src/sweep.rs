@@ -316,9 +316,11 @@ fn sweep<W: Winding>(
         };
         let mut pending = std::mem::take(&mut s.scratch_pending);
         pending.clear();
-        let mut ending = s.ends.reach(p);
+        let (mut ending, mut split_point) = s.ends.reach(p);
         if pe == Some(p) {
-            ending += s.take_pending_at(p, &mut pending);
+            let (n, buffered) = s.take_pending_at(p, &mut pending);
+            ending += n;
+            split_point |= buffered;
         }
         debug_assert_eq!(
             ending,
@@ -339,7 +341,7 @@ fn sweep<W: Winding>(
                 "event limit {cap} exceeded (section 7.6.3 bound)"
             )));
         }
-        let r = s.process(p, ending, &mut pending);
+        let r = s.process(p, ending, split_point, &mut pending);
         s.scratch_pending = pending;
         r?;
     }
@@ -430,8 +432,9 @@ impl<W: Winding> Sweep<W> {
     /// Removes the pending edges whose left point is `p` and returns them
     /// merged (section 7.1.2), sorted by right point, non-zero, in `out`
     /// (empty on entry). Returns the number of sweep-line edges ending at
-    /// `p` in the counting slots the buffer edges cover (`end_points.rs`).
-    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> u32 {
+    /// `p` in the counting slots the buffer edges cover (`end_points.rs`),
+    /// and whether any buffer edge started at `p`.
+    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> (u32, bool) {
         while let Some(e) = self.input.get_mut(self.next_input) {
             if e.l != p {
                 break;
@@ -451,7 +454,9 @@ impl<W: Winding> Sweep<W> {
         }
         let key = p.sort_key();
         let mut ending = 0;
+        let mut buffered = false;
         while self.buffer.peek().is_some_and(|e| e.key == key) {
+            buffered = true;
             if let Some(e) = self.buffer.pop() {
                 ending += self.ends.take(e.lslot);
                 if let Some(edge) = self.slab.get_mut(e.slot as usize).and_then(Option::take) {
@@ -460,11 +465,15 @@ impl<W: Winding> Sweep<W> {
                 self.free.push(e.slot);
             }
         }
-        if out.len() > 1 {
-            out.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
+        // The input edges alone are merged and sorted by right point
+        // already.
+        if buffered {
+            if out.len() > 1 {
+                out.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
+            }
+            merge_identical(out);
         }
-        merge_identical(out);
-        ending
+        (ending, buffered)
     }
 
     /// The number of edges `lo..hi` of `line` that end at `p`.
@@ -482,33 +491,27 @@ impl<W: Winding> Sweep<W> {
     /// `y_at_x` (Table 7.1) exactly as the vertex-on-edge rule of section 6.5.
     #[inline]
     fn classify(e: &SweepEdge<W>, p: Pt) -> Class {
-        if e.r == p {
-            return Class::Ends;
-        }
-        if e.is_vertical() {
-            let (lo, hi) = if e.l.y < e.r.y {
-                (e.l.y, e.r.y)
-            } else {
-                (e.r.y, e.l.y)
-            };
-            return if p.y < lo {
-                Class::Over
-            } else if p.y > hi {
-                Class::Under
-            } else {
-                Class::Through
-            };
-        }
-        // Table 7.1 interpolates from the closer end with |lambda| <= 1/2
-        // (up to rounding), so its result never leaves the edge's y-range
-        // (robust-arith's `tests/table_7_1.rs` checks this over every
-        // magnitude and on the coarse grids of section 7.7); outside that
-        // range the answer is known without the division.
+        // An edge whose y-range lies wholly below or above `p` passes under
+        // or over it; this decides most edges first. It is exact for
+        // vertical edges and for an edge ending at `p` (whose range holds
+        // `p.y`). For the others, Table 7.1 interpolates from the closer
+        // end with |lambda| <= 1/2 (up to rounding), so its result never
+        // leaves the edge's y-range (robust-arith's `tests/table_7_1.rs`
+        // checks this over every magnitude and on the coarse grids of
+        // section 7.7): outside that range the answer is known without the
+        // division.
         if e.l.y < p.y && e.r.y < p.y {
             return Class::Under;
         }
         if e.l.y > p.y && e.r.y > p.y {
             return Class::Over;
+        }
+        if e.r == p {
+            return Class::Ends;
+        }
+        if e.is_vertical() {
+            // The y-range holds `p.y`.
+            return Class::Through;
         }
         // The sweep guarantees l.x <= p.x <= r.x; clamping only guards the
         // precondition of Table 7.1 against a bug.
@@ -609,15 +612,18 @@ impl<W: Winding> Sweep<W> {
 
     /// Processes event point `p` (section 7.6.2), at which `expected`
     /// sweep-line edges end, with the pending edges starting there (merged,
-    /// sorted by right point).
+    /// sorted by right point). `split_point` is `false` when no edge was
+    /// split at `p` (no buffer edge or uncovered end starts there), so that
+    /// it has no adjustment count yet.
     fn process(
         &mut self,
         p: Pt,
         expected: u32,
+        split_point: bool,
         pending: &mut Vec<Pending<W>>,
     ) -> Result<(), SimplifyError> {
         self.x_s = p.x;
-        let (vid, k_p) = self.points.process(p);
+        let (vid, k_p) = self.points.process(p, split_point);
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
             match self.line.get(lo - 1) {
@@ -914,16 +920,16 @@ impl<W: Winding> Sweep<W> {
         self.stats.intersections += 1;
         let split_a = q != a.l && q != a.r;
         let split_b = q != b.l && q != b.r;
+        if !split_a && !split_b {
+            return;
+        }
         // The counting slot of q: an end point's when q is one, else new.
         let q_slot = if q == a.r {
             a.rslot
         } else if q == b.r {
             b.rslot
-        } else if split_a || split_b {
-            self.ends.new_slot()
         } else {
-            // Not used: nothing is split.
-            Slot::MAX
+            self.ends.new_slot()
         };
         // One look-up for the vertex's adjustment count: the new edges get
         // `max(k + 1, k_q)` (section 8.4), the vertex the larger of those.

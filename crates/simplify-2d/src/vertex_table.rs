@@ -77,12 +77,18 @@ impl VertexTable {
     }
 
     /// Processes point `p`: its vertex id (a new one the first time) and
-    /// adjustment count.
-    pub(crate) fn process(&mut self, p: Pt) -> (u32, u32) {
+    /// adjustment count. `adjusted` is `false` when the caller knows that
+    /// `p` was never given a count ahead of the sweep ([`VertexTable::k_mut`]
+    /// on a point not processed yet), which saves the look-up.
+    pub(crate) fn process(&mut self, p: Pt, adjusted: bool) -> (u32, u32) {
         if let Some(id) = self.done_id(p) {
             return (id, self.k[id as usize]);
         }
-        let k = if self.ahead.is_empty() {
+        debug_assert!(
+            adjusted || !self.ahead.contains_key(&p),
+            "point {p:?} has an adjustment count it was not expected to have"
+        );
+        let k = if !adjusted || self.ahead.is_empty() {
             0
         } else {
             self.ahead.remove(&p).unwrap_or(0)
@@ -128,7 +134,7 @@ mod tests {
             let p = Pt::new([x - rnd(3) as f64, rnd(4) as f64]);
             match rnd(3) {
                 0 => {
-                    let (id, k) = t.process(p);
+                    let (id, k) = t.process(p, true);
                     let next = ids.len() as u32;
                     assert_eq!(id, *ids.entry(p).or_insert(next));
                     assert_eq!(k, ks.get(&p).copied().unwrap_or(0));
