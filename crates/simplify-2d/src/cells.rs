@@ -2,7 +2,7 @@
 //! of section 7.7 with winding numbers, section 7.4.3), its validity check,
 //! and the simplified shape for a rule.
 
-use crate::collection::{elementary_intervals, EdgeCollection};
+use crate::collection::EdgeCollection;
 use crate::point::Pt;
 use crate::winding::Winding;
 use crate::SimplifyError;
@@ -264,7 +264,7 @@ impl<W: Winding> CellStructure<W> {
         // The edge collection of section 7.1.2 on vertex ids: every edge is
         // keyed by its lexicographically ordered end points (distinct ids are
         // distinct points), multiplicity negated for right-to-left edges.
-        let mut sel: Vec<(u32, u32, i32)> = Vec::new();
+        let mut sel: Vec<(u32, u32, i32)> = Vec::with_capacity(self.edges.len());
         for e in &self.edges {
             if e.start == e.end || e.start >= nv || e.end >= nv {
                 continue;
@@ -283,24 +283,23 @@ impl<W: Winding> CellStructure<W> {
                 sel.push((b, a, -1));
             }
         }
-        // The vertices the selected edges use, in lexicographic order. Ids
-        // were given in event order, which is lexicographic except after
-        // the backward steps of section 7.6.1: check before sorting.
-        let mut order: Vec<u32> = {
-            let mut used = vec![false; v.len()];
-            for &(a, b, _) in &sel {
-                used[a as usize] = true;
-                used[b as usize] = true;
-            }
-            (0..nv).filter(|&i| used[i as usize]).collect()
-        };
+        // The vertices the selected edges use (marked in `rank` until they
+        // are ranked), in lexicographic order. Ids were given in event
+        // order, which is lexicographic except after the backward steps of
+        // section 7.6.1: check before sorting.
+        let mut rank = vec![0u32; v.len()];
+        for &(a, b, _) in &sel {
+            rank[a as usize] = 1;
+            rank[b as usize] = 1;
+        }
+        let mut order: Vec<u32> = Vec::with_capacity(v.len());
+        order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
         if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
             let mut keyed: Vec<(u128, u32)> =
                 order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
             sort_unstable(&mut keyed);
             order = keyed.into_iter().map(|(_, i)| i).collect();
         }
-        let mut rank = vec![u32::MAX; v.len()];
         for (r, &i) in order.iter().enumerate() {
             rank[i as usize] = r as u32;
         }
@@ -313,10 +312,7 @@ impl<W: Winding> CellStructure<W> {
             .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
             .collect();
         let mut edges = merge_keyed(ranked, points.len());
-        if merge_vertical_edges(&mut edges, &points) {
-            // The merged vertical edges are new keys: restore the order.
-            sort_unstable(&mut edges);
-        }
+        merge_vertical_edges(&mut edges, &points);
         // Keep the vertices some edge still uses (merging can drop some);
         // renumbering in order keeps the edges sorted.
         let mut new_index = vec![u32::MAX; points.len()];
@@ -432,46 +428,103 @@ fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
 /// Section 7.6.1, footnote 9: the vertical edges at each x are replaced by
 /// their 1D simplification, the elementary intervals between their end
 /// points with the summed multiplicity (as
-/// [`EdgeCollection::merge_vertical_edges`], on vertex ids). Returns
-/// whether any edge was replaced.
-fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) -> bool {
-    let mut vertical: Vec<usize> = (0..edges.len())
-        .filter(|&i| v[edges[i].0 as usize][0] == v[edges[i].1 as usize][0])
-        .collect();
-    if vertical.len() < 2 {
-        return false;
+/// [`EdgeCollection::merge_vertical_edges`], on vertex ids).
+///
+/// `edges` are keyed edges `(l, r, m)` sorted by `(l, r)` with distinct keys
+/// and non-zero multiplicities, on the ranks of the lexicographically sorted
+/// points `v` (as `merge_keyed` returns them), and they stay so: the
+/// intervals take the place of the edges they replace in one pass, without
+/// sorting again. The points at one x have consecutive ranks in y order, so
+/// the edges leaving them form one run of `edges`, the vertical edges of
+/// that x are those of the run whose right end lies at that x too, and the
+/// break points of their 1D simplification are found by adding the
+/// multiplicities at the ranks of their ends (as `sort_by_rank` counts)
+/// rather than by sorting marks by y.
+fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
+    let x_of = |i: u32| v[i as usize][0];
+    // Most shapes have no x with two vertical edges: find the first such x
+    // (its vertical edges are consecutive among the vertical edges) before
+    // copying anything, then the start of its run.
+    let mut last = None;
+    let Some(second) = edges.iter().position(|&(l, r, _)| {
+        let x = x_of(l);
+        x == x_of(r) && last.replace(x) == Some(x)
+    }) else {
+        return;
+    };
+    let x = x_of(edges[second].0);
+    let mut i = second;
+    while i > 0 && x_of(edges[i - 1].0) == x {
+        i -= 1;
     }
-    let x_of = |i: usize| v[edges[i].0 as usize][0];
-    // The order within one x does not matter: the marks are sorted by y
-    // and summed.
-    vertical.sort_unstable_by(|&a, &b| x_of(a).total_cmp(&x_of(b)));
-    let mut removed = vec![false; edges.len()];
-    let mut extra: Vec<(u32, u32, i32)> = Vec::new();
-    let mut marks: Vec<(f64, u32, i32)> = Vec::new();
-    let mut i = 0;
-    while i < vertical.len() {
-        let x = x_of(vertical[i]);
-        let mut j = i;
-        while j < vertical.len() && x_of(vertical[j]) == x {
+    let mut out: Vec<(u32, u32, i32)> = Vec::with_capacity(edges.len());
+    out.extend_from_slice(&edges[..i]);
+    // The summed multiplicity at each rank from the lowest to the highest
+    // end of the vertical edges of one x, `None` at ranks that are not an
+    // end of one (they do not break an interval).
+    let mut sums: Vec<Option<i32>> = Vec::new();
+    while let Some(&(first, _, _)) = edges.get(i) {
+        let x = x_of(first);
+        let (mut j, mut vertical) = (i, 0);
+        let (mut lowest, mut highest) = (u32::MAX, 0);
+        while let Some(&(l, r, _)) = edges.get(j) {
+            if x_of(l) != x {
+                break;
+            }
+            if x_of(r) == x {
+                vertical += 1;
+                lowest = lowest.min(l);
+                highest = highest.max(r);
+            }
             j += 1;
         }
-        if j - i >= 2 {
-            marks.clear();
-            for &e in &vertical[i..j] {
-                removed[e] = true;
-                let (l, r, m) = edges[e];
-                marks.push((v[l as usize][1], l, m));
-                marks.push((v[r as usize][1], r, m.wrapping_neg()));
-            }
-            elementary_intervals(&mut marks, |from, to, run| extra.push((from, to, run)));
-        }
+        let run = &edges[i..j];
         i = j;
+        if vertical < 2 {
+            out.extend_from_slice(run);
+            continue;
+        }
+        sums.clear();
+        sums.resize((highest - lowest) as usize + 1, None);
+        for &(l, r, m) in run {
+            if x_of(r) == x {
+                for (end, m) in [(l, m), (r, m.wrapping_neg())] {
+                    let s = &mut sums[(end - lowest) as usize];
+                    *s = Some(s.unwrap_or(0).wrapping_add(m));
+                }
+            }
+        }
+        // Bottom to top, each interval between consecutive break points
+        // with a non-zero running sum, after the non-vertical edges leaving
+        // lower points and before those leaving its lower end (their right
+        // ends lie further right).
+        let mut k = 0;
+        let mut below: Option<(u32, i32)> = None;
+        for (at, s) in (lowest..).zip(&sums) {
+            let Some(s) = *s else {
+                continue;
+            };
+            let mut sum = s;
+            if let Some((from, run_sum)) = below {
+                sum = run_sum.wrapping_add(s);
+                if run_sum != 0 {
+                    while let Some(&e) = run.get(k) {
+                        if e.0 >= from {
+                            break;
+                        }
+                        if x_of(e.1) != x {
+                            out.push(e);
+                        }
+                        k += 1;
+                    }
+                    out.push((from, at, run_sum));
+                }
+            }
+            below = Some((at, sum));
+        }
+        out.extend(run[k..].iter().filter(|e| x_of(e.1) != x));
     }
-    let mut keep = removed.iter().map(|r| !r);
-    edges.retain(|_| keep.next().unwrap_or(true));
-    let changed = removed.iter().any(|&r| r);
-    edges.extend(extra);
-    changed
+    *edges = out;
 }
 
 /// Below this length a sort runs on the calling thread.
@@ -497,5 +550,138 @@ pub(crate) fn sort_unstable_by<T: Send>(
         v.par_sort_unstable_by(cmp);
     } else {
         v.sort_unstable_by(cmp);
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::collection::elementary_intervals;
+    use std::collections::BTreeMap;
+
+    /// Keyed edges `(l, r, m)` on ranks, as `shape_with` builds them.
+    type Keyed = Vec<(u32, u32, i32)>;
+
+    /// A small xorshift generator, so that the cases are reproducible.
+    struct Rng(u64);
+
+    impl Rng {
+        fn below(&mut self, n: usize) -> usize {
+            self.0 ^= self.0 << 13;
+            self.0 ^= self.0 >> 7;
+            self.0 ^= self.0 << 17;
+            (self.0 % n as u64) as usize
+        }
+    }
+
+    /// Random keyed edges on the ranks of random points of a small grid
+    /// (so that many points share an x), most of them vertical, some with
+    /// multiplicities that wrap when summed.
+    fn random_case(rng: &mut Rng) -> (Keyed, Vec<[f64; 2]>) {
+        let (nx, ny) = (1 + rng.below(6), 1 + rng.below(9));
+        let mut v: Vec<[f64; 2]> = Vec::new();
+        for i in 0..nx {
+            for j in 0..ny {
+                if rng.below(4) > 0 {
+                    v.push([i as f64 * 0.5 - 1.0, j as f64 - 3.0]);
+                }
+            }
+        }
+        let n = v.len();
+        let mut sel = Vec::new();
+        if n < 2 {
+            return (sel, v);
+        }
+        for _ in 0..rng.below(60) {
+            let a = rng.below(n);
+            let b = if rng.below(4) > 0 {
+                // A point at the same x, if there is another.
+                let same: Vec<usize> = (0..n).filter(|&k| v[k][0] == v[a][0]).collect();
+                same[rng.below(same.len())]
+            } else {
+                rng.below(n)
+            };
+            if a == b {
+                continue;
+            }
+            let m = match rng.below(20) {
+                0 => i32::MIN,
+                1 => i32::MAX,
+                k => k as i32 % 7 - 3,
+            };
+            sel.push((a.min(b) as u32, a.max(b) as u32, m));
+        }
+        (sel, v)
+    }
+
+    /// The shape output's previous vertical merge: the vertical edges of
+    /// each x with two or more are removed, their elementary intervals
+    /// appended, and the whole list sorted again.
+    fn merge_vertical_edges_by_sorting(edges: &mut Keyed, v: &[[f64; 2]]) {
+        let x_of = |e: &(u32, u32, i32)| v[e.0 as usize][0];
+        let mut vertical: Vec<(u32, u32, i32)> = Vec::new();
+        edges.retain(|e| {
+            let keep = x_of(e) != v[e.1 as usize][0];
+            if !keep {
+                vertical.push(*e);
+            }
+            keep
+        });
+        vertical.sort_by(|a, b| x_of(a).total_cmp(&x_of(b)));
+        for group in vertical.chunk_by(|a, b| x_of(a) == x_of(b)) {
+            if group.len() < 2 {
+                edges.extend_from_slice(group);
+                continue;
+            }
+            let mut marks: Vec<(f64, u32, i32)> = Vec::new();
+            for &(l, r, m) in group {
+                marks.push((v[l as usize][1], l, m));
+                marks.push((v[r as usize][1], r, m.wrapping_neg()));
+            }
+            elementary_intervals(&mut marks, |from, to, run| edges.push((from, to, run)));
+        }
+        edges.sort_unstable();
+    }
+
+    /// `merge_keyed` sums and sorts as a map does.
+    #[test]
+    fn merge_keyed_sums_in_key_order() {
+        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        for _ in 0..2_000 {
+            let (sel, v) = random_case(&mut rng);
+            let mut map: BTreeMap<(u32, u32), i32> = BTreeMap::new();
+            for &(a, b, m) in &sel {
+                let s = map.entry((a, b)).or_insert(0);
+                *s = s.wrapping_add(m);
+            }
+            let expect: Keyed = map
+                .into_iter()
+                .filter(|&(_, m)| m != 0)
+                .map(|((a, b), m)| (a, b, m))
+                .collect();
+            assert_eq!(merge_keyed(sel, v.len()), expect);
+        }
+    }
+
+    /// The one-pass vertical merge gives exactly the edges and the order of
+    /// removing, appending and sorting again.
+    #[test]
+    fn vertical_merge_matches_a_full_sort() {
+        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut merged = 0;
+        for _ in 0..5_000 {
+            let (sel, v) = random_case(&mut rng);
+            let edges = merge_keyed(sel, v.len());
+            let mut expect = edges.clone();
+            merge_vertical_edges_by_sorting(&mut expect, &v);
+            let mut got = edges.clone();
+            merge_vertical_edges(&mut got, &v);
+            assert_eq!(got, expect, "edges {edges:?} on points {v:?}");
+            if got != edges {
+                merged += 1;
+            }
+        }
+        // The cases do exercise the merge.
+        assert!(merged > 1_000, "only {merged} cases changed");
     }
 }
