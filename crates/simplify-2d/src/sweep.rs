@@ -194,7 +194,6 @@ struct Sweep<W: Winding> {
     /// The right end points of the sweep-line edges.
     ends: EndPoints,
     points: VertexTable,
-    scratch_group: Vec<SweepEdge<W>>,
     scratch_block: Vec<NewEdge<W>>,
     scratch_new: Vec<SweepEdge<W>>,
     scratch_pending: Vec<Pending<W>>,
@@ -283,7 +282,6 @@ fn sweep<W: Winding>(
         line: SweepLine::default(),
         ends,
         points: VertexTable::with_capacity(n * 2),
-        scratch_group: Vec::new(),
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_pending: Vec::new(),
@@ -590,13 +588,19 @@ impl<W: Winding> Sweep<W> {
     }
 
     /// Sends a finished sweep-line edge (from `l` to the vertex `end`) to
-    /// the output; it leaves the sweep line.
-    fn emit(&mut self, e: &SweepEdge<W>, end: u32, k: u32) {
+    /// the output edges; it leaves the sweep line.
+    fn emit(
+        edges: &mut Vec<CellEdge<W>>,
+        id_to_edge: &mut [u32],
+        e: &SweepEdge<W>,
+        end: u32,
+        k: u32,
+    ) {
         let start = e.lid;
         let mut left = e.below.clone();
         left.add_assign(&e.m);
-        let idx = self.edges.len() as u32;
-        self.edges.push(CellEdge {
+        let idx = edges.len() as u32;
+        edges.push(CellEdge {
             start,
             end,
             mult: e.m.clone(),
@@ -605,7 +609,7 @@ impl<W: Winding> Sweep<W> {
             k,
             origin: e.origin,
         });
-        if let Some(slot) = self.id_to_edge.get_mut(e.id as usize) {
+        if let Some(slot) = id_to_edge.get_mut(e.id as usize) {
             *slot = idx;
         }
     }
@@ -641,9 +645,6 @@ impl<W: Winding> Sweep<W> {
         // Right parts of split edges and pending edges starting at p.
         let mut block = std::mem::take(&mut self.scratch_block);
         block.clear();
-        let mut group = std::mem::take(&mut self.scratch_group);
-        group.clear();
-        self.line.for_range(lo, hi, |e| group.push(e.clone()));
         let mut w_hi = w_lo.clone();
         let gradient = |r: Pt| -> (bool, f64) {
             if r.x > p.x {
@@ -652,35 +653,38 @@ impl<W: Winding> Sweep<W> {
                 (true, 0.0)
             }
         };
-        for e in group.drain(..) {
+        // The group leaves the sweep line (replaced below); its edges are
+        // read in place.
+        let (edges, id_to_edge, fan_ids) =
+            (&mut self.edges, &mut self.id_to_edge, &mut self.fan_ids);
+        let (ends, stats) = (&mut self.ends, &mut self.stats);
+        self.line.for_range(lo, hi, |e| {
             w_hi.add_assign(&e.m);
-            self.fan_ids.push(e.id);
+            fan_ids.push(e.id);
             if e.r == p {
-                let k = e.k;
-                self.emit(&e, vid, k);
+                Self::emit(edges, id_to_edge, e, vid, e.k);
             } else {
                 // Passes through p, or misgrouped (section 7.6.2): split at p.
-                match Self::classify(&e, p) {
-                    Class::Through | Class::Ends => self.stats.through_splits += 1,
-                    Class::Under | Class::Over => self.stats.misgrouped_splits += 1,
+                match Self::classify(e, p) {
+                    Class::Through | Class::Ends => stats.through_splits += 1,
+                    Class::Under | Class::Over => stats.misgrouped_splits += 1,
                 }
                 let k = (e.k + 1).max(k_p);
-                self.emit(&e, vid, k);
+                Self::emit(edges, id_to_edge, e, vid, k);
                 // Its right part is inserted again below (or merged away).
-                self.ends.remove(e.rslot);
+                ends.remove(e.rslot);
                 let (vertical, slope) = gradient(e.r);
                 block.push(NewEdge {
                     r: e.r,
                     vertical,
                     slope,
-                    m: e.m,
+                    m: e.m.clone(),
                     k,
                     origin: e.origin,
                     rslot: e.rslot,
                 });
             }
-        }
-        self.scratch_group = group;
+        });
         let fan_mid = self.fan_ids.len() as u32;
         for d in pending.drain(..) {
             let (vertical, slope) = gradient(d.r);
