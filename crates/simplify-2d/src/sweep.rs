@@ -250,15 +250,11 @@ fn sweep<W: Winding>(
     dims: usize,
     max_abs: f64,
 ) -> Result<CellStructure<W>, SimplifyError> {
-    // Sorted by key; identical edges stay in input order (the position
-    // breaks ties), as the collection would have merged them one at a
-    // time. Keys with the position are distinct, so any sort gives the
-    // same order; sorting in place keeps one copy of the input.
-    crate::cells::sort_unstable_by(&mut keyed, |a, b| {
-        a.l.cmp(&b.l)
-            .then_with(|| a.r.cmp(&b.r))
-            .then(a.seq.cmp(&b.seq))
-    });
+    // Sorted by key; identical edges stay in input order (a stable sort),
+    // as the collection would have merged them one at a time. (A stable
+    // merge sort moves these large items less than the unstable sort with
+    // the position as the tie-break, for the same order.)
+    crate::cells::sort_stable_by(&mut keyed, |a, b| a.l.cmp(&b.l).then_with(|| a.r.cmp(&b.r)));
     merge_identical(&mut keyed);
     // Input edges precede every buffer edge at their left point.
     for e in &mut keyed {
