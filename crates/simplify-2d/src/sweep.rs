@@ -91,11 +91,11 @@ impl Ord for BufferKey {
 /// multiplicity cancels to zero is removed, and a later identical edge
 /// starts afresh.
 fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
-    // Most points start one edge: nothing to merge.
-    if let [only] = items.as_slice() {
-        if only.m.is_zero() {
-            items.clear();
-        }
+    // Most points start edges to distinct right points, none cancelled:
+    // nothing to merge.
+    if items.windows(2).all(|w| w[0].l != w[1].l || w[0].r != w[1].r)
+        && items.iter().all(|e| !e.m.is_zero())
+    {
         return;
     }
     // Items before `w` are the result; `open` while the last of them may
@@ -345,16 +345,18 @@ fn sweep<W: Winding>(
             s.line.len()
         )));
     }
-    // Translate the fans from sweep-edge ids to cell-edge indices.
-    let mut fan_edges = Vec::with_capacity(s.fan_ids.len());
-    for &id in &s.fan_ids {
+    // Translate the fans from sweep-edge ids to cell-edge indices, in
+    // place.
+    let mut fan_edges = std::mem::take(&mut s.fan_ids);
+    for slot in &mut fan_edges {
+        let id = *slot;
         let e = s.id_to_edge.get(id as usize).copied().unwrap_or(NO_ID);
         if e == NO_ID {
             return Err(SimplifyError::Internal(format!(
                 "sweep edge {id} was never sent to the output"
             )));
         }
-        fan_edges.push(e);
+        *slot = e;
     }
     let k_max = s.edges.iter().map(|e| e.k).max().unwrap_or(0);
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
