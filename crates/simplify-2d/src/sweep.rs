@@ -58,18 +58,26 @@ struct Pending<W> {
     rslot: Slot,
 }
 
-/// A buffer edge's place in the min-heap of pending buffer edges: its left
-/// point (as [`Pt::sort_key`]), then insertion order; the edge itself is in
-/// slot `slot` of the buffer slab.
-#[derive(Clone, Copy, PartialEq, Eq)]
+/// A buffer edge's place in the min-heap of pending buffer edges, ordered
+/// by its left point (as [`Pt::sort_key`]) alone: the edges taken at a point
+/// are ordered by right point and insertion order afterwards. The edge
+/// itself is in slot `slot` of the buffer slab.
+#[derive(Clone, Copy)]
 struct BufferKey {
     key: u128,
-    seq: u64,
     slot: u32,
     /// The counting slot that this edge's left point covers
     /// (`end_points.rs`), visited when the edge is taken.
     lslot: Slot,
 }
+
+impl PartialEq for BufferKey {
+    fn eq(&self, other: &Self) -> bool {
+        self.key == other.key
+    }
+}
+
+impl Eq for BufferKey {}
 
 impl PartialOrd for BufferKey {
     fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
@@ -80,7 +88,7 @@ impl PartialOrd for BufferKey {
 impl Ord for BufferKey {
     fn cmp(&self, other: &Self) -> Ordering {
         // Reversed: `BinaryHeap` is a max-heap.
-        (other.key, other.seq).cmp(&(self.key, self.seq))
+        other.key.cmp(&self.key)
     }
 }
 
@@ -93,7 +101,9 @@ impl Ord for BufferKey {
 fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Most points start edges to distinct right points, none cancelled:
     // nothing to merge.
-    if items.windows(2).all(|w| w[0].l != w[1].l || w[0].r != w[1].r)
+    if items
+        .windows(2)
+        .all(|w| w[0].l != w[1].l || w[0].r != w[1].r)
         && items.iter().all(|e| !e.m.is_zero())
     {
         return;
@@ -408,7 +418,6 @@ impl<W: Winding> Sweep<W> {
         };
         self.buffer.push(BufferKey {
             key: l.sort_key(),
-            seq,
             slot,
             lslot,
         });
