@@ -137,6 +137,22 @@ fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     items.truncate(w);
 }
 
+/// Sorts `v` stably by `order`: by insertion when it holds a few items (as
+/// at most events), else by the standard library's merge sort.
+fn sort_small_by<T>(v: &mut [T], order: impl Fn(&T, &T) -> Ordering) {
+    if v.len() <= 8 {
+        for i in 1..v.len() {
+            let mut j = i;
+            while j > 0 && order(&v[j - 1], &v[j]) == Ordering::Greater {
+                v.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+    } else {
+        v.sort_by(order);
+    }
+}
+
 /// A sweep-line edge from its logical left point `l` (already processed)
 /// to its logical right point `r` (not yet processed). Normally `l ≺ r`;
 /// a downward vertical edge (section 7.6.1) has `r ≺ l` with equal x.
@@ -473,9 +489,7 @@ impl<W: Winding> Sweep<W> {
         // The input edges alone are merged and sorted by right point
         // already.
         if buffered {
-            if out.len() > 1 {
-                out.sort_unstable_by(|a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
-            }
+            sort_small_by(out, |a, b| a.r.cmp(&b.r).then(a.seq.cmp(&b.seq)));
             merge_identical(out);
         }
         (ending, buffered)
@@ -714,20 +728,9 @@ impl<W: Winding> Sweep<W> {
                     .then(a.slope.total_cmp(&b.slope))
                     .then(a.r.cmp(&b.r))
             };
-            // A stable sort (identical segments keep their order, so the
-            // first one's provenance is kept); by insertion on the few
-            // edges of most events.
-            if block.len() <= 8 {
-                for i in 1..block.len() {
-                    let mut j = i;
-                    while j > 0 && order(&block[j - 1], &block[j]) == Ordering::Greater {
-                        block.swap(j - 1, j);
-                        j -= 1;
-                    }
-                }
-            } else {
-                block.sort_by(order);
-            }
+            // A stable sort: identical segments keep their order, so the
+            // first one's provenance is kept.
+            sort_small_by(&mut block, order);
             block.dedup_by(|item, last| {
                 if last.r == item.r {
                     last.m.add_assign(&item.m);
