@@ -2,7 +2,7 @@
 //! rule, and Booleans of two or more through simplification (section 6.1).
 
 use crate::cells::{CellStructure, SweepStats};
-use crate::sweep::{run, InputEdge};
+use crate::sweep::{run, InputEdge, Rotations};
 use crate::winding::{BooleanOp, FillRule, Winding};
 use crate::SimplifyError;
 use topology::PolygonSet2;
@@ -102,12 +102,21 @@ fn max_abs(sets: &[&PolygonSet2]) -> f64 {
 /// assert_eq!(cells.vertices().len(), 5); // the crossing (1, 1) was added
 /// ```
 pub fn cell_structure(set: &PolygonSet2) -> Result<CellStructure<i32>, SimplifyError> {
+    cells_of_one(set, Rotations::Record)
+}
+
+/// The cell structure of one polygon set, recording the rotations or not.
+fn cells_of_one(
+    set: &PolygonSet2,
+    rotations: Rotations,
+) -> Result<CellStructure<i32>, SimplifyError> {
     validate(set, 0)?;
     run(
         edges_of(set, 0, |m| m),
         set.edge_count(),
         1,
         max_abs(&[set]),
+        rotations,
     )
 }
 
@@ -129,7 +138,7 @@ pub fn cell_structure(set: &PolygonSet2) -> Result<CellStructure<i32>, SimplifyE
 /// assert_eq!(both.shape.signed_area(), 1.0);
 /// ```
 pub fn simplify(set: &PolygonSet2, rule: FillRule) -> Result<Simplified, SimplifyError> {
-    let cells = cell_structure(set)?;
+    let cells = cells_of_one(set, Rotations::Skip)?;
     Ok(Simplified::from_cells(&cells, |w| rule.contains(*w)))
 }
 
@@ -139,10 +148,25 @@ pub fn boolean_cells(
     a: &PolygonSet2,
     b: &PolygonSet2,
 ) -> Result<CellStructure<[i32; 2]>, SimplifyError> {
+    cells_of_two(a, b, Rotations::Record)
+}
+
+/// The cell structure of two polygon sets, recording the rotations or not.
+fn cells_of_two(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    rotations: Rotations,
+) -> Result<CellStructure<[i32; 2]>, SimplifyError> {
     validate(a, 0)?;
     validate(b, 1)?;
     let input = edges_of(a, 0, |m| [m, 0]).chain(edges_of(b, a.edge_count() as u32, |m| [0, m]));
-    run(input, a.edge_count() + b.edge_count(), 2, max_abs(&[a, b]))
+    run(
+        input,
+        a.edge_count() + b.edge_count(),
+        2,
+        max_abs(&[a, b]),
+        rotations,
+    )
 }
 
 /// A Boolean operation through simplification (section 6.1): both
@@ -167,13 +191,22 @@ pub fn boolean(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<Simplified, SimplifyError> {
-    let cells = boolean_cells(a, b)?;
+    let cells = cells_of_two(a, b, Rotations::Skip)?;
     Ok(Simplified::from_cells(&cells, |w| op.contains(*w)))
 }
 
 /// The cell structure of any number of polygon sets assembled, with the
 /// winding number of every operand tracked separately.
 pub fn cell_structure_n(sets: &[PolygonSet2]) -> Result<CellStructure<Vec<i32>>, SimplifyError> {
+    cells_of_many(sets, Rotations::Record)
+}
+
+/// The cell structure of any number of polygon sets, recording the
+/// rotations or not.
+fn cells_of_many(
+    sets: &[PolygonSet2],
+    rotations: Rotations,
+) -> Result<CellStructure<Vec<i32>>, SimplifyError> {
     for (i, s) in sets.iter().enumerate() {
         validate(s, i)?;
     }
@@ -186,7 +219,7 @@ pub fn cell_structure_n(sets: &[PolygonSet2]) -> Result<CellStructure<Vec<i32>>,
         })
     });
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    run(input, total_edges(sets), n, max_abs(&refs))
+    run(input, total_edges(sets), n, max_abs(&refs), rotations)
 }
 
 /// An n-ary Boolean in one sweep: `keep` receives the winding number of
@@ -197,7 +230,7 @@ pub fn boolean_n(
     sets: &[PolygonSet2],
     keep: impl Fn(&[i32]) -> bool,
 ) -> Result<Simplified, SimplifyError> {
-    let cells = cell_structure_n(sets)?;
+    let cells = cells_of_many(sets, Rotations::Skip)?;
     Ok(Simplified::from_cells(&cells, |w| keep(w)))
 }
 
@@ -212,6 +245,6 @@ pub fn union_all(sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
     }
     let input = operands(sets).flat_map(|(_, s, offset)| edges_of(s, offset, |m| m));
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    let cells = run(input, total_edges(sets), 1, max_abs(&refs))?;
+    let cells = run(input, total_edges(sets), 1, max_abs(&refs), Rotations::Skip)?;
     Ok(Simplified::from_cells(&cells, |w| *w > 0))
 }

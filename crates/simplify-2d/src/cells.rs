@@ -84,8 +84,9 @@ pub struct SweepStats {
 pub struct CellStructure<W> {
     vertices: Vec<[f64; 2]>,
     edges: Vec<CellEdge<W>>,
-    fans: Vec<Fan<W>>,
-    fan_edges: Vec<u32>,
+    /// The rotations around the vertices (the fans, and the edges they
+    /// list), when the sweep recorded them.
+    rotations: Option<(Vec<Fan<W>>, Vec<u32>)>,
     k_max: u32,
     alpha: f64,
     dims: usize,
@@ -97,8 +98,7 @@ impl<W: Winding> CellStructure<W> {
     pub(crate) fn new(
         vertices: Vec<[f64; 2]>,
         edges: Vec<CellEdge<W>>,
-        fans: Vec<Fan<W>>,
-        fan_edges: Vec<u32>,
+        rotations: Option<(Vec<Fan<W>>, Vec<u32>)>,
         k_max: u32,
         max_abs: f64,
         dims: usize,
@@ -107,8 +107,7 @@ impl<W: Winding> CellStructure<W> {
         CellStructure {
             vertices,
             edges,
-            fans,
-            fan_edges,
+            rotations,
             k_max,
             alpha: intersection_error_bound(max_abs),
             dims,
@@ -192,13 +191,14 @@ impl<W: Winding> CellStructure<W> {
                 ));
             }
         }
+        let Some((fans, fan_edges)) = &self.rotations else {
+            return bad("the sweep did not record the rotations".into());
+        };
         let mut ended = vec![0u32; self.edges.len()];
         let mut started = vec![0u32; self.edges.len()];
-        for (f_i, f) in self.fans.iter().enumerate() {
+        for (f_i, f) in fans.iter().enumerate() {
             let (s, m, t) = (f.start as usize, f.mid as usize, f.end as usize);
-            let (Some(ending), Some(starting)) =
-                (self.fan_edges.get(s..m), self.fan_edges.get(m..t))
-            else {
+            let (Some(ending), Some(starting)) = (fan_edges.get(s..m), fan_edges.get(m..t)) else {
                 return bad(format!("fan {f_i} out of range"));
             };
             for (list, is_end) in [(ending, true), (starting, false)] {
@@ -244,7 +244,7 @@ impl<W: Winding> CellStructure<W> {
             }
         }
         let zero = W::zero(self.dims);
-        for f in [self.fans.first(), self.fans.last()].into_iter().flatten() {
+        for f in [fans.first(), fans.last()].into_iter().flatten() {
             if f.below != zero || f.above != zero {
                 return bad("the outermost events do not see the unbounded cell".into());
             }

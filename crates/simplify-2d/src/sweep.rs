@@ -224,11 +224,25 @@ struct Sweep<W: Winding> {
     scratch_new: Vec<SweepEdge<W>>,
     scratch_pending: Vec<Pending<W>>,
     edges: Vec<CellEdge<W>>,
+    /// Whether the rotations around the vertices are recorded (below), for
+    /// [`CellStructure::check_cells`].
+    record: bool,
+    /// The output edge of each sweep-line edge id, while recording.
     id_to_edge: Vec<u32>,
     fans: Vec<Fan<W>>,
     fan_ids: Vec<u32>,
     x_s: f64,
     stats: SweepStats,
+}
+
+/// Whether a sweep records the rotation of the edges around every vertex
+/// (the fans that [`CellStructure::check_cells`] verifies). A structure
+/// handed to the caller records them; one that a simplification or Boolean
+/// consumes at once need not (the sweep decides the same either way).
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub(crate) enum Rotations {
+    Record,
+    Skip,
 }
 
 /// Runs the sweep on the given edges (about `n` of them) and returns the
@@ -238,6 +252,7 @@ pub(crate) fn run<W: Winding>(
     n: usize,
     dims: usize,
     max_abs: f64,
+    rotations: Rotations,
 ) -> Result<CellStructure<W>, SimplifyError> {
     // The edge collection of section 7.1.2 for the input: keyed by
     // (leftmost, rightmost) point, negative multiplicity for edges running
@@ -264,7 +279,7 @@ pub(crate) fn run<W: Winding>(
             rslot: 0,
         });
     }
-    sweep(keyed, count, dims, max_abs)
+    sweep(keyed, count, dims, max_abs, rotations)
 }
 
 /// The sweep proper, on the keyed input edges (in input order, `seq` the
@@ -275,7 +290,10 @@ fn sweep<W: Winding>(
     n: usize,
     dims: usize,
     max_abs: f64,
+    rotations: Rotations,
 ) -> Result<CellStructure<W>, SimplifyError> {
+    let record = rotations == Rotations::Record;
+    let log_cap = |c: usize| if record { c } else { 0 };
     // Sorted by key; identical edges stay in input order (a stable sort),
     // as the collection would have merged them one at a time. (A stable
     // merge sort moves these large items less than the unstable sort with
@@ -307,10 +325,11 @@ fn sweep<W: Winding>(
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_pending: Vec::new(),
-        edges: Vec::with_capacity(n * 2),
-        id_to_edge: Vec::with_capacity(n * 2),
-        fans: Vec::with_capacity(n * 2),
-        fan_ids: Vec::with_capacity(n * 4),
+        edges: Vec::with_capacity(n * 3),
+        record,
+        id_to_edge: Vec::with_capacity(log_cap(n * 3)),
+        fans: Vec::with_capacity(log_cap(n * 2)),
+        fan_ids: Vec::with_capacity(log_cap(n * 6)),
         x_s: f64::NEG_INFINITY,
         stats: SweepStats {
             input_edges: n,
@@ -374,7 +393,7 @@ fn sweep<W: Winding>(
     // Translate the fans from sweep-edge ids to cell-edge indices, in
     // place.
     let mut fan_edges = std::mem::take(&mut s.fan_ids);
-    for slot in &mut fan_edges {
+    for slot in fan_edges.iter_mut().filter(|_| record) {
         let id = *slot;
         let e = s.id_to_edge.get(id as usize).copied().unwrap_or(NO_ID);
         if e == NO_ID {
@@ -389,8 +408,7 @@ fn sweep<W: Winding>(
     Ok(CellStructure::new(
         s.points.vertices,
         s.edges,
-        s.fans,
-        fan_edges,
+        record.then_some((s.fans, fan_edges)),
         k_max,
         max_abs,
         dims,
@@ -678,10 +696,12 @@ impl<W: Winding> Sweep<W> {
         // read in place.
         let (edges, id_to_edge, fan_ids) =
             (&mut self.edges, &mut self.id_to_edge, &mut self.fan_ids);
-        let (ends, stats) = (&mut self.ends, &mut self.stats);
+        let (ends, stats, record) = (&mut self.ends, &mut self.stats, self.record);
         self.line.for_range(lo, hi, |e| {
-            w_hi.add_assign(&e.m);
-            fan_ids.push(e.id);
+            if record {
+                w_hi.add_assign(&e.m);
+                fan_ids.push(e.id);
+            }
             if e.r == p {
                 Self::emit(edges, id_to_edge, e, vid, e.k);
             } else {
@@ -749,9 +769,11 @@ impl<W: Winding> Sweep<W> {
                 continue;
             }
             let id = self.id_to_edge.len() as u32;
-            self.id_to_edge.push(NO_ID);
+            if self.record {
+                self.id_to_edge.push(NO_ID);
+                self.fan_ids.push(id);
+            }
             self.ends.add(it.r, it.rslot);
-            self.fan_ids.push(id);
             let below = w.clone();
             w.add_assign(&it.m);
             new_edges.push(SweepEdge {
@@ -773,14 +795,16 @@ impl<W: Winding> Sweep<W> {
         self.line.replace(lo, hi, &mut new_edges);
         self.scratch_new = new_edges;
         self.stats.max_sweep_len = self.stats.max_sweep_len.max(self.line.len());
-        self.fans.push(Fan {
-            vertex: vid,
-            below: w_lo,
-            above: w_hi,
-            start: fan_start,
-            mid: fan_mid,
-            end: self.fan_ids.len() as u32,
-        });
+        if self.record {
+            self.fans.push(Fan {
+                vertex: vid,
+                below: w_lo,
+                above: w_hi,
+                start: fan_start,
+                mid: fan_mid,
+                end: self.fan_ids.len() as u32,
+            });
+        }
         // Test each newly adjacent pair once.
         let len = self.line.len();
         if len >= 2 {
