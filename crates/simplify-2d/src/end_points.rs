@@ -73,12 +73,13 @@ impl EndPoints {
     pub(crate) fn new(rights: impl ExactSizeIterator<Item = Pt>) -> Self {
         // One sort of (point, position) pairs gives the points in order
         // and, through the runs of equal points, every position's slot;
-        // the order within a run does not matter.
+        // the order within a run does not matter (the stable merge sort
+        // measured a little faster than the unstable one on long inputs).
         let mut input: Vec<(u128, u32)> = rights
             .enumerate()
             .map(|(i, r)| (r.sort_key(), i as u32))
             .collect();
-        crate::cells::sort_unstable_by(&mut input, |a, b| a.0.cmp(&b.0));
+        crate::cells::sort_stable_by(&mut input, |a, b| a.0.cmp(&b.0));
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
