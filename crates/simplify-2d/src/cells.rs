@@ -552,19 +552,6 @@ pub(crate) fn sort_stable_by<T: Send>(
     }
 }
 
-/// Sorts `v` by a comparison, in parallel when it is long; elements that
-/// compare equal must be interchangeable for the caller.
-pub(crate) fn sort_unstable_by<T: Send>(
-    v: &mut [T],
-    cmp: impl Fn(&T, &T) -> std::cmp::Ordering + Sync,
-) {
-    if v.len() >= PARALLEL_SORT_MIN {
-        v.par_sort_unstable_by(cmp);
-    } else {
-        v.sort_unstable_by(cmp);
-    }
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
