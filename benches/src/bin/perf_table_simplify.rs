@@ -4,7 +4,9 @@
 //! as subject and clip, matching fill rule, both engines) and `geo` 0.33
 //! `BooleanOps::union` on the n-gon rows; prints a markdown table for
 //! `docs/performance.md` with the median time, each peer's time over
-//! Umbra's and correctness columns.
+//! Umbra's and correctness columns. The peers of a row take turns run by
+//! run, so that on a shared machine all of them see the same slow and
+//! fast phases and the ratios stay steady.
 //!
 //! ```text
 //! cargo run --release -p umbra-benches --bin perf-table-simplify -- [--max-random 5000] [--budget-ms 1500] [--rows SUBSTRING[,SUBSTRING...]]
@@ -85,38 +87,105 @@ enum Outcome {
     Done(f64, SweepStats),
 }
 
-/// Runs `peer` once (checked), then repeats it to fill `budget` (at least
-/// 2 and at most 50 more runs; none when the first run alone exceeded the
-/// budget) and returns the median.
-fn time_peer<P: SweepPeer>(peer: &P, case: &SweepCase, budget: Duration) -> Outcome {
+/// A peer prepared for one row, behind a trait object so that the peers
+/// of a row can be timed in turns.
+trait Timed {
+    /// Runs the peer once and returns the time in milliseconds (the output
+    /// is dropped outside the timed region).
+    fn time_once(&self) -> f64;
+}
+
+/// A peer with its prepared input.
+struct Ready<'a, P: SweepPeer> {
+    peer: &'a P,
+    input: P::Input,
+}
+
+impl<P: SweepPeer> Timed for Ready<'_, P> {
+    fn time_once(&self) -> f64 {
+        let t = Instant::now();
+        let out = self.peer.run(&self.input);
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        drop(out);
+        ms
+    }
+}
+
+/// A peer after its first (checked) run on a row: the outcome so far, and
+/// the peer ready for the timed repetitions.
+struct Started<'a> {
+    outcome: Outcome,
+    times: Vec<f64>,
+    ready: Option<Box<dyn Timed + 'a>>,
+}
+
+/// Prepares `peer` and runs it once, checking the result.
+fn start<'a, P: SweepPeer>(peer: &'a P, case: &SweepCase) -> Started<'a> {
     let Some(input) = peer.prepare(case) else {
-        return Outcome::Skipped;
+        return Started {
+            outcome: Outcome::Skipped,
+            times: Vec::new(),
+            ready: None,
+        };
     };
     let t = Instant::now();
     let out = peer.run(&input);
-    let first = t.elapsed();
-    let stats = match peer.stats(&out) {
-        Ok(stats) => stats,
+    let first = t.elapsed().as_secs_f64() * 1e3;
+    match peer.stats(&out) {
+        Ok(stats) => {
+            drop(out);
+            Started {
+                outcome: Outcome::Done(first, stats),
+                times: vec![first],
+                ready: Some(Box::new(Ready { peer, input })),
+            }
+        }
         Err(e) => {
             eprintln!("error: {} on {}: {e}", peer.name(), case.label);
-            return Outcome::Failed;
+            Started {
+                outcome: Outcome::Failed,
+                times: Vec::new(),
+                ready: None,
+            }
         }
-    };
-    drop(out);
-    let runs = if first > budget {
-        0
-    } else {
-        (budget.as_secs_f64() / first.as_secs_f64().max(1e-6)).clamp(2.0, 50.0) as usize
-    };
-    let mut times = vec![first.as_secs_f64() * 1e3];
-    for _ in 0..runs {
-        let t = Instant::now();
-        let out = peer.run(&input);
-        times.push(t.elapsed().as_secs_f64() * 1e3);
-        drop(out);
     }
-    times.sort_by(f64::total_cmp);
-    Outcome::Done(times[times.len() / 2], stats)
+}
+
+/// Repeats every started peer of a row to fill `budget` each (at least 2
+/// and at most 50 more runs; none for a peer whose first run alone
+/// exceeded the budget), the peers taking turns run by run so that all of
+/// them see the same phases of a shared machine, and replaces each time by
+/// the median.
+fn time_in_turns(started: &mut [Started<'_>], budget: Duration) {
+    let budget_ms = budget.as_secs_f64() * 1e3;
+    let runs: Vec<usize> = started
+        .iter()
+        .map(|s| match (&s.ready, s.times.first()) {
+            (Some(_), Some(&first)) if first <= budget_ms => {
+                (budget_ms / first.max(1e-6)).clamp(2.0, 50.0) as usize
+            }
+            _ => 0,
+        })
+        .collect();
+    let rounds = runs.iter().copied().max().unwrap_or(0);
+    for round in 0..rounds {
+        for (s, &n) in started.iter_mut().zip(&runs) {
+            if round < n {
+                if let Some(ready) = &s.ready {
+                    let ms = ready.time_once();
+                    s.times.push(ms);
+                }
+            }
+        }
+    }
+    for s in started.iter_mut() {
+        if let Outcome::Done(ms, _) = &mut s.outcome {
+            s.times.sort_by(f64::total_cmp);
+            if let Some(&median) = s.times.get(s.times.len() / 2) {
+                *ms = median;
+            }
+        }
+    }
 }
 
 /// The correctness verdict of one outcome; `is_reference` marks the
@@ -158,7 +227,7 @@ fn main() {
     };
     let cores = std::thread::available_parallelism().map_or(1, |n| n.get());
     println!(
-        "<!-- perf-table-simplify | {cores} logical cores | median of runs within the budget | (x) = peer time / umbra time -->\n"
+        "<!-- perf-table-simplify | {cores} logical cores | median of runs within the budget, the peers of a row taking turns | (x) = peer time / umbra time -->\n"
     );
     println!("| row | rule | umbra ms | i_overlay ms (x) | i_overlay-i64 ms (x) | i_overlay-bool ms (x) | i_overlay-bool-i64 ms (x) | geo ms (x) | correct (umbra, i_overlay, i64, bool, bool-i64, geo) | umbra rings / vertices |");
     println!("|---|---|---:|---:|---:|---:|---:|---:|---|---:|");
@@ -167,15 +236,28 @@ fn main() {
         .filter(|c| config.rows.is_empty() || config.rows.iter().any(|s| c.label.contains(s)));
     for case in rows {
         eprintln!("row: {}", case.label);
-        let budget = config.budget;
-        let u = time_peer(&UmbraSweep, &case, budget);
-        let peers = [
-            time_peer(&IOverlaySweep { wide: false }, &case, budget),
-            time_peer(&IOverlaySweep { wide: true }, &case, budget),
-            time_peer(&IOverlayBoolSweep { wide: false }, &case, budget),
-            time_peer(&IOverlayBoolSweep { wide: true }, &case, budget),
-            time_peer(&GeoSweep, &case, budget),
+        let (umbra, io32, io64) = (
+            UmbraSweep,
+            IOverlaySweep { wide: false },
+            IOverlaySweep { wide: true },
+        );
+        let (bool32, bool64, geo) = (
+            IOverlayBoolSweep { wide: false },
+            IOverlayBoolSweep { wide: true },
+            GeoSweep,
+        );
+        let mut started = vec![
+            start(&umbra, &case),
+            start(&io32, &case),
+            start(&io64, &case),
+            start(&bool32, &case),
+            start(&bool64, &case),
+            start(&geo, &case),
         ];
+        time_in_turns(&mut started, config.budget);
+        let mut outcomes = started.into_iter().map(|s| s.outcome);
+        let u = outcomes.next().unwrap_or(Outcome::Skipped);
+        let peers: Vec<Outcome> = outcomes.collect();
         // The 64-bit i_overlay simplification is the area reference.
         let reference = match &peers[1] {
             Outcome::Done(_, s) => Some(s),
