@@ -683,7 +683,8 @@ impl<W: Winding> Sweep<W> {
         };
         let fan_start = self.fan_ids.len() as u32;
         // Right parts of split edges and pending edges starting at p.
-        let mut block = std::mem::take(&mut self.scratch_block);
+        // Scratch vectors, borrowed as fields beside the others.
+        let block = &mut self.scratch_block;
         block.clear();
         let mut w_hi = w_lo.clone();
         let gradient = |r: Pt| -> (bool, f64) {
@@ -751,7 +752,7 @@ impl<W: Winding> Sweep<W> {
             };
             // A stable sort: identical segments keep their order, so the
             // first one's provenance is kept.
-            sort_small_by(&mut block, order);
+            sort_small_by(block, order);
             block.dedup_by(|item, last| {
                 if last.r == item.r {
                     last.m.add_assign(&item.m);
@@ -763,7 +764,7 @@ impl<W: Winding> Sweep<W> {
             });
         }
         let mut w = w_lo.clone();
-        let mut new_edges = std::mem::take(&mut self.scratch_new);
+        let new_edges = &mut self.scratch_new;
         new_edges.clear();
         for it in block.drain(..) {
             if it.m.is_zero() {
@@ -789,12 +790,10 @@ impl<W: Winding> Sweep<W> {
                 rslot: it.rslot,
             });
         }
-        self.scratch_block = block;
         let n_new = new_edges.len();
         // One move of the line's tail at most, none when as many edges are
         // inserted as removed (every crossing).
-        self.line.replace(lo, hi, &mut new_edges);
-        self.scratch_new = new_edges;
+        self.line.replace(lo, hi, new_edges);
         self.stats.max_sweep_len = self.stats.max_sweep_len.max(self.line.len());
         if self.record {
             self.fans.push(Fan {
