@@ -24,12 +24,14 @@ pub struct Simplified {
 }
 
 impl Simplified {
-    fn from_cells<W: Winding>(cells: &CellStructure<W>, keep: impl Fn(&W) -> bool) -> Self {
+    /// The shape the rule selects, consuming the cell structure.
+    fn from_cells<W: Winding>(cells: CellStructure<W>, keep: impl Fn(&W) -> bool) -> Self {
+        let (k_max, epsilon, stats) = (cells.k_max(), cells.epsilon(), cells.stats());
         Simplified {
-            shape: cells.shape_with(keep),
-            k_max: cells.k_max(),
-            epsilon: cells.epsilon(),
-            stats: cells.stats(),
+            shape: cells.into_shape_with(keep),
+            k_max,
+            epsilon,
+            stats,
         }
     }
 }
@@ -139,7 +141,7 @@ fn cells_of_one(
 /// ```
 pub fn simplify(set: &PolygonSet2, rule: FillRule) -> Result<Simplified, SimplifyError> {
     let cells = cells_of_one(set, Rotations::Skip)?;
-    Ok(Simplified::from_cells(&cells, |w| rule.contains(*w)))
+    Ok(Simplified::from_cells(cells, |w| rule.contains(*w)))
 }
 
 /// The cell structure of two polygon sets assembled, with the winding
@@ -192,7 +194,7 @@ pub fn boolean(
     op: BooleanOp,
 ) -> Result<Simplified, SimplifyError> {
     let cells = cells_of_two(a, b, Rotations::Skip)?;
-    Ok(Simplified::from_cells(&cells, |w| op.contains(*w)))
+    Ok(Simplified::from_cells(cells, |w| op.contains(*w)))
 }
 
 /// The cell structure of any number of polygon sets assembled, with the
@@ -231,7 +233,7 @@ pub fn boolean_n(
     keep: impl Fn(&[i32]) -> bool,
 ) -> Result<Simplified, SimplifyError> {
     let cells = cells_of_many(sets, Rotations::Skip)?;
-    Ok(Simplified::from_cells(&cells, |w| keep(w)))
+    Ok(Simplified::from_cells(cells, |w| keep(w)))
 }
 
 /// The union of any number of polygon sets in one sweep (section 6.1: the
@@ -246,5 +248,5 @@ pub fn union_all(sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
     let input = operands(sets).flat_map(|(_, s, offset)| edges_of(s, offset, |m| m));
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
     let cells = run(input, total_edges(sets), 1, max_abs(&refs), Rotations::Skip)?;
-    Ok(Simplified::from_cells(&cells, |w| *w > 0))
+    Ok(Simplified::from_cells(cells, |w| *w > 0))
 }

@@ -258,6 +258,29 @@ impl<W: Winding> CellStructure<W> {
     /// the vertical edges of each x are merged by 1D simplification (section
     /// 7.6.1). The result always satisfies shape boundary closure.
     pub fn shape_with(&self, keep: impl Fn(&W) -> bool) -> PolygonSet2 {
+        shape_of(&self.vertices, self.selected(keep))
+    }
+
+    /// [`CellStructure::shape_with`], consuming the structure: its edges
+    /// are freed once the boundary is selected, which lowers the heap peak
+    /// of a simplification by their size (a third on large outputs).
+    pub(crate) fn into_shape_with(self, keep: impl Fn(&W) -> bool) -> PolygonSet2 {
+        let sel = self.selected(keep);
+        // Fields left out of a pattern would live to the end of the scope.
+        let CellStructure {
+            vertices,
+            edges,
+            rotations,
+            ..
+        } = self;
+        drop(edges);
+        drop(rotations);
+        shape_of(&vertices, sel)
+    }
+
+    /// The edges separating a retained cell from a discarded one, keyed as
+    /// in the edge collection of section 7.1.2 on vertex ids.
+    fn selected(&self, keep: impl Fn(&W) -> bool) -> Vec<(u32, u32, i32)> {
         let v = &self.vertices;
         let nv = v.len() as u32;
         let pt = |i: u32| Pt::new(v[i as usize]);
@@ -283,72 +306,83 @@ impl<W: Winding> CellStructure<W> {
                 sel.push((b, a, -1));
             }
         }
-        // The vertices the selected edges use (marked in `rank` until they
-        // are ranked), in lexicographic order. Ids were given in event
-        // order, which is lexicographic except after the backward steps of
-        // section 7.6.1: check before sorting.
-        let mut rank = vec![0u32; v.len()];
-        for &(a, b, _) in &sel {
-            rank[a as usize] = 1;
-            rank[b as usize] = 1;
-        }
-        let mut order: Vec<u32> = Vec::with_capacity(v.len());
-        order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
-        if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
-            let mut keyed: Vec<(u128, u32)> =
-                order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
-            sort_unstable(&mut keyed);
-            order = keyed.into_iter().map(|(_, i)| i).collect();
-        }
-        for (r, &i) in order.iter().enumerate() {
-            rank[i as usize] = r as u32;
-        }
-        let points: Vec<[f64; 2]> = order.iter().map(|&i| v[i as usize]).collect();
-        // On ranks, sorting by key is the canonical edge order of
-        // `EdgeCollection::to_polygon_set` (vertices lexicographic, edges by
-        // key).
-        let ranked: Vec<(u32, u32, i32)> = sel
-            .into_iter()
-            .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
-            .collect();
-        let mut edges = merge_keyed(ranked, points.len());
-        merge_vertical_edges(&mut edges, &points);
-        // Keep the vertices some edge still uses (merging can drop some);
-        // renumbering in order keeps the edges sorted.
-        let mut new_index = vec![u32::MAX; points.len()];
-        for &(a, b, _) in &edges {
-            new_index[a as usize] = 0;
-            new_index[b as usize] = 0;
-        }
-        let mut vertices = Vec::with_capacity(points.len());
-        for (i, p) in points.iter().enumerate() {
-            if new_index[i] == 0 {
-                new_index[i] = vertices.len() as u32;
-                vertices.push(*p);
-            }
-        }
-        let out = edges
-            .into_iter()
-            .map(|(a, b, m)| {
-                let (a, b) = (new_index[a as usize], new_index[b as usize]);
-                if m > 0 || m == i32::MIN {
-                    Edge2 {
-                        start: a,
-                        end: b,
-                        mult: m,
-                    }
-                } else {
-                    Edge2 {
-                        start: b,
-                        end: a,
-                        mult: -m,
-                    }
-                }
-            })
-            .collect();
-        PolygonSet2::from_parts(vertices, out)
+        sel
     }
+}
 
+/// The shape bounded by the selected keyed edges `sel` on the vertices
+/// `v`: identical edges merged, vertical edges merged by 1D simplification,
+/// vertices and edges in the canonical order of
+/// `EdgeCollection::to_polygon_set`.
+fn shape_of(v: &[[f64; 2]], sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
+    let nv = v.len() as u32;
+    let pt = |i: u32| Pt::new(v[i as usize]);
+    // The vertices the selected edges use (marked in `rank` until they
+    // are ranked), in lexicographic order. Ids were given in event
+    // order, which is lexicographic except after the backward steps of
+    // section 7.6.1: check before sorting.
+    let mut rank = vec![0u32; v.len()];
+    for &(a, b, _) in &sel {
+        rank[a as usize] = 1;
+        rank[b as usize] = 1;
+    }
+    let mut order: Vec<u32> = Vec::with_capacity(v.len());
+    order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
+    if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
+        let mut keyed: Vec<(u128, u32)> = order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
+        sort_unstable(&mut keyed);
+        order = keyed.into_iter().map(|(_, i)| i).collect();
+    }
+    for (r, &i) in order.iter().enumerate() {
+        rank[i as usize] = r as u32;
+    }
+    let points: Vec<[f64; 2]> = order.iter().map(|&i| v[i as usize]).collect();
+    // On ranks, sorting by key is the canonical edge order of
+    // `EdgeCollection::to_polygon_set` (vertices lexicographic, edges by
+    // key).
+    let ranked: Vec<(u32, u32, i32)> = sel
+        .into_iter()
+        .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
+        .collect();
+    let mut edges = merge_keyed(ranked, points.len());
+    merge_vertical_edges(&mut edges, &points);
+    // Keep the vertices some edge still uses (merging can drop some);
+    // renumbering in order keeps the edges sorted.
+    let mut new_index = vec![u32::MAX; points.len()];
+    for &(a, b, _) in &edges {
+        new_index[a as usize] = 0;
+        new_index[b as usize] = 0;
+    }
+    let mut vertices = Vec::with_capacity(points.len());
+    for (i, p) in points.iter().enumerate() {
+        if new_index[i] == 0 {
+            new_index[i] = vertices.len() as u32;
+            vertices.push(*p);
+        }
+    }
+    let out = edges
+        .into_iter()
+        .map(|(a, b, m)| {
+            let (a, b) = (new_index[a as usize], new_index[b as usize]);
+            if m > 0 || m == i32::MIN {
+                Edge2 {
+                    start: a,
+                    end: b,
+                    mult: m,
+                }
+            } else {
+                Edge2 {
+                    start: b,
+                    end: a,
+                    mult: -m,
+                }
+            }
+        })
+        .collect();
+    PolygonSet2::from_parts(vertices, out)
+}
+
+impl<W: Winding> CellStructure<W> {
     /// The whole arrangement as a polygon set: every edge with its
     /// total multiplicity over the operands (identical edges merged, zero
     /// cancelled). Its winding numbers are the summed winding numbers of
