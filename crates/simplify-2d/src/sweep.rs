@@ -326,6 +326,8 @@ fn sweep<W: Winding>(
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_pending: Vec::new(),
+        // Room for one crossing per input edge (each adds two edges), so
+        // that the largest output vector rarely moves.
         edges: Vec::with_capacity(n * 3),
         record,
         id_to_edge: Vec::with_capacity(log_cap(n * 3)),
@@ -392,9 +394,9 @@ fn sweep<W: Winding>(
         )));
     }
     // Translate the fans from sweep-edge ids to cell-edge indices, in
-    // place.
+    // place (none were recorded when skipping the rotations).
     let mut fan_edges = std::mem::take(&mut s.fan_ids);
-    for slot in fan_edges.iter_mut().filter(|_| record) {
+    for slot in &mut fan_edges {
         let id = *slot;
         let e = s.id_to_edge.get(id as usize).copied().unwrap_or(NO_ID);
         if e == NO_ID {
