@@ -205,13 +205,7 @@ mod tests {
     /// stand for one point.
     #[test]
     fn counts_exactly_and_covers_every_live_end() {
-        let mut s = 0x2545_F491_4F6C_DD1Du64;
-        let mut rnd = move |n: u64| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s % n.max(1)
-        };
+        let mut rnd = crate::test_rng::below(0x2545_F491_4F6C_DD1Du64);
         let mut events = 0;
         for _round in 0..40 {
             let mut passed: Option<Pt> = None;

@@ -59,6 +59,8 @@ mod error;
 mod point;
 mod sweep;
 mod sweep_line;
+#[cfg(test)]
+mod test_rng;
 mod vertex_table;
 mod winding;
 

@@ -310,13 +310,8 @@ mod tests {
     /// predicates.
     #[test]
     fn matches_a_vector() {
-        let mut s = 0x9E37_79B9_7F4A_7C15u64;
-        let mut rnd = move |n: usize| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            (s % n.max(1) as u64) as usize
-        };
+        let mut below = crate::test_rng::below(0x9E37_79B9_7F4A_7C15);
+        let mut rnd = move |n: usize| below(n as u64) as usize;
         let mut line: SweepLine<u32> = SweepLine::default();
         let mut plain: Vec<u32> = Vec::new();
         let mut next = 0u32;

@@ -169,13 +169,7 @@ mod tests {
     /// plain map: every point in one place, counts exact.
     #[test]
     fn ahead_matches_a_plain_map_in_both_regimes() {
-        let mut s = 0x2545_F491_4F6C_DD1Du64;
-        let mut rnd = move |n: u64| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s % n
-        };
+        let mut rnd = crate::test_rng::below(0x2545_F491_4F6C_DD1Du64);
         let mut a = Ahead::default();
         let mut plain: HashMap<Pt, u32> = HashMap::new();
         let mut spilled = false;
@@ -213,13 +207,7 @@ mod tests {
     /// repeats, against a plain map.
     #[test]
     fn matches_a_plain_map() {
-        let mut s = 0x9E37_79B9_7F4A_7C15u64;
-        let mut rnd = move |n: u64| {
-            s ^= s << 13;
-            s ^= s >> 7;
-            s ^= s << 17;
-            s % n
-        };
+        let mut rnd = crate::test_rng::below(0x9E37_79B9_7F4A_7C15u64);
         let mut t = VertexTable::with_capacity(16);
         let mut ids: HashMap<Pt, u32> = HashMap::new();
         let mut ks: HashMap<Pt, u32> = HashMap::new();
