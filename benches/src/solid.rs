@@ -8,7 +8,7 @@
 //! quadrilaterals they split ([`quads_of_uv_sphere`]), so that all run on
 //! the same vertices and the same surface.
 
-use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
+use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
 use manifold_rust::manifold::Manifold;
 use manifold_rust::types::MeshGL64;
 use topology::{Facet, PolygonMesh, TriangleMesh};
@@ -209,7 +209,7 @@ impl SolidPeer for UmbraTriangles {
         (a.clone(), b.clone())
     }
     fn difference(&self, input: &Self::Input) -> Self::Output {
-        boolean_triangles(&input.0, &input.1, BooleanOp3::Difference)
+        boolean_triangles(&input.0, &input.1, BooleanOp::Difference)
             .ok()
             .map(|o| o.mesh)
     }
@@ -243,7 +243,7 @@ impl SolidPeer for UmbraPolygons {
         (a.to_polygon_mesh(), b.to_polygon_mesh())
     }
     fn difference(&self, input: &Self::Input) -> Self::Output {
-        boolean_mesh(&input.0, &input.1, BooleanOp3::Difference)
+        boolean_mesh(&input.0, &input.1, BooleanOp::Difference)
             .ok()
             .map(|o| o.mesh)
     }

@@ -4,7 +4,7 @@
 //! polygon-mesh and triangle-mesh variants.
 #![no_main]
 
-use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, Boolean3Error, BooleanOp3};
+use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, Boolean3Error, BooleanOp};
 use libfuzzer_sys::fuzz_target;
 use umbra_fuzz::SolidInput;
 
@@ -12,9 +12,9 @@ fuzz_target!(|input: SolidInput| {
     let (a, b) = (input.a.to_mesh(), input.b.to_mesh());
     assert!(a.check_topology().is_ok() && b.check_topology().is_ok());
     let op = match input.op % 3 {
-        0 => BooleanOp3::Union,
-        1 => BooleanOp3::Intersection,
-        _ => BooleanOp3::Difference,
+        0 => BooleanOp::Union,
+        1 => BooleanOp::Intersection,
+        _ => BooleanOp::Difference,
     };
     let coords_ok = a.validate_coordinates().is_ok() && b.validate_coordinates().is_ok();
     match boolean_mesh_audit(&a, &b, op) {

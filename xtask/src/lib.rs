@@ -10,6 +10,8 @@
 //! - [`verify3`]: the same for the 3D Boolean (Theorems 1-4 through
 //!   `Audit::verify`) and the simplification sweep (cell structure,
 //!   closure, vertex bound);
+//! - [`fingerprint`]: a digest of every result over those corpora, to show
+//!   that a refactoring leaves results unchanged;
 //! - [`exact`]: the exact big-integer oracles they use, and [`rng`], a
 //!   seeded SplitMix64 generator.
 
@@ -18,6 +20,7 @@
 
 pub mod exact;
 pub mod experiment;
+pub mod fingerprint;
 pub mod rng;
 pub mod tidy;
 pub mod verify;

@@ -18,7 +18,10 @@ tasks:
   verify [--suite 2d|3d|simplify|all] [--cases N] [--seed S]
                                          2D: Theorems 1-2, closure, eq. 4.20 (default N = 2000);
                                          3D: Theorems 1-4 by Audit::verify (N = 300);
-                                         simplify: cell structure, closure, vertex bound (N = 500)";
+                                         simplify: cell structure, closure, vertex bound (N = 500)
+  fingerprint [--cases N] [--seed S]     digests of every result over the verify corpora
+                                         (default N = 200): equal lines before and after
+                                         a refactoring mean unchanged results";
 
 /// Parses `--name value` options into `u64`s, rejecting unknown ones.
 fn options(args: &[String], known: &[(&str, u64)]) -> Result<Vec<u64>> {
@@ -109,6 +112,13 @@ fn run(args: &[String]) -> Result<bool> {
                 println!("verify: all checks passed");
             }
             Ok(failures == 0)
+        }
+        "fingerprint" => {
+            let v = options(rest, &[("--cases", 200), ("--seed", 1)])?;
+            for line in xtask::fingerprint::run(v[0] as usize, v[1]) {
+                println!("{line}");
+            }
+            Ok(true)
         }
         "-h" | "--help" | "help" => {
             println!("{USAGE}");

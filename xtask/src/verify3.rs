@@ -24,15 +24,15 @@
 use crate::rng::SplitMix64;
 use crate::verify::{Check, Corpus, Outcome, Suite};
 use boolean_3d::{
-    boolean_mesh, boolean_mesh_audit, boolean_triangles_audit, Boolean3Error, BooleanOp3,
+    boolean_mesh, boolean_mesh_audit, boolean_triangles_audit, Boolean3Error, BooleanOp,
 };
 use simplify_2d::{cell_structure, simplify, FillRule};
 use topology::{Facet, PolygonMesh, PolygonSet2, TriangleMesh};
 
-const OPS: [BooleanOp3; 3] = [
-    BooleanOp3::Union,
-    BooleanOp3::Intersection,
-    BooleanOp3::Difference,
+const OPS: [BooleanOp; 3] = [
+    BooleanOp::Union,
+    BooleanOp::Intersection,
+    BooleanOp::Difference,
 ];
 
 /// A 3D case: two operands.
@@ -179,7 +179,7 @@ fn non_manifold_case(r: &mut SplitMix64) -> Case3 {
     }
 }
 
-fn ops_check(case: &Case3, check: impl Fn(BooleanOp3) -> Result<(), String>) -> Outcome {
+fn ops_check(case: &Case3, check: impl Fn(BooleanOp) -> Result<(), String>) -> Outcome {
     for op in OPS {
         if let Err(e) = check(op) {
             return Outcome::Fail(format!("{}: {e}", op.name()));

@@ -1,16 +1,7 @@
 //! The error type of the 2D Boolean.
 
 use std::fmt;
-use topology::TopologyError;
-
-/// Which operand of a Boolean.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum Operand {
-    /// The first operand, A.
-    A,
-    /// The second operand, B.
-    B,
-}
+use topology::{Operand, TopologyError};
 
 /// Errors of the 2D Boolean.
 #[derive(Clone, Debug, PartialEq)]

@@ -41,15 +41,14 @@ mod construct;
 mod error;
 mod fast;
 mod interval_set;
-mod op;
 mod reference;
 
 pub use composite::{pair_composite_edge, CompositeEdge};
-pub use error::{BooleanError, Operand};
-pub use op::BooleanOp;
+pub use error::BooleanError;
 pub use reference::{boolean_reference, LevelData};
 use std::time::Instant;
 use topology::PolygonSet2;
+pub use topology::{BooleanOp, Operand};
 
 /// Wall-clock durations of the phases of one Boolean, in milliseconds.
 ///

@@ -357,7 +357,7 @@ fn bad_input_names_the_operand_and_constraint() {
         ],
     );
     for bad in [&nan, &inf, &huge, &dangling, &open] {
-        for op in BooleanOp::ALL {
+        for op in BooleanOp::BASIC {
             for (p, q, which) in [(bad, &good, Operand::A), (&good, bad, Operand::B)] {
                 let before = (p.clone(), q.clone());
                 match boolean(p, q, op) {

@@ -9,7 +9,7 @@
 //! `RAYON_NUM_THREADS=1` for one thread; add `triangles` to run only the
 //! triangle-mesh variant, e.g. to read the peak memory).
 
-use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp3};
+use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
 use std::time::Instant;
 use topology::{Facet, PolygonMesh, TriangleMesh};
 
@@ -122,7 +122,7 @@ fn main() {
         let stacks = (slices / 2).max(3);
         let a = uv_sphere([0.0; 3], 1.0, slices, stacks);
         let b = uv_sphere([0.5, 0.013, 0.007], 1.0, slices, stacks);
-        let (ms, out) = best_of(3, || boolean_triangles(&a, &b, BooleanOp3::Difference));
+        let (ms, out) = best_of(3, || boolean_triangles(&a, &b, BooleanOp::Difference));
         match out {
             Ok(o) => {
                 let valid = o.mesh.check_topology().is_ok();
@@ -142,7 +142,7 @@ fn main() {
             continue;
         }
         let (pa, pb) = (a.to_polygon_mesh(), b.to_polygon_mesh());
-        let (ms, out) = best_of(3, || boolean_mesh(&pa, &pb, BooleanOp3::Difference));
+        let (ms, out) = best_of(3, || boolean_mesh(&pa, &pb, BooleanOp::Difference));
         match out {
             Ok(o) => println!(
                 "{:>17}  polygons  {:>13.2}  {:>12}  {:>10}  {:>13}  valid={}",
@@ -159,7 +159,7 @@ fn main() {
             uv_sphere_quads([0.0; 3], 1.0, slices, stacks),
             uv_sphere_quads([0.5, 0.013, 0.007], 1.0, slices, stacks),
         );
-        let (ms, out) = best_of(3, || boolean_mesh(&qa, &qb, BooleanOp3::Difference));
+        let (ms, out) = best_of(3, || boolean_mesh(&qa, &qb, BooleanOp::Difference));
         match out {
             Ok(o) => println!(
                 "{:>17}  quads     {:>13.2}  {:>12}  {:>10}  {:>13}  valid={} ({} quad facets/operand)",

@@ -5,7 +5,7 @@ use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, R
 use crate::level3::{level3 as level3_fast, level3_brute, Level3Data, Winding};
 use crate::mesh::Flat;
 use crate::triangulate::triangulate_facet;
-use crate::{Boolean3Error, BooleanOp3, Operand};
+use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
 use std::collections::HashMap;
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
@@ -157,7 +157,7 @@ fn flat_pair<'a, M: Sync>(
 fn run(
     a: &Flat<'_>,
     b: &Flat<'_>,
-    op: BooleanOp3,
+    op: BooleanOp,
     audit: bool,
 ) -> Result<(Retained, Level3Data, Option<Audit>), Boolean3Error> {
     let l3 = level3_fast(a, b, Winding::Propagate)?;
@@ -173,7 +173,7 @@ fn run(
 fn make_audit(
     a: &Flat<'_>,
     b: &Flat<'_>,
-    op: BooleanOp3,
+    op: BooleanOp,
     l3: &Level3Data,
     r: &Retained,
 ) -> Result<Audit, Boolean3Error> {
@@ -358,7 +358,7 @@ fn to_triangle_mesh(r: Retained) -> TriangleMesh {
 pub fn boolean_mesh(
     a: &PolygonMesh,
     b: &PolygonMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
 ) -> Result<MeshOutput, Boolean3Error> {
     boolean_mesh_impl(a, b, op, false).map(|(o, _)| o)
 }
@@ -367,19 +367,30 @@ pub fn boolean_mesh(
 pub fn boolean_mesh_audit(
     a: &PolygonMesh,
     b: &PolygonMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
 ) -> Result<(MeshOutput, Audit), Boolean3Error> {
     let (o, audit) = boolean_mesh_impl(a, b, op, true)?;
     let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
     Ok((o, audit))
 }
 
+/// The 3D Boolean builds union, intersection and difference; a half-edge
+/// has no multiplicity, so the doubled intersection curves of `Xor`
+/// (`c_I = -2`) cannot be represented and it is refused before any work.
+fn supported(op: BooleanOp) -> Result<(), Boolean3Error> {
+    if op == BooleanOp::Xor {
+        return Err(Boolean3Error::UnsupportedOperation(op));
+    }
+    Ok(())
+}
+
 fn boolean_mesh_impl(
     a: &PolygonMesh,
     b: &PolygonMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
     audit: bool,
 ) -> Result<(MeshOutput, Option<Audit>), Boolean3Error> {
+    supported(op)?;
     let (fa, fb) = flat_pair(a, b, flat_polygon)?;
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
     let intersections = l3.x12.len() + l3.x21.len();
@@ -400,7 +411,7 @@ fn boolean_mesh_impl(
 pub fn boolean_triangles(
     a: &TriangleMesh,
     b: &TriangleMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
 ) -> Result<TriangleOutput, Boolean3Error> {
     boolean_triangles_impl(a, b, op, false).map(|(o, _)| o)
 }
@@ -411,7 +422,7 @@ pub fn boolean_triangles(
 pub fn boolean_triangles_audit(
     a: &TriangleMesh,
     b: &TriangleMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
 ) -> Result<(TriangleOutput, Audit), Boolean3Error> {
     let (o, audit) = boolean_triangles_impl(a, b, op, true)?;
     let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
@@ -421,9 +432,10 @@ pub fn boolean_triangles_audit(
 fn boolean_triangles_impl(
     a: &TriangleMesh,
     b: &TriangleMesh,
-    op: BooleanOp3,
+    op: BooleanOp,
     audit: bool,
 ) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
+    supported(op)?;
     let (fa, fb) = flat_pair(a, b, flat_triangles)?;
     let (r, l3, audit) = run(&fa, &fb, op, audit)?;
     let intersections = l3.x12.len() + l3.x21.len();

@@ -6,7 +6,7 @@
 use crate::composite::CompositeEdge3;
 use crate::level3::Level3Data;
 use crate::mesh::Flat;
-use crate::{Boolean3Error, BooleanOp3, Operand};
+use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
 use robust_arith::Point3;
 
@@ -228,7 +228,7 @@ pub(crate) fn construct(
     a: &Flat<'_>,
     b: &Flat<'_>,
     l3: &Level3Data,
-    op: BooleanOp3,
+    op: BooleanOp,
     record: bool,
 ) -> Result<Retained, Boolean3Error> {
     let (ca, cb, ci) = op.coefficients();

@@ -1,16 +1,7 @@
 //! The error type of the 3D Boolean: bad input apart from "this is a bug".
 
 use std::fmt;
-use topology::TopologyError;
-
-/// Which operand of a Boolean.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
-pub enum Operand {
-    /// The first operand, A.
-    A,
-    /// The second operand, B.
-    B,
-}
+use topology::{BooleanOp, Operand, TopologyError};
 
 /// Errors of the 3D Boolean.
 #[derive(Clone, Debug, PartialEq)]
@@ -24,6 +15,9 @@ pub enum Boolean3Error {
         /// The violated constraint and where.
         source: TopologyError,
     },
+    /// The operation is not one the 3D Boolean builds (`Xor`: a half-edge
+    /// has no multiplicity for the doubled intersection curves).
+    UnsupportedOperation(BooleanOp),
     /// The result would have more vertices or half-edges than a `u32` index
     /// can address.
     TooLarge {
@@ -42,6 +36,10 @@ impl fmt::Display for Boolean3Error {
             Boolean3Error::InvalidInput { operand, source } => {
                 write!(f, "operand {operand:?}: {source}")
             }
+            Boolean3Error::UnsupportedOperation(op) => write!(
+                f,
+                "the 3D Boolean supports union, intersection and difference, not {op}"
+            ),
             Boolean3Error::TooLarge { what } => {
                 write!(f, "the result has too many {what} for 32-bit indices")
             }

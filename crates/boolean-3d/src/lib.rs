@@ -27,7 +27,7 @@
 //! # Example
 //!
 //! ```
-//! use boolean_3d::{boolean_mesh, BooleanOp3};
+//! use boolean_3d::{boolean_mesh, BooleanOp};
 //! use topology::{Facet, PolygonMesh};
 //!
 //! fn cube(o: [f64; 3], s: f64) -> PolygonMesh {
@@ -41,7 +41,7 @@
 //!
 //! let a = cube([0.0; 3], 2.0);
 //! let b = cube([1.0; 3], 2.0);
-//! let out = boolean_mesh(&a, &b, BooleanOp3::Union).unwrap();
+//! let out = boolean_mesh(&a, &b, BooleanOp::Union).unwrap();
 //! assert!(out.mesh.check_topology().is_ok());
 //! let tri = boolean_3d::triangulate_mesh(&out.mesh);
 //! assert_eq!(tri.signed_volume(), 15.0);
@@ -57,7 +57,6 @@ mod construct;
 mod error;
 mod level3;
 mod mesh;
-mod op;
 mod triangulate;
 
 pub use api::{
@@ -66,7 +65,7 @@ pub use api::{
 };
 pub use composite::CompositeEdge3;
 pub use construct::{CompositeKind, CompositeRecord, FacetSource};
-pub use error::{Boolean3Error, Operand};
+pub use error::Boolean3Error;
 pub use level3::{EdgeFacetHit, Level3Data};
-pub use op::BooleanOp3;
+pub use topology::{BooleanOp, Operand};
 pub use triangulate::{triangulate_facet, triangulate_mesh};

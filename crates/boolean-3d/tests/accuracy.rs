@@ -4,7 +4,7 @@
 
 mod common;
 
-use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, triangulate_mesh, BooleanOp3};
+use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, triangulate_mesh, BooleanOp};
 use common::*;
 use topology::TriangleMesh;
 
@@ -29,9 +29,9 @@ fn overlapping_boxes_have_exact_volumes() {
     let vb = box_volume(blo, bhi);
     let vi = overlap(alo, ahi, blo, bhi);
     for (op, want) in [
-        (BooleanOp3::Union, va + vb - vi),
-        (BooleanOp3::Intersection, vi),
-        (BooleanOp3::Difference, va - vi),
+        (BooleanOp::Union, va + vb - vi),
+        (BooleanOp::Intersection, vi),
+        (BooleanOp::Difference, va - vi),
     ] {
         let (out, audit) = boolean_mesh_audit(&a, &b, op).unwrap();
         audit.verify().unwrap();
@@ -60,9 +60,9 @@ fn random_box_pairs_have_the_inclusion_exclusion_volume() {
             overlap(alo, ahi, blo, bhi),
         );
         for (op, want) in [
-            (BooleanOp3::Union, va + vb - vi),
-            (BooleanOp3::Intersection, vi),
-            (BooleanOp3::Difference, va - vi),
+            (BooleanOp::Union, va + vb - vi),
+            (BooleanOp::Intersection, vi),
+            (BooleanOp::Difference, va - vi),
         ] {
             let (out, audit) =
                 boolean_mesh_audit(&box_mesh(alo, ahi), &box_mesh(blo, bhi), op).unwrap();
@@ -91,9 +91,9 @@ fn sphere_booleans_approach_the_analytic_volumes() {
     let vb = b.signed_volume();
     let lens = lens_volume(r, (d * d + 0.0001 + 0.0004f64).sqrt());
     for (op, analytic) in [
-        (BooleanOp3::Union, va + vb - lens),
-        (BooleanOp3::Intersection, lens),
-        (BooleanOp3::Difference, va - lens),
+        (BooleanOp::Union, va + vb - lens),
+        (BooleanOp::Intersection, lens),
+        (BooleanOp::Difference, va - lens),
     ] {
         let (out, audit) = boolean_triangles_audit(&a, &b, op).unwrap();
         audit.verify().unwrap();
@@ -107,17 +107,17 @@ fn sphere_booleans_approach_the_analytic_volumes() {
         );
     }
     // Inclusion-exclusion holds for the polyhedra themselves up to rounding.
-    let u = boolean_triangles_audit(&a, &b, BooleanOp3::Union)
+    let u = boolean_triangles_audit(&a, &b, BooleanOp::Union)
         .unwrap()
         .0
         .mesh
         .signed_volume();
-    let i = boolean_triangles_audit(&a, &b, BooleanOp3::Intersection)
+    let i = boolean_triangles_audit(&a, &b, BooleanOp::Intersection)
         .unwrap()
         .0
         .mesh
         .signed_volume();
-    let dif = boolean_triangles_audit(&a, &b, BooleanOp3::Difference)
+    let dif = boolean_triangles_audit(&a, &b, BooleanOp::Difference)
         .unwrap()
         .0
         .mesh
@@ -139,7 +139,7 @@ fn check_winding_identity(a: &TriangleMesh, b: &TriangleMesh, seed: u64, samples
             hi[c] = hi[c].max(p[c]);
         }
     }
-    let outs: Vec<_> = BooleanOp3::ALL
+    let outs: Vec<_> = BooleanOp::BASIC
         .iter()
         .map(|&op| (op, boolean_triangles_audit(a, b, op).unwrap()))
         .collect();
@@ -218,7 +218,7 @@ fn polygon_variant_result_triangulates_to_the_same_volume() {
     let a = box_mesh([0.0; 3], [2.0; 3]);
     let b = box_mesh([0.5, 0.5, -1.0], [1.5, 1.5, 3.0]);
     // A box with a square tunnel: two facets gain holes.
-    let (out, audit) = boolean_mesh_audit(&a, &b, BooleanOp3::Difference).unwrap();
+    let (out, audit) = boolean_mesh_audit(&a, &b, BooleanOp::Difference).unwrap();
     audit.verify().unwrap();
     assert!(out.mesh.facets.iter().any(|f| f.loops().len() == 2));
     let tri = triangulate_mesh(&out.mesh);

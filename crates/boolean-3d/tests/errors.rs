@@ -4,7 +4,7 @@
 
 mod common;
 
-use boolean_3d::{boolean_mesh, boolean_triangles, Boolean3Error, BooleanOp3, Operand};
+use boolean_3d::{boolean_mesh, boolean_triangles, Boolean3Error, BooleanOp, Operand};
 use common::{box_mesh, icosphere, Rng};
 use proptest::prelude::*;
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError};
@@ -14,7 +14,7 @@ fn nan_and_huge_coordinates_are_rejected_with_the_vertex_named() {
     let good = box_mesh([0.0; 3], [1.0; 3]);
     let mut bad = good.clone();
     bad.vertices[3][1] = f64::NAN;
-    let err = boolean_mesh(&good, &bad, BooleanOp3::Union).unwrap_err();
+    let err = boolean_mesh(&good, &bad, BooleanOp::Union).unwrap_err();
     assert!(matches!(
         err,
         Boolean3Error::InvalidInput {
@@ -28,7 +28,7 @@ fn nan_and_huge_coordinates_are_rejected_with_the_vertex_named() {
     ));
     assert!(err.to_string().contains("operand B"));
     bad.vertices[3][1] = f64::MAX;
-    assert!(boolean_mesh(&bad, &good, BooleanOp3::Union).is_err());
+    assert!(boolean_mesh(&bad, &good, BooleanOp::Union).is_err());
 }
 
 #[test]
@@ -36,7 +36,7 @@ fn open_mesh_and_dangling_index_are_rejected() {
     let good = box_mesh([0.0; 3], [1.0; 3]);
     let mut open = good.clone();
     open.facets.pop();
-    let err = boolean_mesh(&open, &good, BooleanOp3::Difference).unwrap_err();
+    let err = boolean_mesh(&open, &good, BooleanOp::Difference).unwrap_err();
     assert_eq!(
         err,
         Boolean3Error::InvalidInput {
@@ -46,11 +46,11 @@ fn open_mesh_and_dangling_index_are_rejected() {
     );
     let mut dangling = good.clone();
     dangling.facets[2].half_edges[1].end = 99;
-    let err = boolean_mesh(&good, &dangling, BooleanOp3::Difference).unwrap_err();
+    let err = boolean_mesh(&good, &dangling, BooleanOp::Difference).unwrap_err();
     assert!(err.to_string().contains("dangling"), "{err}");
     let mut t = icosphere([0.0; 3], 1.0, 1);
     t.triangles[5][2] = 1000;
-    let err = boolean_triangles(&t, &t, BooleanOp3::Union).unwrap_err();
+    let err = boolean_triangles(&t, &t, BooleanOp::Union).unwrap_err();
     assert_eq!(
         err,
         Boolean3Error::InvalidInput {
@@ -102,7 +102,7 @@ proptest! {
         };
         damage(&mut m, &mut rng);
         let good = box_mesh([0.5; 3], [2.0; 3]);
-        let r = boolean_mesh(&good, &m, BooleanOp3::Intersection);
+        let r = boolean_mesh(&good, &m, BooleanOp::Intersection);
         match m.check_topology() {
             Ok(()) => {
                 let out = r.unwrap();
@@ -115,7 +115,7 @@ proptest! {
         }
         let t = boolean_3d::triangulate_mesh(&m);
         if t.check_topology().is_err() {
-            let r = boolean_triangles(&t, &t, BooleanOp3::Union);
+            let r = boolean_triangles(&t, &t, BooleanOp::Union);
             prop_assert_eq!(
                 r.unwrap_err(),
                 Boolean3Error::InvalidInput { operand: Operand::A, source: t.check_topology().unwrap_err() }
@@ -128,23 +128,23 @@ proptest! {
 fn empty_operands_are_fine() {
     let empty = PolygonMesh::default();
     let a = box_mesh([0.0; 3], [1.0; 3]);
-    for op in BooleanOp3::ALL {
+    for op in BooleanOp::BASIC {
         let out = boolean_mesh(&a, &empty, op).unwrap();
         assert_eq!(out.mesh.check_topology(), Ok(()));
-        let expect = if op == BooleanOp3::Intersection { 0 } else { 6 };
+        let expect = if op == BooleanOp::Intersection { 0 } else { 6 };
         assert_eq!(out.mesh.facets.len(), expect, "{op:?}");
         let out = boolean_mesh(&empty, &a, op).unwrap();
-        let expect = if op == BooleanOp3::Union { 6 } else { 0 };
+        let expect = if op == BooleanOp::Union { 6 } else { 0 };
         assert_eq!(out.mesh.facets.len(), expect, "{op:?}");
     }
-    let out = boolean_mesh(&empty, &empty, BooleanOp3::Union).unwrap();
+    let out = boolean_mesh(&empty, &empty, BooleanOp::Union).unwrap();
     assert!(out.mesh.facets.is_empty());
     // A facet without half-edges and an unreferenced vertex are valid.
     let mut odd = box_mesh([0.5; 3], [1.5; 3]);
     odd.facets.insert(2, Facet::default());
     odd.vertices.push([0.75; 3]);
     assert_eq!(odd.check_topology(), Ok(()));
-    for op in BooleanOp3::ALL {
+    for op in BooleanOp::BASIC {
         let (out, audit) = boolean_3d::boolean_mesh_audit(&a, &odd, op).unwrap();
         audit.verify().unwrap();
         assert_eq!(out.mesh.check_topology(), Ok(()));
@@ -156,7 +156,7 @@ fn empty_operands_are_fine() {
 fn audit_verify_detects_each_violation() {
     let a = box_mesh([0.0; 3], [2.0; 3]);
     let b = box_mesh([1.0, 0.5, 0.25], [3.0, 1.5, 1.75]);
-    let (_, audit) = boolean_3d::boolean_mesh_audit(&a, &b, BooleanOp3::Union).unwrap();
+    let (_, audit) = boolean_3d::boolean_mesh_audit(&a, &b, BooleanOp::Union).unwrap();
     audit.verify().unwrap();
     let mut t = audit.clone();
     t.x03_per_vertex[0] += 1;
@@ -182,4 +182,42 @@ fn audit_verify_detects_each_violation() {
     assert!(!t.level3.x21.is_empty());
     t.level3.x21[0].point[0] = f64::NAN;
     assert!(t.verify().unwrap_err().contains("Theorem 1"));
+}
+
+#[test]
+fn xor_is_refused_before_any_work() {
+    let a = boolean_3d_cube();
+    let err = boolean_3d::boolean_mesh(&a, &a, boolean_3d::BooleanOp::Xor).unwrap_err();
+    assert_eq!(
+        err,
+        boolean_3d::Boolean3Error::UnsupportedOperation(boolean_3d::BooleanOp::Xor)
+    );
+    assert!(err.to_string().contains("not xor"), "{err}");
+    let t = boolean_3d::triangulate_mesh(&a);
+    assert!(boolean_3d::boolean_triangles(&t, &t, boolean_3d::BooleanOp::Xor).is_err());
+}
+
+fn boolean_3d_cube() -> topology::PolygonMesh {
+    let v: Vec<[f64; 3]> = (0..8)
+        .map(|i| {
+            [
+                f64::from(i & 1),
+                f64::from((i >> 1) & 1),
+                f64::from((i >> 2) & 1),
+            ]
+        })
+        .collect();
+    let quads = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let f = quads
+        .iter()
+        .map(|q| topology::Facet::from_loop(q))
+        .collect();
+    topology::PolygonMesh::new(v, f)
 }

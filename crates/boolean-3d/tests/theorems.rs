@@ -9,7 +9,7 @@ mod common;
 
 use boolean_3d::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
-    level3_reference, BooleanOp3, MeshOutput, TriangleOutput,
+    level3_reference, BooleanOp, MeshOutput, TriangleOutput,
 };
 use common::{box_mesh, icosphere, tetra, uv_sphere, Rng};
 use proptest::prelude::*;
@@ -39,7 +39,7 @@ fn topology_of(kind: u32) -> PolygonMesh {
             // A box with a square tunnel: facets with holes.
             let a = box_mesh([0.0; 3], [2.0; 3]);
             let b = box_mesh([0.5, 0.5, -1.0], [1.5, 1.5, 3.0]);
-            boolean_mesh(&a, &b, BooleanOp3::Difference).unwrap().mesh
+            boolean_mesh(&a, &b, BooleanOp::Difference).unwrap().mesh
         }
         _ => {
             // Two shells in one mesh.
@@ -119,7 +119,7 @@ fn check_all(a: &PolygonMesh, b: &PolygonMesh) {
     assert_eq!(fast.x21, slow.x21);
     assert_eq!(fast.x03, slow.x03);
     assert_eq!(fast.x30, slow.x30);
-    for op in BooleanOp3::ALL {
+    for op in BooleanOp::BASIC {
         let (out, audit) = boolean_mesh_audit(a, b, op).unwrap();
         audit.verify().unwrap();
         // The plain path (with its fast path for unintersected edges) gives
@@ -170,7 +170,7 @@ proptest! {
         recoordinate(&mut a, mode, &mut rng, [0.0; 3]);
         recoordinate(&mut b, mode, &mut rng, [0.3, 0.2, 0.1]);
         let (ta, tb) = (triangles_of(&a), triangles_of(&b));
-        for op in BooleanOp3::ALL {
+        for op in BooleanOp::BASIC {
             let (out, audit) = boolean_triangles_audit(&ta, &tb, op).unwrap();
             audit.verify().unwrap();
             prop_assert_eq!(out.mesh.check_topology(), Ok(()));
@@ -229,7 +229,7 @@ fn output_is_identical_for_any_thread_count() {
     let tb = uv_sphere([0.5, 0.013, 0.029], 1.0, 48, 32);
     assert_eq!(ta.triangles.len(), 2976);
     let (pa, pb) = (ta.to_polygon_mesh(), tb.to_polygon_mesh());
-    for op in BooleanOp3::ALL {
+    for op in BooleanOp::BASIC {
         let polygons =
             |threads| in_pool(threads, || mesh_bits(&boolean_mesh(&pa, &pb, op).unwrap()));
         let triangles = |threads| {

@@ -3,8 +3,9 @@
 
 use crate::cells::{CellStructure, SweepStats};
 use crate::sweep::{run, InputEdge, Rotations};
-use crate::winding::{BooleanOp, FillRule, Winding};
+use crate::winding::{FillRule, Winding};
 use crate::SimplifyError;
+use topology::BooleanOp;
 use topology::PolygonSet2;
 
 /// The result of a simplification or a Boolean through simplification.
@@ -194,7 +195,9 @@ pub fn boolean(
     op: BooleanOp,
 ) -> Result<Simplified, SimplifyError> {
     let cells = cells_of_two(a, b, Rotations::Skip)?;
-    Ok(Simplified::from_cells(cells, |w| op.contains(*w)))
+    Ok(Simplified::from_cells(cells, |w| {
+        op.selects(w[0] > 0, w[1] > 0)
+    }))
 }
 
 /// The cell structure of any number of polygon sets assembled, with the

@@ -71,4 +71,5 @@ pub use api::{
 pub use cells::{CellEdge, CellStructure, SweepStats};
 pub use collection::EdgeCollection;
 pub use error::SimplifyError;
-pub use winding::{BooleanOp, FillRule, Winding};
+pub use topology::BooleanOp;
+pub use winding::{FillRule, Winding};

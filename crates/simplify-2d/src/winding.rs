@@ -144,35 +144,3 @@ impl FillRule {
         }
     }
 }
-
-/// A Boolean operation through simplification (section 6.1). Each operand's
-/// winding number is tracked separately, and a cell belongs to an operand
-/// when that winding number is positive (the standard form), so the
-/// operations are well defined for geometrically invalid operands too.
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub enum BooleanOp {
-    /// `A ∪ B`: `a > 0 || b > 0`.
-    Union,
-    /// `A ∩ B`: `a > 0 && b > 0`.
-    Intersection,
-    /// `A \ B`: `a > 0 && !(b > 0)`.
-    Difference,
-    /// `(A \ B) ∪ (B \ A)`: exactly one of `a > 0`, `b > 0`.
-    Xor,
-}
-
-impl BooleanOp {
-    /// `true` when a cell with operand winding numbers `w = [a, b]` is part
-    /// of the result.
-    #[inline]
-    pub fn contains(&self, w: [i32; 2]) -> bool {
-        let a = w[0] > 0;
-        let b = w[1] > 0;
-        match self {
-            BooleanOp::Union => a || b,
-            BooleanOp::Intersection => a && b,
-            BooleanOp::Difference => a && !b,
-            BooleanOp::Xor => a != b,
-        }
-    }
-}

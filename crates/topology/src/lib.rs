@@ -7,6 +7,8 @@
 //!   half-edges (so a facet may have holes or several regions); non-manifold
 //!   and disconnected shapes are allowed.
 //! - [`TriangleMesh`]: a polyhedral shape of triangular facets.
+//! - [`BooleanOp`] and [`Operand`]: the one operation type (eq. 4.11-4.13,
+//!   4.20) and operand name that every Boolean of the workspace takes.
 //!
 //! Each structure has `check_topology()`, which returns a [`TopologyError`]
 //! naming the violated constraint and the entity, and
@@ -37,11 +39,13 @@
 
 mod error;
 mod mesh;
+mod op;
 mod polygon_set;
 mod triangle_mesh;
 
 pub use error::TopologyError;
 pub use mesh::{Facet, HalfEdge, PolygonMesh};
+pub use op::{BooleanOp, Operand};
 pub use polygon_set::{Edge2, PolygonSet2};
 pub use robust_arith::{Point2, Point3};
 pub use triangle_mesh::TriangleMesh;

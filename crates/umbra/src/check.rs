@@ -83,7 +83,7 @@ pub fn check_polygon_set(set: &PolygonSet2) -> CheckReport {
         for l in set.loops() {
             rings += 1;
             let pts: Vec<Point2> = l.iter().map(|&v| set.vertex(v)).collect();
-            let a = crate::ring_signed_area(&pts);
+            let a = crate::io::ring_signed_area(&pts);
             if a > 0.0 {
                 ccw_rings += 1;
             } else if a < 0.0 {

@@ -49,37 +49,24 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+#[cfg(feature = "io")]
 mod check;
 mod error;
-mod files;
-mod geo_io;
-mod geojson_io;
+#[cfg(feature = "io")]
+mod io;
 mod mesh_check;
-mod mesh_io;
 mod predicates;
-mod rings;
-mod wkt_io;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput, Operand};
 pub use boolean_3d::{
-    boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, BooleanOp3, MeshOutput,
-    TriangleOutput,
+    boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
 };
+#[cfg(feature = "io")]
 pub use check::{check_polygon_set, CheckReport};
 pub use error::UmbraError;
-pub use files::{read_mesh, read_polygon_set, write_mesh, write_polygon_set, FileKind};
-pub use geo_io::{from_geo, to_geo};
-pub use geojson_io::{
-    parse_geojson_polygons, polygons_to_geojson, read_geojson_file, read_geojson_str,
-    write_geojson_file, write_geojson_string,
-};
+#[cfg(feature = "io")]
+pub use io::*;
 pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
-pub use mesh_io::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
-pub use rings::{layout_polygons, ring_signed_area, PolygonLayout, Polygons, RingOrientation};
 pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
 pub use simplify_2d::{FillRule, Simplified, SimplifyError};
 pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};
-pub use wkt_io::{
-    parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
-    write_wkt_string, ReadOptions,
-};

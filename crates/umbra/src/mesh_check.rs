@@ -1008,12 +1008,12 @@ mod tests {
 
     #[test]
     fn boolean_results_of_overlapping_cubes_do_not_self_intersect() {
-        use boolean_3d::{boolean_mesh, triangulate_mesh, BooleanOp3};
+        use boolean_3d::{boolean_mesh, triangulate_mesh, BooleanOp};
         let (a, b) = (cube_at(0.0, 2.0), cube_at(1.0, 2.0));
         for (op, volume) in [
-            (BooleanOp3::Union, 15.0),
-            (BooleanOp3::Intersection, 1.0),
-            (BooleanOp3::Difference, 7.0),
+            (BooleanOp::Union, 15.0),
+            (BooleanOp::Intersection, 1.0),
+            (BooleanOp::Difference, 7.0),
         ] {
             let out = boolean_mesh(&a, &b, op).unwrap().mesh;
             let r = check_mesh(&out);

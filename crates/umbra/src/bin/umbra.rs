@@ -29,8 +29,8 @@ use std::time::{Duration, Instant};
 use umbra::{
     boolean, boolean_mesh, boolean_triangles, check_mesh, check_polygon_set, read_mesh,
     read_polygon_set, triangulate_mesh, write_mesh, write_polygon_set, Boolean3Error, BooleanError,
-    BooleanOp, BooleanOp3, FileKind, FillRule, MeshReadOptions, Operand, PolygonMesh, PolygonSet2,
-    ReadOptions, RingOrientation, SimplifyError, TriangleMesh, UmbraError,
+    BooleanOp, FileKind, FillRule, MeshReadOptions, Operand, PolygonMesh, PolygonSet2, ReadOptions,
+    RingOrientation, SimplifyError, TriangleMesh, UmbraError,
 };
 
 /// Topologically robust Boolean operations on polygon sets and polyhedra
@@ -137,11 +137,11 @@ impl OpArg {
             OpArg::Xor => None,
         }
     }
-    fn solid(self) -> Option<BooleanOp3> {
+    fn solid(self) -> Option<BooleanOp> {
         match self {
-            OpArg::Union => Some(BooleanOp3::Union),
-            OpArg::Intersection => Some(BooleanOp3::Intersection),
-            OpArg::Difference => Some(BooleanOp3::Difference),
+            OpArg::Union => Some(BooleanOp::Union),
+            OpArg::Intersection => Some(BooleanOp::Intersection),
+            OpArg::Difference => Some(BooleanOp::Difference),
             OpArg::Xor => None,
         }
     }
@@ -629,7 +629,7 @@ fn as_triangles(mesh: &PolygonMesh) -> Option<TriangleMesh> {
 }
 
 fn run_boolean_3d(
-    op: BooleanOp3,
+    op: BooleanOp,
     a_path: &Path,
     b_path: &Path,
     out_path: &Path,

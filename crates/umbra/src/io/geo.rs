@@ -1,7 +1,7 @@
 //! Conversions between [`PolygonSet2`] and `geo_types::MultiPolygon<f64>`,
 //! with the ring conventions of [`crate::RingOrientation`].
 
-use crate::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
+use super::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
 use crate::{RingOrientation, UmbraError};
 use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use robust_arith::Point2;

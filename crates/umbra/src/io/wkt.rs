@@ -6,7 +6,7 @@
 //! Coordinates are written in Rust's shortest round-trip formatting, so a
 //! write followed by a read gives the same `f64` values bit for bit.
 
-use crate::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
+use super::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
 use crate::{RingOrientation, UmbraError};
 use robust_arith::Point2;
 use std::fmt::Write as _;

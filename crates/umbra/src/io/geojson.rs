@@ -11,7 +11,7 @@
 //! dissertation's interior-on-the-left convention). Coordinates are printed
 //! in the shortest form that reads back to the same `f64`.
 
-use crate::rings::{build_set, strip_closing, validate_polygons};
+use super::rings::{build_set, strip_closing, validate_polygons};
 use crate::{layout_polygons, Polygons, ReadOptions, RingOrientation, UmbraError};
 use robust_arith::Point2;
 use serde_json::Value;
@@ -64,7 +64,7 @@ pub fn read_geojson_str(text: &str, options: ReadOptions) -> Result<PolygonSet2,
 /// Reads a GeoJSON file into a polygon set; errors name the file.
 pub fn read_geojson_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
     let file = path.display().to_string();
-    let text = crate::files::read_text(path)?;
+    let text = super::files::read_text(path)?;
     parse_set(&text, &file, options)
 }
 

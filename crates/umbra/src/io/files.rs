@@ -3,8 +3,8 @@
 //! the dimension (DESIGN.md): `.wkt` and `.geojson` are 2D polygon sets,
 //! `.obj` and `.off` are 3D meshes.
 
-use crate::geojson_io::{read_geojson_file, write_geojson_file};
-use crate::mesh_io::{read_mesh_text, write_mesh_file, MeshReadOptions};
+use super::geojson::{read_geojson_file, write_geojson_file};
+use super::mesh_text::{read_mesh_text, write_mesh_file, MeshReadOptions};
 use crate::{read_wkt_file, write_wkt_file, ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
