@@ -24,7 +24,10 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut slow: Vec<_> = r.nodes.iter().filter(|n| n.booleans > 0).collect();
     slow.sort_by(|a, b| b.ms.total_cmp(&a.ms));
     for n in slow.iter().take(5) {
-        println!("  {:8.1} ms  {} {} ({} facets)", n.ms, n.path, n.kind, n.facets);
+        println!(
+            "  {:8.1} ms  {} {} ({} facets)",
+            n.ms, n.path, n.kind, n.facets
+        );
     }
     if let Some(path) = args.iter().find(|a| a.ends_with(".obj")) {
         umbra::write_mesh(std::path::Path::new(path), &out.mesh)?;

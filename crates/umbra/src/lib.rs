@@ -67,8 +67,8 @@ pub use check::{check_polygon_set, CheckReport};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
-pub use model::*;
 pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
+pub use model::*;
 pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
 pub use simplify_2d::{FillRule, Simplified, SimplifyError};
 pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};

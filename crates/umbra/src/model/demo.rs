@@ -10,10 +10,11 @@ use glam::{DMat3, DVec3};
 /// The resolution of the demo scene.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum DemoDetail {
-    /// The full scene (48 segments on vessels, 24 on pipes).
+    /// The full scene (96 segments on vessels, 32 on pipes).
     #[default]
     Full,
-    /// The same scene with a quarter of the segments (for quick tests).
+    /// The same scene with a sixth to a quarter of the segments (for quick
+    /// tests).
     Coarse,
 }
 
@@ -30,9 +31,9 @@ impl DemoDetail {
     fn res(self) -> Res {
         match self {
             DemoDetail::Full => Res {
-                vessel: 48,
-                pipe: 24,
-                bolt: 8,
+                vessel: 96,
+                pipe: 32,
+                bolt: 12,
                 ring: 12,
             },
             DemoDetail::Coarse => Res {
@@ -98,8 +99,11 @@ fn flange(r: f64, d: DVec3, at: DVec3, res: Res) -> CsgNode {
         let a = (f64::from(k) * 45.0 + 22.5).to_radians();
         let p = 1.7 * r;
         parts.push(
-            CsgNode::cylinder(0.18 * r, 2.0 * t, res.bolt, true)
-                .translated([p * a.cos(), p * a.sin(), 0.0]),
+            CsgNode::cylinder(0.18 * r, 2.0 * t, res.bolt, true).translated([
+                p * a.cos(),
+                p * a.sin(),
+                0.0,
+            ]),
         );
     }
     along(CsgNode::difference(parts), d, at)
@@ -107,10 +111,18 @@ fn flange(r: f64, d: DVec3, at: DVec3, res: Res) -> CsgNode {
 
 /// A quarter torus (tube radius `r`, bend radius `rb`) joining the
 /// direction `d1` into `d2` at the corner `c`.
-fn elbow_quarter(r: f64, rb: f64, d1: DVec3, d2: DVec3, c: DVec3, res: Res, margin: f64) -> CsgNode {
+fn elbow_quarter(
+    r: f64,
+    rb: f64,
+    d1: DVec3,
+    d2: DVec3,
+    c: DVec3,
+    res: Res,
+    margin: f64,
+) -> CsgNode {
     let e = rb + r + margin;
-    let quadrant = CsgNode::cuboid([e, e, 2.0 * (r + margin)], false)
-        .translated([0.0, 0.0, -(r + margin)]);
+    let quadrant =
+        CsgNode::cuboid([e, e, 2.0 * (r + margin)], false).translated([0.0, 0.0, -(r + margin)]);
     let ring = CsgNode::torus(rb, r, [4 * (res.pipe / 2).max(3), res.pipe]);
     let q = CsgNode::intersection(vec![ring, quadrant]);
     let x = d1;
@@ -133,7 +145,11 @@ fn pipe_run(points: &[DVec3], r: f64, rb: f64, res: Res) -> CsgNode {
     let mut bores = Vec::new();
     for i in 0..n - 1 {
         let d = dir(i);
-        let a = if i == 0 { points[0] } else { points[i] + d * rb };
+        let a = if i == 0 {
+            points[0]
+        } else {
+            points[i] + d * rb
+        };
         let b = if i == n - 2 {
             points[n - 1]
         } else {
@@ -225,7 +241,10 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
     let shell = CsgNode::cylinder(r, z1 - z0, s, false).translated([x, y, z0]);
     let top = CsgNode::intersection(vec![
         CsgNode::sphere(r, s).translated([x, y, z1]),
-        block(v(x - r - 0.1, y - r - 0.1, z1), v(x + r + 0.1, y + r + 0.1, z1 + r + 0.1)),
+        block(
+            v(x - r - 0.1, y - r - 0.1, z1),
+            v(x + r + 0.1, y + r + 0.1, z1 + r + 0.1),
+        ),
     ]);
     let rc = 1.6 * r;
     let depth = rc - (rc * rc - r * r).sqrt();
@@ -237,7 +256,10 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
         CsgNode::cylinder(r, z0 - 0.3, s, false).translated([x, y, 0.3]),
         CsgNode::cylinder(r - 0.06, z0 - 0.2, s, false).translated([x, y, 0.25]),
         // Two access openings.
-        block(v(x - 0.25, y - r - 0.1, 0.45), v(x + 0.25, y + r + 0.1, 0.45 + 0.5)),
+        block(
+            v(x - 0.25, y - r - 0.1, 0.45),
+            v(x + 0.25, y + r + 0.1, 0.45 + 0.5),
+        ),
     ]);
     let mut parts = vec![shell, top, bottom, skirt];
     let mut z = z0 + 1.2;
@@ -248,17 +270,26 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
     // Manway on the -x side at mid height: a stub and a blind flange with
     // twelve bolt heads.
     let mz = z0 + 0.9;
-    let stub = along(CsgNode::cylinder(0.3, 0.45, res.pipe, false), -DVec3::X, v(x - r + 0.1, y, mz));
+    let stub = along(
+        CsgNode::cylinder(0.3, 0.45, res.pipe, false),
+        -DVec3::X,
+        v(x - r + 0.1, y, mz),
+    );
     let mut blind = vec![CsgNode::cylinder(0.42, 0.06, res.pipe, false)];
     for k in 0..12 {
         let a = (f64::from(k) * 30.0).to_radians();
-        blind.push(
-            CsgNode::cylinder(0.025, 0.1, res.bolt, false)
-                .translated([0.36 * a.cos(), 0.36 * a.sin(), 0.0]),
-        );
+        blind.push(CsgNode::cylinder(0.025, 0.1, res.bolt, false).translated([
+            0.36 * a.cos(),
+            0.36 * a.sin(),
+            0.0,
+        ]));
     }
     parts.push(stub);
-    parts.push(along(CsgNode::union(blind), -DVec3::X, v(x - r - 0.35, y, mz)));
+    parts.push(along(
+        CsgNode::union(blind),
+        -DVec3::X,
+        v(x - r - 0.35, y, mz),
+    ));
     CsgNode::union(parts)
 }
 
@@ -266,18 +297,36 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
 /// to `x1` at `(y, z)`, hemispherical heads (sphere ∩ box).
 fn drum(x0: f64, x1: f64, y: f64, z: f64, r: f64, res: Res) -> CsgNode {
     let s = res.vessel;
-    let shell = along(CsgNode::cylinder(r, x1 - x0, s, false), DVec3::X, v(x0, y, z));
+    let shell = along(
+        CsgNode::cylinder(r, x1 - x0, s, false),
+        DVec3::X,
+        v(x0, y, z),
+    );
     let head = |xc: f64, lo: f64, hi: f64| {
         CsgNode::intersection(vec![
             CsgNode::sphere(r, s).translated([xc, y, z]),
-            block(v(lo, y - r - 0.1, z - r - 0.1), v(hi, y + r + 0.1, z + r + 0.1)),
+            block(
+                v(lo, y - r - 0.1, z - r - 0.1),
+                v(hi, y + r + 0.1, z + r + 0.1),
+            ),
         ])
     };
-    let mut parts = vec![shell, head(x0, x0 - r - 0.1, x0), head(x1, x1, x1 + r + 0.1)];
+    let mut parts = vec![
+        shell,
+        head(x0, x0 - r - 0.1, x0),
+        head(x1, x1, x1 + r + 0.1),
+    ];
     for xs in [x0 + 0.6, x1 - 0.6] {
         let saddle = CsgNode::difference(vec![
-            block(v(xs - 0.15, y - 0.8 * r, 0.33), v(xs + 0.15, y + 0.8 * r, z)),
-            along(CsgNode::cylinder(r, 0.5, s, false), DVec3::X, v(xs - 0.25, y, z)),
+            block(
+                v(xs - 0.15, y - 0.8 * r, 0.33),
+                v(xs + 0.15, y + 0.8 * r, z),
+            ),
+            along(
+                CsgNode::cylinder(r - 0.02, 0.5, s, false),
+                DVec3::X,
+                v(xs - 0.25, y, z),
+            ),
         ]);
         parts.push(saddle);
         parts.push(base_plate(xs, y, 0.3, 0.5, res));
@@ -334,11 +383,7 @@ pub fn demo_plant(detail: DemoDetail) -> CsgNode {
             v(11.2, -1.5, 2.7),
         ],
         // Drum bottom outlet to the pump's suction.
-        vec![
-            v(11.8, -1.5, 1.3),
-            v(11.8, -1.5, 0.6),
-            v(11.8, 1.0, 0.6),
-        ],
+        vec![v(11.8, -1.5, 1.3), v(11.8, -1.5, 0.6), v(11.8, 1.0, 0.6)],
         // Pump discharge up and back into the column.
         vec![
             v(12.1, 1.2, 0.9),

@@ -68,8 +68,9 @@ pub struct CsgReport {
     pub valid: bool,
     /// The violated constraint, when not valid (never expected).
     pub topology_error: Option<String>,
-    /// Edges not shared by exactly one pair of opposite half-edges (0 for
-    /// a 2-manifold surface; touching parts legitimately give some).
+    /// Edges of non-zero length not shared by exactly one pair of opposite
+    /// half-edges (0 for a 2-manifold surface; touching parts
+    /// legitimately give some).
     pub non_manifold_edges: usize,
     /// The signed volume of the output.
     pub volume: f64,
@@ -121,13 +122,21 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    fn boolean(&self, a: Solid, b: Solid, op: BooleanOp, path: &[usize]) -> Result<Solid, ModelError> {
+    fn boolean(
+        &self,
+        a: Solid,
+        b: Solid,
+        op: BooleanOp,
+        path: &[usize],
+    ) -> Result<Solid, ModelError> {
         let err = |source| ModelError::Boolean {
             node: path_string(path),
             source,
         };
         let out = match (a, b) {
-            (Solid::Poly(a), Solid::Poly(b)) => Solid::Poly(boolean_mesh(&a, &b, op).map_err(err)?.mesh),
+            (Solid::Poly(a), Solid::Poly(b)) => {
+                Solid::Poly(boolean_mesh(&a, &b, op).map_err(err)?.mesh)
+            }
             (Solid::Tri(a), Solid::Tri(b)) => {
                 Solid::Tri(boolean_triangles(&a, &b, op).map_err(err)?.mesh)
             }
@@ -147,7 +156,12 @@ impl Ctx<'_> {
     /// The balanced pairwise reduction of `items` by `op`: round by round,
     /// neighbours combined in parallel; the pairing depends only on the
     /// count, so the result does not depend on the schedule.
-    fn reduce(&self, mut items: Vec<Solid>, op: BooleanOp, path: &[usize]) -> Result<Solid, ModelError> {
+    fn reduce(
+        &self,
+        mut items: Vec<Solid>,
+        op: BooleanOp,
+        path: &[usize],
+    ) -> Result<Solid, ModelError> {
         while items.len() > 1 {
             let mut pairs = Vec::with_capacity(items.len().div_ceil(2));
             let mut it = items.into_iter();
@@ -163,13 +177,11 @@ impl Ctx<'_> {
                 .collect();
             items = results.into_iter().collect::<Result<_, _>>()?;
         }
-        items
-            .pop()
-            .ok_or_else(|| ModelError::Script {
-                file: String::new(),
-                node: path_string(path),
-                message: "an operation needs at least one child".into(),
-            })
+        items.pop().ok_or_else(|| ModelError::Script {
+            file: String::new(),
+            node: path_string(path),
+            message: "an operation needs at least one child".into(),
+        })
     }
 
     fn leaf(&self, node: &CsgNode, path: &[usize]) -> Result<Solid, ModelError> {
@@ -300,12 +312,14 @@ fn read_file(p: &std::path::Path, path: &[usize]) -> Result<PolygonMesh, ModelEr
 }
 
 /// The number of edges not shared by exactly one pair of opposite
-/// half-edges.
+/// half-edges. Zero-length edges (between vertices at the same position,
+/// which the Boolean may leave where parts touch) are not counted.
 pub fn non_manifold_edge_count(mesh: &PolygonMesh) -> usize {
     let mut count: HashMap<(u32, u32), (u32, u32)> = HashMap::new();
+    let at = |v: u32| mesh.vertices.get(v as usize);
     for f in &mesh.facets {
         for h in &f.half_edges {
-            if h.start == h.end {
+            if h.start == h.end || at(h.start) == at(h.end) {
                 continue;
             }
             let e = count

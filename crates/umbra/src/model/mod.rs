@@ -18,7 +18,7 @@ pub use eval::{
     evaluate_csg, evaluate_csg_with_progress, mesh_volume, non_manifold_edge_count, CsgOptions,
     CsgReport, CsgResult, NodeReport,
 };
-pub use glam::{DMat4, DVec3};
+pub use glam::{DMat3, DMat4, DVec3};
 pub use primitives::{
     circle, cuboid, cylinder, extrude, icosphere, regular_polygon, torus, uv_sphere,
     MAX_ICOSPHERE_LEVEL, MAX_PRIMITIVE_FACETS, MAX_SEGMENTS,

@@ -22,10 +22,16 @@ pub const MAX_ICOSPHERE_LEVEL: u32 = 9;
 /// Checks that `value` is finite and positive.
 pub(crate) fn check_positive(param: &str, value: f64) -> Result<(), ModelError> {
     if !value.is_finite() {
-        return Err(ModelError::param(param, format!("must be finite, not {value}")));
+        return Err(ModelError::param(
+            param,
+            format!("must be finite, not {value}"),
+        ));
     }
     if value <= 0.0 {
-        return Err(ModelError::param(param, format!("must be > 0, not {value}")));
+        return Err(ModelError::param(
+            param,
+            format!("must be > 0, not {value}"),
+        ));
     }
     Ok(())
 }
@@ -111,7 +117,10 @@ pub fn cuboid(size: DVec3, center: bool) -> Result<PolygonMesh, ModelError> {
     ];
     finish(
         "box",
-        PolygonMesh::new(vertices, faces.iter().map(|f| Facet::from_loop(f)).collect()),
+        PolygonMesh::new(
+            vertices,
+            faces.iter().map(|f| Facet::from_loop(f)).collect(),
+        ),
     )
 }
 
@@ -122,7 +131,10 @@ pub fn uv_sphere(radius: f64, segments: u32, rings: u32) -> Result<PolygonMesh, 
     check_positive("sphere.radius", radius)?;
     check_segments("sphere.segments", segments, 3)?;
     check_segments("sphere.rings", rings, 2)?;
-    check_facets("sphere.segments and rings", u64::from(segments) * u64::from(rings))?;
+    check_facets(
+        "sphere.segments and rings",
+        u64::from(segments) * u64::from(rings),
+    )?;
     let n = segments;
     let mut vertices = vec![[0.0, 0.0, radius]];
     for i in 1..rings {

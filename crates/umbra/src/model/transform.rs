@@ -37,7 +37,10 @@ fn apply(m: &DMat4, vertices: &[[f64; 3]], what: &str) -> Result<Vec<[f64; 3]>, 
     for (i, v) in out.iter().enumerate() {
         for &c in v {
             robust_arith::validate_coordinate(c).map_err(|e| {
-                ModelError::param("transform", format!("moves {what} vertex {i} to a bad coordinate: {e}"))
+                ModelError::param(
+                    "transform",
+                    format!("moves {what} vertex {i} to a bad coordinate: {e}"),
+                )
             })?;
         }
     }

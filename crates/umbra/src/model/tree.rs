@@ -6,7 +6,7 @@
 //! - `"op": "union" | "intersection" | "difference"` with `"children": [node, ...]`
 //!   (at least one; difference is the first child minus all the others);
 //! - `"box": {"size": [x, y, z], "center": false}` (corner at the origin
-//!   unless centred);
+//!   unless centred; `"size": s` for a cube);
 //! - `"sphere": {"radius": r, "segments": 32}` (a UV sphere, centred,
 //!   `segments / 2` latitude bands, at least 2);
 //! - `"cylinder": {"radius": r, "radius_top": r2, "height": h, "segments": 32,
@@ -213,7 +213,10 @@ impl TorusSpec {
         if self.tube >= self.radius {
             return Err(ModelError::param(
                 "torus.tube",
-                format!("must be < torus.radius ({}), not {}", self.radius, self.tube),
+                format!(
+                    "must be < torus.radius ({}), not {}",
+                    self.radius, self.tube
+                ),
             ));
         }
         check_segments("torus.segments[0]", self.segments[0], 3)?;
@@ -359,11 +362,9 @@ fn parse_shape(key: &str, obj: &Map<String, Value>) -> Result<CsgShape, String> 
                     "union" => CsgOp::Union,
                     "intersection" => CsgOp::Intersection,
                     "difference" => CsgOp::Difference,
-                    other => {
-                        return Err(format!(
-                            "op must be \"union\", \"intersection\" or \"difference\", not \"{other}\""
-                        ))
-                    }
+                    other => return Err(format!(
+                        "op must be \"union\", \"intersection\" or \"difference\", not \"{other}\""
+                    )),
                 },
                 _ => return Err(format!("op must be a string, not {}", type_name(v))),
             };
@@ -373,9 +374,7 @@ fn parse_shape(key: &str, obj: &Map<String, Value>) -> Result<CsgShape, String> 
                     return Err(format!("{} needs at least one child", op.name()))
                 }
                 Some(Value::Array(_)) => {}
-                Some(c) => {
-                    return Err(format!("children must be an array, not {}", type_name(c)))
-                }
+                Some(c) => return Err(format!("children must be an array, not {}", type_name(c))),
             }
             // Children are parsed by the caller (they carry their own paths).
             CsgShape::Op {
@@ -464,7 +463,8 @@ fn parse_transform(obj: &Map<String, Value>) -> Result<Transform, String> {
         t.scale = Some(match v {
             Value::Number(_) => Scale::Uniform(number("scale", v)?),
             Value::Array(_) => Scale::Axes(
-                triple("scale", v).map_err(|_| "scale must be a number or an array of 3 numbers")?,
+                triple("scale", v)
+                    .map_err(|_| "scale must be a number or an array of 3 numbers")?,
             ),
             _ => {
                 return Err(format!(
@@ -518,12 +518,18 @@ fn parse_node(v: &Value, path: &mut Vec<usize>, file: &str) -> Result<CsgNode, M
         several => {
             return Err(err(
                 path,
-                format!("several shapes ({}); a node has exactly one", several.join(", ")),
+                format!(
+                    "several shapes ({}); a node has exactly one",
+                    several.join(", ")
+                ),
             ))
         }
     };
     if key != "op" && obj.contains_key("children") {
-        return Err(err(path, format!("\"children\" given to a {key} (only an op has children)")));
+        return Err(err(
+            path,
+            format!("\"children\" given to a {key} (only an op has children)"),
+        ));
     }
     let mut shape = parse_shape(key, obj).map_err(|m| err(path, m))?;
     let transform = parse_transform(obj).map_err(|m| err(path, m))?;
