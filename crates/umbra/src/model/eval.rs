@@ -219,16 +219,16 @@ impl Ctx<'_> {
         })
     }
 
-    fn eval(&self, node: &CsgNode, path: &mut Vec<usize>) -> Result<Solid, ModelError> {
+    fn eval(&self, node: &CsgNode, path: &[usize]) -> Result<Solid, ModelError> {
         let (solid, booleans, operand_facets, own_ms) = match &node.shape {
             CsgShape::Op { op, children } => {
                 let results: Vec<Result<Solid, ModelError>> = children
                     .par_iter()
                     .enumerate()
                     .map(|(i, c)| {
-                        let mut p = path.clone();
+                        let mut p = path.to_vec();
                         p.push(i);
-                        self.eval(c, &mut p)
+                        self.eval(c, &p)
                     })
                     .collect();
                 let solids: Vec<Solid> = results.into_iter().collect::<Result<_, _>>()?;
@@ -286,7 +286,7 @@ impl Ctx<'_> {
             ms,
         };
         if let Ok(mut nodes) = self.nodes.lock() {
-            nodes.push((path.clone(), report));
+            nodes.push((path.to_vec(), report));
         }
         Ok(solid)
     }
@@ -366,7 +366,7 @@ pub fn evaluate_csg_with_progress(
         progress,
         nodes: Mutex::new(Vec::new()),
     };
-    let solid = ctx.eval(root, &mut Vec::new())?;
+    let solid = ctx.eval(root, &[])?;
     let mesh = match solid {
         Solid::Poly(m) => m,
         Solid::Tri(t) => t.to_polygon_mesh(),

@@ -362,9 +362,11 @@ fn parse_shape(key: &str, obj: &Map<String, Value>) -> Result<CsgShape, String> 
                     "union" => CsgOp::Union,
                     "intersection" => CsgOp::Intersection,
                     "difference" => CsgOp::Difference,
-                    other => return Err(format!(
+                    other => {
+                        return Err(format!(
                         "op must be \"union\", \"intersection\" or \"difference\", not \"{other}\""
-                    )),
+                    ))
+                    }
                 },
                 _ => return Err(format!("op must be a string, not {}", type_name(v))),
             };
