@@ -492,3 +492,35 @@ fn the_demo_plant_is_a_valid_closed_solid() {
         "JSON round trip differs"
     );
 }
+
+#[test]
+fn bad_trees_built_in_code_are_errors() {
+    let mut deep = CsgNode::cuboid([1.0; 3], false);
+    for _ in 0..300 {
+        deep = CsgNode::union(vec![deep]);
+    }
+    let msg = evaluate_csg(&deep, CsgOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(msg.starts_with("root: nesting deeper than 256"), "{msg}");
+    let empty = CsgNode::union(vec![CsgNode::difference(Vec::new())]);
+    let msg = evaluate_csg(&empty, CsgOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert_eq!(msg, "children[0]: an operation needs at least one child");
+    let bad = CsgNode::union(vec![
+        CsgNode::cuboid([1.0; 3], false),
+        CsgNode::sphere(1.0, 2),
+    ]);
+    let msg = evaluate_csg(&bad, CsgOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert_eq!(msg, "children[1]: sphere.segments must be >= 3");
+    let nan = CsgNode::cuboid([1.0; 3], false).translated([f64::NAN, 0.0, 0.0]);
+    assert!(evaluate_csg(&nan, CsgOptions::default()).is_err());
+    let flat = CsgNode::cuboid([1.0; 3], false).scaled(umbra::Scale::Axes([1.0, 0.0, 1.0]));
+    let msg = evaluate_csg(&flat, CsgOptions::default())
+        .unwrap_err()
+        .to_string();
+    assert!(msg.contains("invertible"), "{msg}");
+}

@@ -70,6 +70,20 @@ fn axis_angles(target: DMat3) -> [f64; 3] {
     [0.0; 3]
 }
 
+/// The exact unit axis vector along the largest component of `v` (the
+/// directions of the pipe runs are axis-aligned; dividing by the length
+/// could be off by an ulp).
+fn axis_dir(v: DVec3) -> DVec3 {
+    let a = v.abs();
+    if a.x >= a.y && a.x >= a.z {
+        DVec3::X * v.x.signum()
+    } else if a.y >= a.z {
+        DVec3::Y * v.y.signum()
+    } else {
+        DVec3::Z * v.z.signum()
+    }
+}
+
 /// A unit vector perpendicular to the axis-aligned unit vector `d`.
 fn perpendicular(d: DVec3) -> DVec3 {
     if d.z.abs() == 1.0 {
@@ -140,7 +154,7 @@ fn elbow_quarter(
 fn pipe_run(points: &[DVec3], r: f64, rb: f64, res: Res) -> CsgNode {
     let ri = 0.8 * r;
     let n = points.len();
-    let dir = |i: usize| (points[i + 1] - points[i]).normalize();
+    let dir = |i: usize| axis_dir(points[i + 1] - points[i]);
     let mut outer = Vec::new();
     let mut bores = Vec::new();
     for i in 0..n - 1 {
@@ -350,6 +364,16 @@ fn pump(x: f64, y: f64, res: Res) -> CsgNode {
 /// with elbows and bolted flanges. [`DemoDetail::Full`] runs some hundreds
 /// of Booleans; [`DemoDetail::Coarse`] is the same tree with fewer
 /// segments.
+///
+/// ```
+/// use umbra::{demo_plant, evaluate_csg, CsgOptions, DemoDetail};
+///
+/// let tree = demo_plant(DemoDetail::Coarse);
+/// assert!(tree.boolean_count() > 300);
+/// let out = evaluate_csg(&tree, CsgOptions::default())?;
+/// assert!(out.report.valid && out.report.volume > 0.0);
+/// # Ok::<(), umbra::ModelError>(())
+/// ```
 pub fn demo_plant(detail: DemoDetail) -> CsgNode {
     let res = detail.res();
     let platform = CsgNode::difference(vec![
@@ -413,4 +437,64 @@ pub fn demo_plant(detail: DemoDetail) -> CsgNode {
         parts.push(pipe_run(run, r, rb, res));
     }
     CsgNode::union(parts)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn every_axis_rotation_has_exact_angles() {
+        let axes = [
+            DVec3::X,
+            DVec3::Y,
+            DVec3::Z,
+            -DVec3::X,
+            -DVec3::Y,
+            -DVec3::Z,
+        ];
+        let mut found = 0;
+        for x in axes {
+            for y in axes {
+                if x.dot(y) != 0.0 {
+                    continue;
+                }
+                let target = DMat3::from_cols(x, y, x.cross(y));
+                let t = Transform {
+                    rotate: Some(axis_angles(target)),
+                    ..Transform::default()
+                };
+                assert_eq!(DMat3::from_mat4(t.matrix()), target);
+                found += 1;
+            }
+        }
+        assert_eq!(found, 24);
+        assert_eq!(axis_dir(DVec3::new(0.0, -1.5, 0.0)), -DVec3::Y);
+    }
+
+    #[test]
+    fn pipe_runs_follow_their_polylines() {
+        // Every straight of every run lies within the run's bounding box.
+        let tree = demo_plant(DemoDetail::Coarse);
+        let json = tree.to_json_string();
+        assert!(json.len() > 10_000);
+        let res = DemoDetail::Coarse.res();
+        let points = [v(0.0, 0.0, 1.0), v(0.0, 2.0, 1.0), v(3.0, 2.0, 1.0)];
+        let run = pipe_run(&points, 0.1, 0.4, res);
+        let out = crate::evaluate_csg(&run, crate::CsgOptions::default()).unwrap();
+        let b = out.report.bounds.unwrap();
+        let r = 2.2 * 0.1; // the flanges' radius
+        for k in 0..3 {
+            let lo = points.iter().map(|p| p[k]).fold(f64::INFINITY, f64::min);
+            let hi = points
+                .iter()
+                .map(|p| p[k])
+                .fold(f64::NEG_INFINITY, f64::max);
+            assert!(
+                b[0][k] >= lo - r - 1e-9 && b[1][k] <= hi + r + 1e-9,
+                "axis {k}: {b:?}"
+            );
+        }
+        assert!(out.report.valid && out.report.volume > 0.0);
+    }
 }

@@ -6,7 +6,7 @@
 use super::error::ModelError;
 use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
-use super::tree::{path_string, CsgNode, CsgOp, CsgShape};
+use super::tree::{path_string, CsgNode, CsgOp, CsgShape, MAX_DEPTH};
 use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -350,15 +350,43 @@ pub fn evaluate_csg(root: &CsgNode, options: CsgOptions) -> Result<CsgResult, Mo
 /// children in parallel, an n-ary union or intersection as a balanced tree
 /// of binary Booleans, a difference as the first child minus the union of
 /// the others, each node's transform applied to its result. `progress` is
-/// called after every Boolean with (done, total). The output mesh is the
-/// same bit for bit whatever the number of threads; the first failing node
-/// in tree order is reported.
+/// called after every Boolean with (done, total), from any thread. The
+/// output mesh is the same bit for bit whatever the number of threads; the
+/// first failing node in tree order is reported. Trees built in code are
+/// checked here as scripts are when parsed (parameters, transforms, at
+/// least one child per operation, depth at most [`MAX_DEPTH`]): a bad tree
+/// gives an error, never a panic.
+///
+/// # Example
+///
+/// ```
+/// use umbra::{evaluate_csg, parse_csg, CsgOptions};
+///
+/// let tree = parse_csg(r#"{"op": "difference", "children": [
+///     {"box": {"size": [2, 2, 2], "center": true}},
+///     {"cylinder": {"radius": 0.5, "height": 3, "segments": 8, "center": true}}]}"#)?;
+/// let out = evaluate_csg(&tree, CsgOptions::default())?;
+/// assert!(out.report.valid);
+/// assert_eq!(out.report.booleans, 1);
+/// // The box minus the octagonal prism: 8 - 2 * (8 / 2) * 0.25 * sin(pi / 4).
+/// let prism = 2.0 * 4.0 * 0.25 * (std::f64::consts::TAU / 8.0).sin();
+/// assert!((out.report.volume - (8.0 - prism)).abs() < 1e-12);
+/// # Ok::<(), umbra::ModelError>(())
+/// ```
 pub fn evaluate_csg_with_progress(
     root: &CsgNode,
     options: CsgOptions,
     progress: Option<&(dyn Fn(usize, usize) + Sync)>,
 ) -> Result<CsgResult, ModelError> {
     let start = Instant::now();
+    let depth = root.depth();
+    if depth > MAX_DEPTH + 1 {
+        return Err(ModelError::Script {
+            file: String::new(),
+            node: "root".into(),
+            message: format!("nesting deeper than {MAX_DEPTH} ({depth} levels)"),
+        });
+    }
     let ctx = Ctx {
         options,
         total: root.boolean_count(),

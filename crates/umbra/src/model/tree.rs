@@ -698,6 +698,19 @@ impl CsgNode {
         }
     }
 
+    /// The depth of the tree (1 for a leaf), computed without recursion.
+    pub fn depth(&self) -> usize {
+        let mut deepest = 0;
+        let mut stack = vec![(self, 1usize)];
+        while let Some((node, d)) = stack.pop() {
+            deepest = deepest.max(d);
+            if let CsgShape::Op { children, .. } = &node.shape {
+                stack.extend(children.iter().map(|c| (c, d + 1)));
+            }
+        }
+        deepest
+    }
+
     /// The number of leaves.
     pub fn leaf_count(&self) -> usize {
         match &self.shape {
