@@ -2,6 +2,7 @@
 //! and timing: `cargo run --release -p umbra --example demo_plant [coarse]
 //! [OUT.obj]`.
 
+use std::io::Write;
 use std::time::Instant;
 use umbra::{demo_plant, evaluate_csg, CsgOptions, DemoDetail};
 
@@ -17,10 +18,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let out = evaluate_csg(&tree, CsgOptions::default())?;
     let secs = start.elapsed().as_secs_f64();
     let r = &out.report;
-    println!(
+    let mut stdout = std::io::stdout().lock();
+    writeln!(
+        stdout,
         "{detail:?}: {} Booleans over {} leaves in {secs:.2} s on {} threads; {} vertices, {} facets, valid {}, non-manifold edges {}, volume {:.4} m^3",
         r.booleans, r.leaves, r.threads, r.vertices, r.facets, r.valid, r.non_manifold_edges, r.volume
-    );
+    )?;
     let mut slow: Vec<_> = r.nodes.iter().filter(|n| n.booleans > 0).collect();
     slow.sort_by(|a, b| b.ms.total_cmp(&a.ms));
     for n in slow.iter().take(5) {
