@@ -202,7 +202,9 @@ pub fn write_all(files: &[(&Path, &[u8])]) -> Result<(), UmbraError> {
 /// Serializes a report as pretty JSON with a final newline.
 pub fn report_json<T: serde::Serialize>(report: &T) -> anyhow::Result<Vec<u8>> {
     let mut bytes = serde_json::to_vec_pretty(report).map_err(|e| {
-        anyhow::anyhow!("internal error (this is a bug, please report it): cannot serialise the report: {e}")
+        anyhow::anyhow!(
+            "internal error (this is a bug, please report it): cannot serialise the report: {e}"
+        )
     })?;
     bytes.push(b'\n');
     Ok(bytes)

@@ -154,7 +154,10 @@ fn full_standard_output_exits_1_with_one_line() {
         if let Some(o) = &out {
             fs::remove_file(o).unwrap();
         }
-        let devfull = fs::OpenOptions::new().write(true).open("/dev/full").unwrap();
+        let devfull = fs::OpenOptions::new()
+            .write(true)
+            .open("/dev/full")
+            .unwrap();
         let o = umbra_to(&args, Stdio::from(devfull));
         assert_eq!(o.status.code(), Some(1), "{args:?}: {}", stderr(&o));
         assert_one_clean_line(&o, "standard output: cannot write");
@@ -378,7 +381,9 @@ fn wkt_rings(text: &str) -> Vec<usize> {
 fn summary_counts(stdout: &[u8]) -> (usize, usize) {
     let text = String::from_utf8_lossy(stdout);
     let number_before = |word: &str| -> usize {
-        let i = text.find(word).unwrap_or_else(|| panic!("{word} in {text}"));
+        let i = text
+            .find(word)
+            .unwrap_or_else(|| panic!("{word} in {text}"));
         text[..i]
             .split_whitespace()
             .last()
