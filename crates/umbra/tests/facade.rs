@@ -247,7 +247,6 @@ fn encoding_matches_the_writers_and_counts_written_rings() {
                 write_wkt_string(&set, orientation).unwrap().into_bytes()
             );
             assert_eq!(wkt.rings, rings, "{orientation:?}");
-            let text = String::from_utf8(wkt.bytes.clone()).unwrap();
             // Independent count: every innermost parenthesised group is
             // a ring, its points listed with one closing duplicate.
             let text = String::from_utf8(wkt.bytes.clone()).unwrap();
