@@ -11,7 +11,8 @@
 //! themselves fail part-way, which needs the directory to change under the
 //! command, the files renamed so far stay written.) Destinations that are
 //! not regular files (`/dev/null`, a terminal) are opened at staging and
-//! written at the end.
+//! written at the end. A regular destination keeps its permissions and
+//! must be writable, as for a direct write.
 
 use crate::errors::usage;
 use std::fs::{self, File, OpenOptions};
@@ -106,6 +107,14 @@ fn stage(dest: &Path, bytes: &[u8]) -> Result<Staged, UmbraError> {
             file,
             bytes: bytes.to_vec(),
         });
+    }
+    if existing.is_some() {
+        // The file must be writable as it stands (a read-only file is
+        // refused, as a direct write would be), though it is replaced.
+        OpenOptions::new()
+            .write(true)
+            .open(&target)
+            .map_err(|e| write_error(dest, e))?;
     }
     let name = target
         .file_name()

@@ -499,3 +499,35 @@ fn summary_and_report_count_what_is_written() {
         );
     }
 }
+
+#[test]
+#[cfg(unix)]
+fn outputs_through_links_and_to_devices() {
+    let dir = temp_dir("links");
+    let ex = examples();
+    // The output is a symbolic link: the file it points at is replaced,
+    // the link stays.
+    let real = write(&dir, "real.wkt", OLD);
+    let link = dir.join("link.wkt");
+    std::os::unix::fs::symlink(&real, &link).unwrap();
+    // The report goes to a device that is not a regular file.
+    let o = umbra(&[
+        p("boolean"),
+        p("intersection"),
+        &ex.join("a.wkt"),
+        &ex.join("b.wkt"),
+        p("-o"),
+        &link,
+        p("--report"),
+        p("/dev/null"),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(fs::symlink_metadata(&link)
+        .unwrap()
+        .file_type()
+        .is_symlink());
+    let text = fs::read_to_string(&real).unwrap();
+    assert!(text.starts_with("POLYGON") || text.starts_with("MULTIPOLYGON"));
+    assert_ne!(text, OLD);
+    assert_eq!(listing(&dir), ["link.wkt", "real.wkt"]);
+}
