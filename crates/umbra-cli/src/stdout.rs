@@ -46,7 +46,7 @@ pub fn error_line(text: &str) {
     let _ = std::io::stderr().lock().write_all(line.as_bytes());
 }
 
-/// `println!` to [`print`]: evaluates to `Result<(), StdoutError>`.
+/// `println!` to [`print()`]: evaluates to `Result<(), StdoutError>`.
 macro_rules! outln {
     ($($arg:tt)*) => {
         $crate::stdout::print(&format!("{}\n", format_args!($($arg)*)))

@@ -1,6 +1,6 @@
 //! The commands, one module each. A module holds a `#[derive(clap::Args)]`
 //! struct whose `run(self)` does the work and returns the exit code;
-//! adding a command is one new module and one line in [`commands!`] below.
+//! adding a command is one new module and one line in the `commands!` list below.
 
 use std::process::ExitCode;
 
