@@ -21,6 +21,40 @@ use std::path::{Path, PathBuf};
 use std::sync::atomic::{AtomicUsize, Ordering};
 use umbra::UmbraError;
 
+/// The destinations of a command that writes a result: `-o OUT` and
+/// `--report R.json` (flattened into the command's arguments).
+#[derive(clap::Args, Debug)]
+pub struct OutputArgs {
+    /// The output file (its extension picks the format).
+    #[arg(short, long)]
+    pub output: PathBuf,
+    /// Write a JSON report (counts, validity, epsilon, timings) here.
+    #[arg(long)]
+    pub report: Option<PathBuf>,
+}
+
+impl OutputArgs {
+    /// Refuses (usage error) an output or report that is one of `reads`
+    /// (`(role, path)`) or that are the same file.
+    pub fn refuse_overlaps(&self, reads: &[(&str, &Path)]) -> anyhow::Result<()> {
+        let mut writes = vec![("the output", self.output.as_path())];
+        if let Some(r) = &self.report {
+            writes.push(("the report", r.as_path()));
+        }
+        refuse_overlaps(&writes, reads)
+    }
+
+    /// Writes the output and, if asked, the report as JSON: both or
+    /// neither ([`write_all`]).
+    pub fn write<R: serde::Serialize>(&self, output: &[u8], report: &R) -> anyhow::Result<()> {
+        match &self.report {
+            Some(path) => write_all(&[(&self.output, output), (path, &report_json(report)?)])?,
+            None => write_all(&[(&self.output, output)])?,
+        }
+        Ok(())
+    }
+}
+
 /// The identity of a path for comparisons: canonical when the file exists
 /// (symbolic links and `..` resolved), else its canonical directory joined
 /// with its name, else the absolute path as written.

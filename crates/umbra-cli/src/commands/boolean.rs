@@ -5,10 +5,10 @@
 
 use super::{invalid_result, millis_since, orientation, warn_orphans};
 use crate::errors::{self, usage};
-use crate::files::{refuse_overlaps, report_json, write_all};
+use crate::files::OutputArgs;
 use crate::stdout::outln;
 use clap::ValueEnum;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
@@ -28,12 +28,8 @@ pub struct BooleanArgs {
     a: PathBuf,
     /// The second operand, B.
     b: PathBuf,
-    /// The output file (its extension picks the format).
-    #[arg(short, long)]
-    output: PathBuf,
-    /// Write a JSON report (counts, validity, epsilon, timings) here.
-    #[arg(long)]
-    report: Option<PathBuf>,
+    #[command(flatten)]
+    out: OutputArgs,
     /// 2D: read every ring as a directed loop exactly as written and
     /// write every loop as its own polygon (keeps inside-out and
     /// multiply enclosed shapes); by default rings are read by role.
@@ -91,7 +87,7 @@ impl BooleanArgs {
         let kinds = [
             FileKind::from_path(&self.a)?,
             FileKind::from_path(&self.b)?,
-            FileKind::from_path(&self.output)?,
+            FileKind::from_path(&self.out.output)?,
         ];
         let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
         if meshes != 0 && meshes != 3 {
@@ -99,14 +95,8 @@ impl BooleanArgs {
                 "A, B and the output must all be 2D files (.wkt, .geojson) or all 3D files (.obj, .off)",
             ));
         }
-        let mut writes = vec![("the output", self.output.as_path())];
-        if let Some(r) = &self.report {
-            writes.push(("the report", r.as_path()));
-        }
-        refuse_overlaps(
-            &writes,
-            &[("operand A", &self.a), ("operand B", &self.b)],
-        )?;
+        self.out
+            .refuse_overlaps(&[("operand A", &self.a), ("operand B", &self.b)])?;
         let op = self.op.op();
         if meshes == 3 {
             if self.via == ViaArg::Simplify {
@@ -138,18 +128,8 @@ impl BooleanArgs {
         }
     }
 
-    /// Writes the output and the report together (nothing when either
-    /// cannot be written).
-    fn write(&self, output: &[u8], report: &[u8]) -> Result<(), umbra::UmbraError> {
-        let mut files: Vec<(&Path, &[u8])> = vec![(&self.output, output)];
-        if let Some(r) = &self.report {
-            files.push((r, report));
-        }
-        write_all(&files)
-    }
-
     fn run_2d(&self, op: BooleanOp, via: Via, out_kind: FileKind) -> anyhow::Result<ExitCode> {
-        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.output);
+        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
         let keep = self.keep_orientation;
         let options = ReadOptions {
             orientation: orientation(keep),
@@ -198,7 +178,7 @@ impl BooleanArgs {
                 (encoded, report)
             }
         };
-        self.write(&encoded.bytes, &report_json(&report)?)?;
+        self.out.write(&encoded.bytes, &report)?;
         warn_orphans(encoded.orphan_holes, out_path);
         let detail = match (report.intersections, report.k_max) {
             (Some(n), _) => format!("{n} intersecting edge pairs"),
@@ -226,7 +206,7 @@ impl BooleanArgs {
     }
 
     fn run_3d(&self, op: BooleanOp, out_kind: FileKind) -> anyhow::Result<ExitCode> {
-        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.output);
+        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
         let a = read_mesh(a_path, MeshReadOptions::default(), true)?;
         let b = read_mesh(b_path, MeshReadOptions::default(), true)?;
         let variant = if self.triangulate {
@@ -247,7 +227,7 @@ impl BooleanArgs {
             out_file,
             &out,
         );
-        self.write(&bytes, &report_json(&report)?)?;
+        self.out.write(&bytes, &report)?;
         outln!(
             "{} ({}): {} vertices, {} facets, {} edge-facet intersections, volume {}, {:.3} ms -> {}",
             op.name(),

@@ -3,10 +3,10 @@
 
 use super::{invalid_result, millis_since, orientation, warn_orphans};
 use crate::errors::{self, usage};
-use crate::files::{refuse_overlaps, report_json, write_all};
+use crate::files::OutputArgs;
 use crate::stdout::outln;
 use clap::ValueEnum;
-use std::path::{Path, PathBuf};
+use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
@@ -20,9 +20,8 @@ use umbra::{
 pub struct SimplifyArgs {
     /// The input file (.wkt or .geojson).
     input: PathBuf,
-    /// The output file (.wkt or .geojson).
-    #[arg(short, long)]
-    output: PathBuf,
+    #[command(flatten)]
+    out: OutputArgs,
     /// Which winding numbers are inside.
     #[arg(long, value_enum, default_value = "positive")]
     rule: RuleArg,
@@ -30,9 +29,6 @@ pub struct SimplifyArgs {
     /// rules on invalid input need it) and write loops as they are.
     #[arg(long)]
     keep_orientation: bool,
-    /// Write a JSON report (counts, validity, epsilon, k_max, timings).
-    #[arg(long)]
-    report: Option<PathBuf>,
 }
 
 /// The fill rules of section 6.1.
@@ -67,7 +63,7 @@ impl SimplifyArgs {
     /// Checks the arguments, simplifies, writes the output (and the
     /// report) and prints a summary.
     pub fn run(self) -> anyhow::Result<ExitCode> {
-        let (in_path, out_path) = (&self.input, &self.output);
+        let (in_path, out_path) = (&self.input, &self.out.output);
         let in_kind = FileKind::from_path(in_path)?;
         let out_kind = FileKind::from_path(out_path)?;
         for kind in [in_kind, out_kind] {
@@ -75,11 +71,7 @@ impl SimplifyArgs {
                 return Err(usage("simplify works on 2D files (.wkt, .geojson)"));
             }
         }
-        let mut writes = vec![("the output", out_path.as_path())];
-        if let Some(r) = &self.report {
-            writes.push(("the report", r.as_path()));
-        }
-        refuse_overlaps(&writes, &[("the input", in_path)])?;
+        self.out.refuse_overlaps(&[("the input", in_path)])?;
         let keep = self.keep_orientation;
         let options = ReadOptions {
             orientation: orientation(keep),
@@ -101,12 +93,7 @@ impl SimplifyArgs {
             &out,
             total,
         );
-        let report_bytes = report_json(&report)?;
-        let mut files: Vec<(&Path, &[u8])> = vec![(out_path, &encoded.bytes)];
-        if let Some(r) = &self.report {
-            files.push((r, &report_bytes));
-        }
-        write_all(&files)?;
+        self.out.write(&encoded.bytes, &report)?;
         warn_orphans(encoded.orphan_holes, out_path);
         outln!(
             "simplify ({}): {} vertices, {} rings, k_max {}, epsilon {:e}, {:.3} ms -> {}",
