@@ -30,7 +30,6 @@
 //!   geometric-validity hints (exact count of crossing edge pairs).
 //! - [`UmbraError`]: every error names the file and the problem on one
 //!   line.
-//!
 //! - Output encoded in memory before anything is written:
 //!   [`encode_polygon_set`] (which also counts the rings as written) and
 //!   [`encode_mesh`].
