@@ -477,6 +477,25 @@ fn summary_and_report_count_what_is_written() {
         }
     }
     assert_eq!(differs, 2);
+    // `check` names the rings of zero area, so its counts add up.
+    let flat = write(
+        &dir,
+        "flat.wkt",
+        "POLYGON ((0 0, 2 0, 2 2, 0 2, 0 0), (1 1, 1 1.5, 1 1))\n",
+    );
+    let o = umbra(&[p("check"), &flat]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("rings: 2 (1 counter-clockwise, 0 clockwise, 1 of zero area)"),
+        "{text}"
+    );
+    let o = umbra(&[p("check"), &a]);
+    let text = String::from_utf8_lossy(&o.stdout);
+    assert!(
+        text.contains("rings: 1 (1 counter-clockwise, 0 clockwise), "),
+        "{text}"
+    );
     // Simplify too.
     for rule in ["positive", "nonzero", "evenodd"] {
         let o = umbra(&[

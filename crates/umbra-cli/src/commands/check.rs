@@ -108,11 +108,19 @@ impl CheckArgs {
             None => outln!("{file}: topologically valid")?,
             Some(e) => outln!("{file}: NOT topologically valid: {e}")?,
         }
+        // Rings of zero signed area (degenerate: one or two points, or
+        // back and forth) are neither; say so, so the counts add up.
+        let flat = r.rings.saturating_sub(r.ccw_rings + r.cw_rings);
         outln!(
-            "  rings: {} ({} counter-clockwise, {} clockwise), vertices: {}, edges: {}",
+            "  rings: {} ({} counter-clockwise, {} clockwise{}), vertices: {}, edges: {}",
             r.rings,
             r.ccw_rings,
             r.cw_rings,
+            if flat > 0 {
+                format!(", {flat} of zero area")
+            } else {
+                String::new()
+            },
             r.vertices,
             r.edges
         )?;
