@@ -71,6 +71,23 @@ fn identity(path: &Path) -> PathBuf {
     abs
 }
 
+/// `true` when both paths exist and are the same file (hard links too).
+#[cfg(unix)]
+fn same_file(a: &Path, b: &Path) -> bool {
+    use std::os::unix::fs::MetadataExt;
+    match (fs::metadata(a), fs::metadata(b)) {
+        (Ok(x), Ok(y)) => x.dev() == y.dev() && x.ino() == y.ino(),
+        _ => false,
+    }
+}
+
+/// `true` when both paths exist and are the same file (by canonical path
+/// only on this platform).
+#[cfg(not(unix))]
+fn same_file(_: &Path, _: &Path) -> bool {
+    false
+}
+
 /// Refuses (usage error, exit 2) any destination in `writes` that is also
 /// a file of `reads` or another destination. Each entry is `(role, path)`,
 /// the role as a message names it (`"the output"`, `"operand A"`).
@@ -87,7 +104,7 @@ pub fn refuse_overlaps(writes: &[(&str, &Path)], reads: &[(&str, &Path)]) -> any
         let clash = reads
             .iter()
             .chain(&writes[..i])
-            .find(|(_, _, other)| other == id);
+            .find(|(_, other_path, other)| other == id || same_file(path, other_path));
         if let Some((other_role, _, _)) = clash {
             return Err(usage(format!(
                 "{}: {role} would overwrite {other_role} (the same file); nothing was written",

@@ -288,6 +288,15 @@ fn an_output_that_is_an_input_or_the_report_is_refused() {
     };
     #[cfg(not(unix))]
     let linked = a.clone();
+    // A hard link: another name, the same file.
+    #[cfg(unix)]
+    let hard = {
+        let h = dir.join("hard.wkt");
+        fs::hard_link(&b, &h).unwrap();
+        h
+    };
+    #[cfg(not(unix))]
+    let hard = b.clone();
     let cases: Vec<(Vec<&Path>, &str)> = vec![
         (
             vec![p("boolean"), p("union"), &a, &b, p("-o"), &a],
@@ -330,6 +339,10 @@ fn an_output_that_is_an_input_or_the_report_is_refused() {
                 &a,
             ],
             "operand A",
+        ),
+        (
+            vec![p("boolean"), p("union"), &a, &b, p("-o"), &hard],
+            "operand B",
         ),
         (vec![p("simplify"), &a, p("-o"), &a], "the input"),
         (
