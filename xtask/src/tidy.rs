@@ -58,6 +58,7 @@ pub const ALLOWED: &[(&str, &[&str])] = &[
             "robust-arith",
         ],
     ),
+    ("umbra-cli", &["umbra"]),
 ];
 
 /// One dependency entry of a manifest.
