@@ -32,6 +32,7 @@
 mod commands;
 mod errors;
 mod files;
+mod progress;
 mod stdout;
 
 use clap::Parser;

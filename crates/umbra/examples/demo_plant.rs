@@ -22,7 +22,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     writeln!(
         stdout,
         "{detail:?}: {} Booleans over {} leaves in {secs:.2} s on {} threads; {} vertices, {} facets, valid {}, non-manifold edges {}, volume {:.4} m^3",
-        r.booleans, r.leaves, r.threads, r.vertices, r.facets, r.valid, r.non_manifold_edges, r.volume
+        r.booleans, r.leaves, r.threads, r.vertices, r.facets, r.topologically_valid, r.non_manifold_edges, r.volume
     )?;
     let mut slow: Vec<_> = r.nodes.iter().filter(|n| n.booleans > 0).collect();
     slow.sort_by(|a, b| b.ms.total_cmp(&a.ms));

@@ -14,7 +14,11 @@ use umbra::{
 fn eval(script: &str) -> PolygonMesh {
     let tree = parse_csg(script).unwrap();
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
-    assert!(out.report.valid, "{:?}", out.report.topology_error);
+    assert!(
+        out.report.topologically_valid,
+        "{:?}",
+        out.report.topology_error
+    );
     out.mesh
 }
 
@@ -112,7 +116,7 @@ fn polygonal_primitives_through_csg_match_the_polyhedral_formula() {
 fn the_bracket_example_has_its_polyhedral_volume() {
     let tree = read_csg_file(&examples().join("bracket.json")).unwrap();
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
-    assert!(out.report.valid);
+    assert!(out.report.topologically_valid);
     assert_eq!(out.report.booleans, 4);
     let want =
         80.0 * 40.0 * 6.0 + 6.0 * 40.0 * 50.0 - 2.0 * ngon(32, 4.0) * 6.0 - ngon(32, 5.0) * 6.0;
@@ -136,7 +140,7 @@ fn every_shipped_example_evaluates_to_a_valid_closed_solid() {
         let tree = read_csg_file(&path).unwrap_or_else(|e| panic!("{e}"));
         for triangulate in [false, true] {
             let out = evaluate_csg(&tree, CsgOptions { triangulate }).unwrap();
-            assert!(out.report.valid, "{}", path.display());
+            assert!(out.report.topologically_valid, "{}", path.display());
             assert_eq!(out.mesh.check_topology(), Ok(()));
             assert!(out.report.volume > 0.0, "{}", path.display());
             assert_eq!(out.report.booleans, tree.boolean_count());
@@ -463,7 +467,7 @@ fn builders_and_serde() {
         .to_string()
         .contains("box must be an object"));
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
-    assert!(out.report.valid && out.report.volume > 0.0 && out.report.volume < 8.0);
+    assert!(out.report.topologically_valid && out.report.volume > 0.0 && out.report.volume < 8.0);
 }
 
 #[test]
@@ -476,7 +480,7 @@ fn the_demo_plant_is_a_valid_closed_solid() {
     assert!(tree.boolean_count() >= 300, "{}", tree.boolean_count());
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
     assert_eq!(out.mesh.check_topology(), Ok(()));
-    assert!(out.report.valid);
+    assert!(out.report.topologically_valid);
     assert_eq!(out.report.non_manifold_edges, 0);
     assert!(
         out.report.volume > 30.0 && out.report.volume < 60.0,
@@ -588,7 +592,7 @@ proptest::proptest! {
         let tree = parse_csg(&script).unwrap();
         for triangulate in [false, true] {
             let out = evaluate_csg(&tree, CsgOptions { triangulate }).unwrap();
-            proptest::prop_assert!(out.report.valid);
+            proptest::prop_assert!(out.report.topologically_valid);
             // Intersection points are interpolated in f64 (eq. 4.2-4.6), so
             // the volume may differ from the exact one in the last bits.
             let want = grid_volume(&boxes, op);

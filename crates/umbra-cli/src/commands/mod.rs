@@ -35,6 +35,8 @@ commands! {
     Boolean => boolean::BooleanArgs,
     Simplify => simplify::SimplifyArgs,
     Check => check::CheckArgs,
+    Csg => csg::CsgArgs,
+    Demo => demo::DemoArgs,
 }
 
 /// The ring orientation of `--keep-orientation`.

@@ -371,7 +371,7 @@ fn pump(x: f64, y: f64, res: Res) -> CsgNode {
 /// let tree = demo_plant(DemoDetail::Coarse);
 /// assert!(tree.boolean_count() > 300);
 /// let out = evaluate_csg(&tree, CsgOptions::default())?;
-/// assert!(out.report.valid && out.report.volume > 0.0);
+/// assert!(out.report.topologically_valid && out.report.volume > 0.0);
 /// # Ok::<(), umbra::ModelError>(())
 /// ```
 pub fn demo_plant(detail: DemoDetail) -> CsgNode {
@@ -495,6 +495,6 @@ mod tests {
                 "axis {k}: {b:?}"
             );
         }
-        assert!(out.report.valid && out.report.volume > 0.0);
+        assert!(out.report.topologically_valid && out.report.volume > 0.0);
     }
 }

@@ -6,7 +6,7 @@
 use super::error::ModelError;
 use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
-use super::tree::{path_string, CsgNode, CsgOp, CsgShape, MAX_DEPTH};
+use super::tree::{path_string, CsgNode, CsgShape, MAX_DEPTH};
 use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -65,7 +65,7 @@ pub struct CsgReport {
     /// The output's half-edge count.
     pub half_edges: usize,
     /// `true` when the output satisfies the constraints of section 4.2.
-    pub valid: bool,
+    pub topologically_valid: bool,
     /// The violated constraint, when not valid (never expected).
     pub topology_error: Option<String>,
     /// Edges of non-zero length not shared by exactly one pair of opposite
@@ -76,10 +76,17 @@ pub struct CsgReport {
     pub volume: f64,
     /// The axis-aligned bounds `[min, max]`, if the output has a vertex.
     pub bounds: Option<[[f64; 3]; 2]>,
-    /// Wall-clock milliseconds of the whole evaluation.
-    pub total_ms: f64,
+    /// Wall-clock milliseconds: `total` is the whole evaluation.
+    pub timings_ms: CsgTimings,
     /// One entry per node, in tree order (pre-order).
     pub nodes: Vec<NodeReport>,
+}
+
+/// The timings of an evaluation, in milliseconds.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize)]
+pub struct CsgTimings {
+    /// The whole evaluation (parsing and file I/O excluded).
+    pub total: f64,
 }
 
 /// The result of an evaluation.
@@ -236,9 +243,12 @@ impl Ctx<'_> {
                 let start = Instant::now();
                 let booleans = solids.len().saturating_sub(1);
                 let solid = match op {
-                    CsgOp::Union => self.reduce(solids, BooleanOp::Union, path)?,
-                    CsgOp::Intersection => self.reduce(solids, BooleanOp::Intersection, path)?,
-                    CsgOp::Difference => {
+                    // Xor reaches the 3D Boolean, which refuses it with an
+                    // error naming the node.
+                    BooleanOp::Union | BooleanOp::Intersection | BooleanOp::Xor => {
+                        self.reduce(solids, *op, path)?
+                    }
+                    BooleanOp::Difference => {
                         let mut it = solids.into_iter();
                         let first = it.next();
                         let rest: Vec<Solid> = it.collect();
@@ -366,7 +376,7 @@ pub fn evaluate_csg(root: &CsgNode, options: CsgOptions) -> Result<CsgResult, Mo
 ///     {"box": {"size": [2, 2, 2], "center": true}},
 ///     {"cylinder": {"radius": 0.5, "height": 3, "segments": 8, "center": true}}]}"#)?;
 /// let out = evaluate_csg(&tree, CsgOptions::default())?;
-/// assert!(out.report.valid);
+/// assert!(out.report.topologically_valid);
 /// assert_eq!(out.report.booleans, 1);
 /// // The box minus the octagonal prism: 8 - 2 * (8 / 2) * 0.25 * sin(pi / 4).
 /// let prism = 2.0 * 4.0 * 0.25 * (std::f64::consts::TAU / 8.0).sin();
@@ -425,12 +435,14 @@ pub fn evaluate_csg_with_progress(
         vertices: mesh.vertices.len(),
         facets: mesh.facets.len(),
         half_edges: mesh.half_edge_count(),
-        valid: topology.is_ok(),
+        topologically_valid: topology.is_ok(),
         topology_error: topology.err().map(|e| e.to_string()),
         non_manifold_edges: non_manifold_edge_count(&mesh),
         volume: mesh_volume(&mesh),
         bounds,
-        total_ms: start.elapsed().as_secs_f64() * 1e3,
+        timings_ms: CsgTimings {
+            total: start.elapsed().as_secs_f64() * 1e3,
+        },
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };
     Ok(CsgResult { mesh, report })

@@ -16,7 +16,7 @@ pub use demo::{demo_plant, DemoDetail};
 pub use error::ModelError;
 pub use eval::{
     evaluate_csg, evaluate_csg_with_progress, mesh_volume, non_manifold_edge_count, CsgOptions,
-    CsgReport, CsgResult, NodeReport,
+    CsgReport, CsgResult, CsgTimings, NodeReport,
 };
 pub use glam::{DMat3, DMat4, DVec3};
 pub use primitives::{
@@ -25,6 +25,6 @@ pub use primitives::{
 };
 pub use transform::{transform_mesh, transform_triangles, Scale, Transform};
 pub use tree::{
-    parse_csg, parse_csg_value, read_csg_file, BoxSpec, CsgNode, CsgOp, CsgShape, CylinderSpec,
+    parse_csg, parse_csg_value, read_csg_file, BoxSpec, CsgNode, CsgShape, CylinderSpec,
     SphereSpec, TorusSpec, DEFAULT_SEGMENTS, DEFAULT_TORUS_SEGMENTS, MAX_DEPTH,
 };

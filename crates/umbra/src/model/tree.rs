@@ -26,34 +26,12 @@ use super::transform::{Scale, Transform};
 use serde::{Deserialize, Serialize};
 use serde_json::{Map, Value};
 use std::path::{Path, PathBuf};
+use topology::BooleanOp;
 
 /// The default segment count of spheres and cylinders.
 pub const DEFAULT_SEGMENTS: u32 = 32;
 /// The default segment counts of a torus (around the axis, around the tube).
 pub const DEFAULT_TORUS_SEGMENTS: [u32; 2] = [32, 16];
-
-/// A Boolean operation of a CSG node.
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Hash, Serialize, Deserialize)]
-#[serde(rename_all = "lowercase")]
-pub enum CsgOp {
-    /// The union of all children.
-    Union,
-    /// The intersection of all children.
-    Intersection,
-    /// The first child minus all the others.
-    Difference,
-}
-
-impl CsgOp {
-    /// The name in the JSON form.
-    pub fn name(self) -> &'static str {
-        match self {
-            CsgOp::Union => "union",
-            CsgOp::Intersection => "intersection",
-            CsgOp::Difference => "difference",
-        }
-    }
-}
 
 /// A box leaf.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -112,7 +90,7 @@ pub enum CsgShape {
     /// A Boolean of the children.
     Op {
         /// The operation.
-        op: CsgOp,
+        op: BooleanOp,
         /// The children (at least one).
         children: Vec<CsgNode>,
     },
@@ -359,9 +337,9 @@ fn parse_shape(key: &str, obj: &Map<String, Value>) -> Result<CsgShape, String> 
         "op" => {
             let op = match v {
                 Value::String(s) => match s.as_str() {
-                    "union" => CsgOp::Union,
-                    "intersection" => CsgOp::Intersection,
-                    "difference" => CsgOp::Difference,
+                    "union" => BooleanOp::Union,
+                    "intersection" => BooleanOp::Intersection,
+                    "difference" => BooleanOp::Difference,
                     other => {
                         return Err(format!(
                         "op must be \"union\", \"intersection\" or \"difference\", not \"{other}\""
@@ -775,23 +753,23 @@ impl CsgNode {
     }
 
     /// An operation node.
-    pub fn op(op: CsgOp, children: Vec<CsgNode>) -> CsgNode {
+    pub fn op(op: BooleanOp, children: Vec<CsgNode>) -> CsgNode {
         CsgNode::leaf(CsgShape::Op { op, children })
     }
 
     /// The union of the children.
     pub fn union(children: Vec<CsgNode>) -> CsgNode {
-        CsgNode::op(CsgOp::Union, children)
+        CsgNode::op(BooleanOp::Union, children)
     }
 
     /// The intersection of the children.
     pub fn intersection(children: Vec<CsgNode>) -> CsgNode {
-        CsgNode::op(CsgOp::Intersection, children)
+        CsgNode::op(BooleanOp::Intersection, children)
     }
 
     /// The first child minus the others.
     pub fn difference(children: Vec<CsgNode>) -> CsgNode {
-        CsgNode::op(CsgOp::Difference, children)
+        CsgNode::op(BooleanOp::Difference, children)
     }
 
     /// This node wrapped in a one-child union (no Boolean), to carry a
