@@ -41,36 +41,18 @@ mod construct;
 mod error;
 mod fast;
 mod interval_set;
+mod level_data;
 mod reference;
+mod timing;
 
 pub use composite::{pair_composite_edge, CompositeEdge};
 pub use error::BooleanError;
-pub use reference::{boolean_reference, LevelData};
+pub use level_data::LevelData;
 use std::time::Instant;
+use timing::ms;
+pub use timing::Timings;
 use topology::PolygonSet2;
 pub use topology::{BooleanOp, Operand};
-
-/// Wall-clock durations of the phases of one Boolean, in milliseconds.
-///
-/// `total` covers the whole call (validation included); the phases add up
-/// to about `total`. Informational only: no decision depends on them.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Timings {
-    /// Coordinate validation and the closure check of both operands.
-    pub validate: f64,
-    /// Edge boxes and the sweep-line broad phase (0 on the reference
-    /// path).
-    pub broad_phase: f64,
-    /// `X11` on the candidate pairs (every pair on the reference path).
-    pub intersections: f64,
-    /// `X02` and `X20`: ray casts and propagation (brute-force sums on the
-    /// reference path).
-    pub winding: f64,
-    /// Levels 3-4: inclusion values, composite edges, the shape.
-    pub construct: f64,
-    /// The whole operation.
-    pub total: f64,
-}
 
 /// The result of a 2D Boolean.
 #[derive(Clone, Debug)]
@@ -120,15 +102,38 @@ pub fn boolean_audit(
     let mut timings = Timings::default();
     validate(a, Operand::A)?;
     validate(b, Operand::B)?;
-    timings.validate = fast::ms(start);
+    timings.validate = ms(start);
     let (mut data, t) = fast::level2_fast(a, b)?;
     timings.broad_phase = t.broad_phase;
     timings.intersections = t.intersections;
     timings.winding = t.winding;
     let clock = Instant::now();
     let shape = construct::construct(a, b, op, &mut data)?;
-    timings.construct = fast::ms(clock);
-    timings.total = fast::ms(start);
+    timings.construct = ms(clock);
+    timings.total = ms(start);
+    Ok((output(a, b, shape, &data, timings), data))
+}
+
+/// The 2D Boolean with level 2 evaluated by brute force (every vertex
+/// against every edge, every edge against every edge), returning the level
+/// data for audit. `O(n m)`; use [`boolean`] for real work.
+pub fn boolean_reference(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    let start = Instant::now();
+    let mut timings = Timings::default();
+    validate(a, Operand::A)?;
+    validate(b, Operand::B)?;
+    timings.validate = ms(start);
+    let clock = Instant::now();
+    let mut data = reference::level2_brute_force(a, b)?;
+    timings.intersections = ms(clock);
+    let clock = Instant::now();
+    let shape = construct::construct(a, b, op, &mut data)?;
+    timings.construct = ms(clock);
+    timings.total = ms(start);
     Ok((output(a, b, shape, &data, timings), data))
 }
 
