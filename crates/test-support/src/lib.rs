@@ -2,7 +2,8 @@
 //! the fuzz targets: seeded generators ([`rng`]), exact oracles in big
 //! integer and rational arithmetic ([`exact`]), floating-point measures
 //! such as winding numbers and volumes ([`measure`]) and the primitive
-//! shapes tests build again and again ([`shapes`]).
+//! shapes tests build again and again ([`shapes`]); with the feature
+//! `proptest`, coordinate strategies for property tests (`strategies`).
 //!
 //! Nothing here is part of Umbra's API. A library crate may take this crate
 //! only as a dev-dependency (the tidy test enforces it), so no test code can
@@ -19,3 +20,5 @@ pub mod exact;
 pub mod measure;
 pub mod rng;
 pub mod shapes;
+#[cfg(feature = "proptest")]
+pub mod strategies;
