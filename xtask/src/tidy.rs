@@ -747,8 +747,10 @@ fn comments_of(name: &str, text: &str) -> Vec<(usize, String)> {
 }
 
 /// What in one line of documentation points outside the repository, for a
-/// file `depth` directories below the root.
-fn external_reference(text: &str, depth: usize) -> Option<String> {
+/// file in the directory `dir`, `depth` directories below the root: a
+/// relative path that climbs above the root, or climbs to a name that does
+/// not exist in the repository (such as a directory beside it).
+fn external_reference(text: &str, dir: &Path, depth: usize) -> Option<String> {
     let names = [concat!("DESIGN", ".md"), concat!("thesis", ".txt")];
     if let Some(n) = names.iter().find(|n| text.contains(*n)) {
         return Some(format!(
@@ -781,12 +783,27 @@ fn external_reference(text: &str, depth: usize) -> Option<String> {
         if text[..at].ends_with('.') {
             continue;
         }
+        let end = text[at..]
+            .find(|ch: char| ch.is_whitespace() || "`)'\"]>,;".contains(ch))
+            .map_or(text.len(), |e| at + e);
+        let shown = &text[at..end];
         if k > depth {
             return Some(format!(
-                "has the relative path `{}`, which climbs out of the repository",
-                &text[at..text[at..]
-                    .find(|ch: char| ch.is_whitespace() || "`)'\"]".contains(ch))
-                    .map_or(text.len(), |e| at + e)]
+                "has the relative path `{shown}`, which climbs out of the repository"
+            ));
+        }
+        let first = text[j..end]
+            .split(['/', '#'])
+            .next()
+            .unwrap_or("")
+            .trim_end_matches(['.', ':']);
+        let mut target = dir.to_path_buf();
+        for _ in 0..k {
+            target.pop();
+        }
+        if !first.is_empty() && !target.join(first).exists() {
+            return Some(format!(
+                "has the relative path `{shown}`, which leads to nothing in the repository"
             ));
         }
     }
@@ -829,7 +846,7 @@ pub fn check_external_references(root: &Path) -> Result<Vec<String>> {
                 comments_of(&name, &text)
             };
             for (n, l) in lines {
-                if let Some(why) = external_reference(&l, depth) {
+                if let Some(why) = external_reference(&l, &dir, depth) {
                     problems.push(format!("{}:{n}: {why}", rel.display()));
                 }
             }
@@ -953,6 +970,173 @@ umbra.workspace = true
             .any(|p| p.contains("'topology' has a dependency on 'shadow-2d'")));
         assert_eq!(headers.len(), 1, "{headers:?}");
         assert!(headers[0].contains("shadow-2d/src/lib.rs"));
+        Ok(())
+    }
+    /// A scratch directory for one test, removed first.
+    fn scratch(tag: &str) -> PathBuf {
+        let root = std::env::temp_dir().join(format!("umbra-tidy-{tag}-{}", std::process::id()));
+        let _ = fs::remove_dir_all(&root);
+        root
+    }
+
+    fn write(root: &Path, rel: &str, text: &str) -> Result<()> {
+        let p = root.join(rel);
+        if let Some(d) = p.parent() {
+            fs::create_dir_all(d)?;
+        }
+        fs::write(p, text)?;
+        Ok(())
+    }
+
+    #[test]
+    fn the_lexer_separates_comments_from_strings_and_char_literals() {
+        let (code, comments) = split_rust(
+            "//! head\nlet a = \"// not a comment\"; // tail\nlet q = '\"'; let l: &'static str = r#\"x \" // y\"#;\n/* block\n /* nested */ */ /// doc\nfn f() {}\n",
+        );
+        assert!(code.contains("\"// not a comment\""));
+        assert!(code.contains("r#\"x \" // y\"#"));
+        assert!(code.contains("fn f() {}"));
+        let texts: Vec<(usize, bool, &str)> = comments
+            .iter()
+            .map(|c| (c.line, c.doc, c.text.as_str()))
+            .collect();
+        assert_eq!(
+            texts,
+            vec![
+                (1, true, " head"),
+                (2, false, " tail"),
+                (4, false, " block\n /* nested */ "),
+                (5, true, " doc"),
+            ]
+        );
+    }
+
+    #[test]
+    fn crate_names_count_only_as_path_roots() {
+        assert!(names_crate("use num_traits::Zero;", "num_traits"));
+        assert!(names_crate(
+            "let x = rayon::current_num_threads();",
+            "rayon"
+        ));
+        assert!(names_crate("use serde;", "serde"));
+        assert!(names_crate("extern crate proptest;", "proptest"));
+        assert!(!names_crate("use serde_json::json;", "serde"));
+        assert!(!names_crate("use crate::topology::x;", "topology"));
+        assert!(!names_crate("let topology = 1;", "topology"));
+        assert!(!names_crate("my_rayon::x()", "rayon"));
+    }
+
+    /// The unused-dependency rule fires on a normal dependency, a
+    /// dev-dependency and a workspace entry nobody takes, and not on a
+    /// dependency named only in a doc test, through a rename or in a test.
+    #[test]
+    fn rejects_unused_dependencies() -> Result<()> {
+        let root = scratch("unused");
+        write(
+            &root,
+            "Cargo.toml",
+            "[workspace]\nmembers = [\"a\"]\n[workspace.dependencies]\nsmallvec = \"1\"\nslotmap = \"1\"\nglam = \"0.30\"\nnum-traits = \"0.2\"\n",
+        )?;
+        write(
+            &root,
+            "a/Cargo.toml",
+            "[package]\nname = \"a\"\n[dependencies]\nsmallvec.workspace = true\nrayon = \"1\"\nnum-traits.workspace = true\nalias = { package = \"serde\", version = \"1\" }\n[dev-dependencies]\nproptest = \"1\"\nnum-bigint = \"0.4\"\n",
+        )?;
+        write(
+            &root,
+            "a/src/lib.rs",
+            "//! A.\n//!\n//! ```\n//! use rayon::prelude::*;\n//! ```\n// smallvec::SmallVec is only mentioned here.\nuse num_traits::Zero;\nuse alias::Serialize;\n",
+        )?;
+        write(&root, "a/tests/t.rs", "//! T.\nuse proptest::prelude::*;\n")?;
+        let problems = check_unused_dependencies(&root)?;
+        let _ = fs::remove_dir_all(&root);
+        assert_eq!(problems.len(), 3, "{problems:?}");
+        assert!(problems
+            .iter()
+            .any(|p| p.contains("dependency 'smallvec'") && p.starts_with("a/Cargo.toml")));
+        assert!(problems
+            .iter()
+            .any(|p| p.contains("dev-dependency 'num-bigint'")));
+        assert!(problems
+            .iter()
+            .any(|p| p.contains("[workspace.dependencies] 'slotmap' is taken by no member")));
+        Ok(())
+    }
+
+    /// A crate under `crates/` may not take a dev-only crate as a normal
+    /// dependency; as a dev-dependency it may.
+    #[test]
+    fn rejects_a_normal_dependency_on_a_dev_only_crate() -> Result<()> {
+        let root = scratch("devonly");
+        write(
+            &root,
+            "Cargo.toml",
+            "[workspace.dependencies]\ntest-support = { path = \"crates/test-support\" }\n",
+        )?;
+        write(
+            &root,
+            "crates/test-support/Cargo.toml",
+            "[package]\nname = \"test-support\"\n",
+        )?;
+        write(
+            &root,
+            "crates/topology/Cargo.toml",
+            "[package]\nname = \"topology\"\n[dev-dependencies]\ntest-support.workspace = true\n",
+        )?;
+        write(
+            &root,
+            "crates/shadow-1d/Cargo.toml",
+            "[package]\nname = \"shadow-1d\"\n[dependencies]\ntest-support.workspace = true\n",
+        )?;
+        let problems = check_dependencies(&root)?;
+        let _ = fs::remove_dir_all(&root);
+        assert_eq!(problems.len(), 1, "{problems:?}");
+        assert!(problems[0]
+            .contains("'shadow-1d' has a dependency on the dev-only crate 'test-support'"));
+        Ok(())
+    }
+
+    /// The external-reference rule fires on each kind of reference, in
+    /// Markdown, in Rust comments and in TOML comments, and not on paths
+    /// that stay inside the repository or on string literals.
+    #[test]
+    fn rejects_docs_and_comments_pointing_outside_the_repository() -> Result<()> {
+        let root = scratch("external");
+        let design = concat!("DESIGN", ".md");
+        let thesis = concat!("thesis", ".txt");
+        write(
+            &root,
+            "docs/a.md",
+            &format!("See [b](../README.md) and `docs/x.md`.\nRead {design} first.\n"),
+        )?;
+        write(&root, "docs/b.md", "The text: ../shared/seed/x.\n")?;
+        write(
+            &root,
+            "crates/x/src/lib.rs",
+            &format!(
+                "//! Module.\n// see {thesis}, section 4\nlet p = \"/work/data\"; // fine: ../../../README.md\n/* under /tmp/scratch */\n"
+            ),
+        )?;
+        write(
+            &root,
+            "crates/x/Cargo.toml",
+            "[dependencies]\ny = { path = \"../y\" } # from ../../../outside\n",
+        )?;
+        write(&root, "README.md", "Clone into /home/me/umbra.\n")?;
+        let problems = check_external_references(&root)?;
+        let _ = fs::remove_dir_all(&root);
+        let expect = [
+            "README.md:1: points to the absolute path `/home/..`",
+            "crates/x/Cargo.toml:2: has the relative path `../../../outside`",
+            "crates/x/src/lib.rs:2: names `thesis",
+            "crates/x/src/lib.rs:4: points to the absolute path `/tmp/..`",
+            "docs/a.md:2: names `DESIGN",
+            "docs/b.md:1: has the relative path `../shared/seed/x.`, which leads to nothing",
+        ];
+        assert_eq!(problems.len(), expect.len(), "{problems:?}");
+        for (p, e) in problems.iter().zip(expect) {
+            assert!(p.starts_with(e), "{p} / {e}");
+        }
         Ok(())
     }
 }
