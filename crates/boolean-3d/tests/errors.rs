@@ -197,26 +197,5 @@ fn xor_is_refused_before_any_work() {
 }
 
 fn boolean_3d_cube() -> topology::PolygonMesh {
-    let v: Vec<[f64; 3]> = (0..8)
-        .map(|i| {
-            [
-                f64::from(i & 1),
-                f64::from((i >> 1) & 1),
-                f64::from((i >> 2) & 1),
-            ]
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let f = quads
-        .iter()
-        .map(|q| topology::Facet::from_loop(q))
-        .collect();
-    topology::PolygonMesh::new(v, f)
+    box_mesh([0.0; 3], [1.0; 3])
 }
