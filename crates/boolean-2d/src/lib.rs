@@ -98,20 +98,13 @@ pub fn boolean_audit(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
-    let start = Instant::now();
-    let mut timings = Timings::default();
-    validate(a, Operand::A)?;
-    validate(b, Operand::B)?;
-    timings.validate = ms(start);
-    let (mut data, t) = fast::level2_fast(a, b)?;
-    timings.broad_phase = t.broad_phase;
-    timings.intersections = t.intersections;
-    timings.winding = t.winding;
-    let clock = Instant::now();
-    let shape = construct::construct(a, b, op, &mut data)?;
-    timings.construct = ms(clock);
-    timings.total = ms(start);
-    Ok((output(a, b, shape, &data, timings), data))
+    run(a, b, op, |timings| {
+        let (data, t) = fast::level2_fast(a, b)?;
+        timings.broad_phase = t.broad_phase;
+        timings.intersections = t.intersections;
+        timings.winding = t.winding;
+        Ok(data)
+    })
 }
 
 /// The 2D Boolean with level 2 evaluated by brute force (every vertex
@@ -122,14 +115,28 @@ pub fn boolean_reference(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    run(a, b, op, |timings| {
+        let clock = Instant::now();
+        let data = reference::level2_brute_force(a, b)?;
+        timings.intersections = ms(clock);
+        Ok(data)
+    })
+}
+
+/// One Boolean: validation, level 2 by `level2` (which records its own
+/// phase timings), levels 3-4, the output.
+fn run(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+    level2: impl FnOnce(&mut Timings) -> Result<LevelData, BooleanError>,
+) -> Result<(BooleanOutput, LevelData), BooleanError> {
     let start = Instant::now();
     let mut timings = Timings::default();
     validate(a, Operand::A)?;
     validate(b, Operand::B)?;
     timings.validate = ms(start);
-    let clock = Instant::now();
-    let mut data = reference::level2_brute_force(a, b)?;
-    timings.intersections = ms(clock);
+    let mut data = level2(&mut timings)?;
     let clock = Instant::now();
     let shape = construct::construct(a, b, op, &mut data)?;
     timings.construct = ms(clock);
