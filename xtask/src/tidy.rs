@@ -381,33 +381,42 @@ fn skipped_dir(name: &str) -> bool {
     name.starts_with("target") || name.starts_with('.') || name == "node_modules"
 }
 
+/// Every file below `root` (sorted), leaving out build output, VCS data
+/// and the directories `enter` refuses.
+fn files_below(root: &Path, enter: impl Fn(&Path) -> bool) -> Result<Vec<PathBuf>> {
+    let mut out = Vec::new();
+    let mut stack = vec![root.to_path_buf()];
+    while let Some(dir) = stack.pop() {
+        for entry in fs::read_dir(&dir).with_context(|| format!("reading {}", dir.display()))? {
+            let entry = entry?;
+            let path = entry.path();
+            let ty = entry.file_type()?;
+            if ty.is_dir() {
+                if !skipped_dir(&entry.file_name().to_string_lossy()) && enter(&path) {
+                    stack.push(path);
+                }
+            } else if ty.is_file() {
+                out.push(path);
+            }
+        }
+    }
+    out.sort();
+    Ok(out)
+}
+
 /// The header rule: every `.rs` file not starting with `//!`.
 pub fn check_headers(root: &Path) -> Result<Vec<String>> {
     let mut problems = Vec::new();
-    let mut stack = vec![root.to_path_buf()];
-    while let Some(dir) = stack.pop() {
-        let mut entries: Vec<_> = fs::read_dir(&dir)
-            .with_context(|| format!("reading {}", dir.display()))?
-            .collect::<std::io::Result<_>>()?;
-        entries.sort_by_key(|e| e.file_name());
-        for entry in entries {
-            let path = entry.path();
-            let name = entry.file_name().to_string_lossy().into_owned();
-            let ty = entry.file_type()?;
-            if ty.is_dir() {
-                if !skipped_dir(&name) {
-                    stack.push(path);
-                }
-            } else if ty.is_file() && name.ends_with(".rs") {
-                let text = fs::read_to_string(&path)
-                    .with_context(|| format!("reading {}", path.display()))?;
-                if !text.starts_with("//!") {
-                    let rel = path.strip_prefix(root).unwrap_or(&path);
-                    problems.push(format!(
-                        "{}: does not start with a `//!` header comment",
-                        rel.display()
-                    ));
-                }
+    for path in files_below(root, |_| true)? {
+        if path.extension().is_some_and(|e| e == "rs") {
+            let text =
+                fs::read_to_string(&path).with_context(|| format!("reading {}", path.display()))?;
+            if !text.starts_with("//!") {
+                let rel = path.strip_prefix(root).unwrap_or(&path);
+                problems.push(format!(
+                    "{}: does not start with a `//!` header comment",
+                    rel.display()
+                ));
             }
         }
     }
@@ -609,50 +618,27 @@ pub fn names_crate(code: &str, ident: &str) -> bool {
 /// The `.rs` files of a package directory, leaving out build output and
 /// nested packages (directories with their own `Cargo.toml`).
 fn package_sources(dir: &Path) -> Result<Vec<PathBuf>> {
-    let mut out = Vec::new();
-    let mut stack = vec![dir.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        for entry in fs::read_dir(&d).with_context(|| format!("reading {}", d.display()))? {
-            let entry = entry?;
-            let path = entry.path();
-            let name = entry.file_name().to_string_lossy().into_owned();
-            let ty = entry.file_type()?;
-            if ty.is_dir() {
-                if !skipped_dir(&name) && !path.join("Cargo.toml").is_file() {
-                    stack.push(path);
-                }
-            } else if ty.is_file() && name.ends_with(".rs") {
-                out.push(path);
-            }
-        }
-    }
-    out.sort();
-    Ok(out)
+    let files = files_below(dir, |d| !d.join("Cargo.toml").is_file())?;
+    Ok(files
+        .into_iter()
+        .filter(|p| p.extension().is_some_and(|e| e == "rs"))
+        .collect())
 }
 
 /// Every `Cargo.toml` with a `[package]` below `root` (outside build
 /// output), with its directory.
 fn packages(root: &Path) -> Result<Vec<(PathBuf, Manifest)>> {
     let mut out = Vec::new();
-    let mut stack = vec![root.to_path_buf()];
-    while let Some(d) = stack.pop() {
-        let toml = d.join("Cargo.toml");
-        if toml.is_file() {
+    for toml in files_below(root, |_| true)? {
+        if toml.file_name().is_some_and(|n| n == "Cargo.toml") {
             let text =
                 fs::read_to_string(&toml).with_context(|| format!("reading {}", toml.display()))?;
             let m = parse_manifest(&text);
-            if m.name.is_some() {
-                out.push((d.clone(), m));
-            }
-        }
-        for entry in fs::read_dir(&d).with_context(|| format!("reading {}", d.display()))? {
-            let entry = entry?;
-            if entry.file_type()?.is_dir() && !skipped_dir(&entry.file_name().to_string_lossy()) {
-                stack.push(entry.path());
+            if let (Some(dir), Some(_)) = (toml.parent(), &m.name) {
+                out.push((dir.to_path_buf(), m));
             }
         }
     }
-    out.sort_by(|a, b| a.0.cmp(&b.0));
     Ok(out)
 }
 
@@ -816,39 +802,30 @@ fn external_reference(text: &str, dir: &Path, depth: usize) -> Option<String> {
 /// machine, or a relative path climbing above the repository root.
 pub fn check_external_references(root: &Path) -> Result<Vec<String>> {
     let mut problems = Vec::new();
-    let mut stack = vec![root.to_path_buf()];
-    while let Some(dir) = stack.pop() {
-        for entry in fs::read_dir(&dir).with_context(|| format!("reading {}", dir.display()))? {
-            let entry = entry?;
-            let path = entry.path();
-            let name = entry.file_name().to_string_lossy().into_owned();
-            let ty = entry.file_type()?;
-            if ty.is_dir() {
-                if !skipped_dir(&name) {
-                    stack.push(path);
-                }
-                continue;
-            }
-            let Some(all_doc) = doc_kind(&name).filter(|_| ty.is_file()) else {
-                continue;
-            };
-            let Ok(text) = fs::read_to_string(&path) else {
-                continue; // Not UTF-8: not documentation.
-            };
-            let rel = path.strip_prefix(root).unwrap_or(&path);
-            let depth = rel.components().count().saturating_sub(1);
-            let lines: Vec<(usize, String)> = if all_doc {
-                text.lines()
-                    .enumerate()
-                    .map(|(k, l)| (k + 1, l.to_string()))
-                    .collect()
-            } else {
-                comments_of(&name, &text)
-            };
-            for (n, l) in lines {
-                if let Some(why) = external_reference(&l, &dir, depth) {
-                    problems.push(format!("{}:{n}: {why}", rel.display()));
-                }
+    for path in files_below(root, |_| true)? {
+        let name = path
+            .file_name()
+            .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
+        let Some(all_doc) = doc_kind(&name) else {
+            continue;
+        };
+        let Ok(text) = fs::read_to_string(&path) else {
+            continue; // Not UTF-8: not documentation.
+        };
+        let rel = path.strip_prefix(root).unwrap_or(&path);
+        let depth = rel.components().count().saturating_sub(1);
+        let dir = path.parent().unwrap_or(root);
+        let lines: Vec<(usize, String)> = if all_doc {
+            text.lines()
+                .enumerate()
+                .map(|(k, l)| (k + 1, l.to_string()))
+                .collect()
+        } else {
+            comments_of(&name, &text)
+        };
+        for (n, l) in lines {
+            if let Some(why) = external_reference(&l, dir, depth) {
+                problems.push(format!("{}:{n}: {why}", rel.display()));
             }
         }
     }
