@@ -253,7 +253,38 @@ pub fn regular_ngon(n: usize, radius: f64, rotation_deg: f64) -> Ring {
 /// The axis-aligned square with lower-left corner `(x, y)` and side `s`,
 /// anticlockwise.
 pub fn square(x: f64, y: f64, s: f64) -> Ring {
-    vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]]
+    rect(x, y, s, s)
+}
+
+/// The rectangle `[x, x + w] x [y, y + h]`, anticlockwise from its lower
+/// left corner.
+pub fn rect(x: f64, y: f64, w: f64, h: f64) -> Ring {
+    vec![[x, y], [x + w, y], [x + w, y + h], [x, y + h]]
+}
+
+/// A comb of `teeth` teeth `[1, w] x [2i, 2i + 1/2]` on the spine `[0, 1]`,
+/// anticlockwise; with `mirrored`, its mirror image `x -> w + 2 - x`
+/// shifted up by `shift` (spine on the right, the loop reversed so that it
+/// stays anticlockwise). Shift 1: teeth interleaved with the unmirrored
+/// comb's, never touching; 1/2: touching along whole edges; 1/4:
+/// overlapping. The broad phases' worst case: every tooth spans the same
+/// x range.
+pub fn comb(teeth: usize, w: f64, mirrored: bool, shift: f64) -> Ring {
+    let mut pts = vec![[0.0, 0.0]];
+    for i in 0..teeth {
+        let y = 2.0 * i as f64;
+        pts.extend_from_slice(&[[w, y], [w, y + 0.5], [1.0, y + 0.5], [1.0, y + 2.0]]);
+    }
+    pts.truncate(pts.len() - 2);
+    pts.push([0.0, 2.0 * teeth as f64 - 1.5]);
+    if mirrored {
+        pts = pts
+            .iter()
+            .rev()
+            .map(|p| [w + 2.0 - p[0], p[1] + shift])
+            .collect();
+    }
+    pts
 }
 
 #[cfg(test)]
@@ -318,5 +349,20 @@ mod tests {
         }
         assert!(regular_ngon(2, 1.0, 0.0).is_empty());
         assert_eq!(square(1.0, 2.0, 3.0)[2], [4.0, 5.0]);
+        let area = |r: &Ring| {
+            (0..r.len())
+                .map(|i| {
+                    let (p, q) = (r[i], r[(i + 1) % r.len()]);
+                    p[0] * q[1] - q[0] * p[1]
+                })
+                .sum::<f64>()
+                / 2.0
+        };
+        assert_eq!(area(&rect(1.0, 2.0, 3.0, 4.0)), 12.0);
+        // Spine 1 x (2 teeth - 1.5), teeth (w - 1) x 1/2 each.
+        let c = comb(5, 4.0, false, 0.0);
+        assert_eq!(c.len(), 4 * 5);
+        assert_eq!(area(&c), 8.5 + 5.0 * 1.5);
+        assert_eq!(area(&comb(5, 4.0, true, 1.0)), 8.5 + 5.0 * 1.5);
     }
 }
