@@ -1,8 +1,10 @@
 //! Umbra developer tasks as a library, so that the checks run both from
 //! the `cargo xtask` command line and as ordinary `cargo test` tests:
 //!
-//! - [`tidy`]: dependencies point only down the pyramid (the table of `docs/ARCHITECTURE.md`)
-//!   and every `.rs` file starts with a `//!` header;
+//! - [`tidy`]: dependencies point only down the pyramid (the table of
+//!   `docs/ARCHITECTURE.md`), every declared dependency is used, every
+//!   `.rs` file starts with a `//!` header, and no doc or comment points
+//!   outside the repository;
 //! - [`experiment`]: the section 8.3 measurement of the intersection-point
 //!   error of Tables 7.1-7.2 against the `sqrt(153) u L` bound (eq. 8.17);
 //! - [`verify`]: the topology invariants behind Theorems 1-2 and closure
