@@ -34,55 +34,40 @@ pub const ALLOWED: &[(&str, &[&str])] = &[
     ("topology", &["robust-arith"]),
     ("shadow-1d", &["topology", "robust-arith"]),
     ("shadow-2d", &["shadow-1d", "topology", "robust-arith"]),
-    (
-        "boolean-2d",
-        &["shadow-2d", "shadow-1d", "topology", "robust-arith"],
-    ),
-    (
-        "boolean-3d",
-        &["shadow-2d", "shadow-1d", "topology", "robust-arith"],
-    ),
+    ("boolean-2d", SHADOWS),
+    ("boolean-3d", SHADOWS),
     ("simplify-2d", &["shadow-1d", "topology", "robust-arith"]),
-    (
-        "smooth",
-        &[
-            "boolean-2d",
-            "boolean-3d",
-            "simplify-2d",
-            "shadow-2d",
-            "shadow-1d",
-            "topology",
-            "robust-arith",
-        ],
-    ),
-    (
-        "umbra",
-        &[
-            "smooth",
-            "boolean-2d",
-            "boolean-3d",
-            "simplify-2d",
-            "shadow-2d",
-            "shadow-1d",
-            "topology",
-            "robust-arith",
-        ],
-    ),
+    ("smooth", BELOW_SMOOTH),
+    ("umbra", ALGORITHMS),
     ("umbra-cli", &["umbra"]),
     ("umbra-py", &["umbra"]),
-    (
-        "test-support",
-        &[
-            "smooth",
-            "boolean-2d",
-            "boolean-3d",
-            "simplify-2d",
-            "shadow-2d",
-            "shadow-1d",
-            "topology",
-            "robust-arith",
-        ],
-    ),
+    ("test-support", ALGORITHMS),
+];
+
+/// `shadow-2d` and below: what the basic Booleans may use.
+const SHADOWS: &[&str] = &["shadow-2d", "shadow-1d", "topology", "robust-arith"];
+
+/// The Booleans, the sweep and below: what smoothing may use.
+const BELOW_SMOOTH: &[&str] = &[
+    "boolean-2d",
+    "boolean-3d",
+    "simplify-2d",
+    "shadow-2d",
+    "shadow-1d",
+    "topology",
+    "robust-arith",
+];
+
+/// Every algorithm crate: what the facade (and `test-support`) may use.
+const ALGORITHMS: &[&str] = &[
+    "smooth",
+    "boolean-2d",
+    "boolean-3d",
+    "simplify-2d",
+    "shadow-2d",
+    "shadow-1d",
+    "topology",
+    "robust-arith",
 ];
 
 /// Crates for development only: a crate under `crates/` may take them as
