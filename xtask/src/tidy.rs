@@ -361,9 +361,13 @@ pub fn check_dependencies(root: &Path) -> Result<Vec<String>> {
     Ok(problems)
 }
 
-/// Directories never scanned for `.rs` files: build output and VCS data.
+/// Directories never scanned: build output, VCS data and hidden
+/// directories other than the repository's own configuration (`.ci`,
+/// `.cargo`, `.github`).
 fn skipped_dir(name: &str) -> bool {
-    name.starts_with("target") || name.starts_with('.') || name == "node_modules"
+    name.starts_with("target")
+        || name == "node_modules"
+        || (name.starts_with('.') && ![".ci", ".cargo", ".github"].contains(&name))
 }
 
 /// Every file below `root` (sorted), leaving out build output, VCS data
@@ -791,11 +795,13 @@ pub fn check_external_references(root: &Path) -> Result<Vec<String>> {
         let name = path
             .file_name()
             .map_or_else(String::new, |n| n.to_string_lossy().into_owned());
-        let Some(all_doc) = doc_kind(&name) else {
-            continue;
-        };
         let Ok(text) = fs::read_to_string(&path) else {
             continue; // Not UTF-8: not documentation.
+        };
+        // A script without an extension is read like a shell file.
+        let script = !name.contains('.') && text.starts_with("#!");
+        let Some(all_doc) = doc_kind(&name).or(script.then_some(false)) else {
+            continue;
         };
         let rel = path.strip_prefix(root).unwrap_or(&path);
         let depth = rel.components().count().saturating_sub(1);
@@ -1085,9 +1091,16 @@ umbra.workspace = true
             "[dependencies]\ny = { path = \"../y\" } # from ../../../outside\n",
         )?;
         write(&root, "README.md", "Clone into /home/me/umbra.\n")?;
+        write(
+            &root,
+            ".ci/run",
+            "#!/usr/bin/env bash\necho /tmp/ok # logs go to /mnt/logs\n",
+        )?;
+        write(&root, ".git/notes.md", "See /work/x.\n")?;
         let problems = check_external_references(&root)?;
         let _ = fs::remove_dir_all(&root);
         let expect = [
+            ".ci/run:2: points to the absolute path `/mnt/..`",
             "README.md:1: points to the absolute path `/home/..`",
             "crates/x/Cargo.toml:2: has the relative path `../../../outside`",
             "crates/x/src/lib.rs:2: names `thesis",
