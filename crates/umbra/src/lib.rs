@@ -55,6 +55,7 @@ mod error;
 #[cfg(feature = "io")]
 mod io;
 mod mesh_check;
+mod model;
 mod predicates;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput, Operand};
@@ -67,6 +68,7 @@ pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
 pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
+pub use model::*;
 pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
 pub use simplify_2d::{FillRule, Simplified, SimplifyError};
 pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};

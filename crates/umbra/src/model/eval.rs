@@ -1,0 +1,437 @@
+//! Evaluation of a CSG tree with the 3D Boolean: n-ary operations as
+//! balanced trees of binary Booleans, independent branches in parallel
+//! (rayon), the same output bit for bit whatever the thread count, a
+//! progress callback and a typed report with per-node timings.
+
+use super::error::ModelError;
+use super::primitives::{cuboid, cylinder, torus, uv_sphere};
+use super::transform::{transform_mesh, transform_triangles};
+use super::tree::{path_string, CsgNode, CsgOp, CsgShape, MAX_DEPTH};
+use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
+use glam::DVec3;
+use rayon::prelude::*;
+use serde::Serialize;
+use std::collections::HashMap;
+use std::sync::atomic::{AtomicUsize, Ordering};
+use std::sync::Mutex;
+use std::time::Instant;
+use topology::{PolygonMesh, TriangleMesh};
+
+/// How a tree is evaluated.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct CsgOptions {
+    /// Use the triangle-mesh variant of the 3D Boolean (every leaf
+    /// triangulated, every result triangulated, section 4.8) instead of
+    /// the polygon-mesh variant.
+    pub triangulate: bool,
+}
+
+/// The timing and sizes of one node of the tree.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct NodeReport {
+    /// The node's path (`children[2].children[0]`, or `root`).
+    pub path: String,
+    /// `union`, `intersection`, `difference`, `box`, `sphere`, ...
+    pub kind: String,
+    /// The Booleans this node ran (not counting its children's).
+    pub booleans: usize,
+    /// The facet counts of the operands (the children's results), for an
+    /// operation.
+    pub operand_facets: Vec<usize>,
+    /// The result's vertex count (after the node's transform).
+    pub vertices: usize,
+    /// The result's facet count.
+    pub facets: usize,
+    /// Wall-clock milliseconds of this node's own work (its Booleans, or
+    /// building the primitive), children excluded.
+    pub ms: f64,
+}
+
+/// The report of an evaluation (serialisable for `--report`).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct CsgReport {
+    /// `polygon` or `triangle`: the variant of the 3D Boolean.
+    pub variant: &'static str,
+    /// The number of binary Booleans run.
+    pub booleans: usize,
+    /// The number of leaves.
+    pub leaves: usize,
+    /// The rayon threads available.
+    pub threads: usize,
+    /// The output's vertex count.
+    pub vertices: usize,
+    /// The output's facet count.
+    pub facets: usize,
+    /// The output's half-edge count.
+    pub half_edges: usize,
+    /// `true` when the output satisfies the constraints of section 4.2.
+    pub valid: bool,
+    /// The violated constraint, when not valid (never expected).
+    pub topology_error: Option<String>,
+    /// Edges of non-zero length not shared by exactly one pair of opposite
+    /// half-edges (0 for a 2-manifold surface; touching parts
+    /// legitimately give some).
+    pub non_manifold_edges: usize,
+    /// The signed volume of the output.
+    pub volume: f64,
+    /// The axis-aligned bounds `[min, max]`, if the output has a vertex.
+    pub bounds: Option<[[f64; 3]; 2]>,
+    /// Wall-clock milliseconds of the whole evaluation.
+    pub total_ms: f64,
+    /// One entry per node, in tree order (pre-order).
+    pub nodes: Vec<NodeReport>,
+}
+
+/// The result of an evaluation.
+#[derive(Clone, Debug)]
+pub struct CsgResult {
+    /// The output mesh (one triangle per facet in the triangle variant).
+    pub mesh: PolygonMesh,
+    /// The report.
+    pub report: CsgReport,
+}
+
+/// A solid in the variant being evaluated.
+enum Solid {
+    Poly(PolygonMesh),
+    Tri(TriangleMesh),
+}
+
+impl Solid {
+    fn facets(&self) -> usize {
+        match self {
+            Solid::Poly(m) => m.facets.len(),
+            Solid::Tri(m) => m.triangles.len(),
+        }
+    }
+
+    fn vertices(&self) -> usize {
+        match self {
+            Solid::Poly(m) => m.vertices.len(),
+            Solid::Tri(m) => m.vertices.len(),
+        }
+    }
+}
+
+struct Ctx<'a> {
+    options: CsgOptions,
+    total: usize,
+    done: AtomicUsize,
+    progress: Option<&'a (dyn Fn(usize, usize) + Sync)>,
+    nodes: Mutex<Vec<(Vec<usize>, NodeReport)>>,
+}
+
+impl Ctx<'_> {
+    fn boolean(
+        &self,
+        a: Solid,
+        b: Solid,
+        op: BooleanOp,
+        path: &[usize],
+    ) -> Result<Solid, ModelError> {
+        let err = |source| ModelError::Boolean {
+            node: path_string(path),
+            source,
+        };
+        let out = match (a, b) {
+            (Solid::Poly(a), Solid::Poly(b)) => {
+                Solid::Poly(boolean_mesh(&a, &b, op).map_err(err)?.mesh)
+            }
+            (Solid::Tri(a), Solid::Tri(b)) => {
+                Solid::Tri(boolean_triangles(&a, &b, op).map_err(err)?.mesh)
+            }
+            _ => {
+                return Err(err(boolean_3d::Boolean3Error::Internal(
+                    "operands of different variants".into(),
+                )))
+            }
+        };
+        let done = self.done.fetch_add(1, Ordering::SeqCst) + 1;
+        if let Some(p) = self.progress {
+            p(done, self.total);
+        }
+        Ok(out)
+    }
+
+    /// The balanced pairwise reduction of `items` by `op`: round by round,
+    /// neighbours combined in parallel; the pairing depends only on the
+    /// count, so the result does not depend on the schedule.
+    fn reduce(
+        &self,
+        mut items: Vec<Solid>,
+        op: BooleanOp,
+        path: &[usize],
+    ) -> Result<Solid, ModelError> {
+        while items.len() > 1 {
+            let mut pairs = Vec::with_capacity(items.len().div_ceil(2));
+            let mut it = items.into_iter();
+            while let Some(a) = it.next() {
+                pairs.push((a, it.next()));
+            }
+            let results: Vec<Result<Solid, ModelError>> = pairs
+                .into_par_iter()
+                .map(|(a, b)| match b {
+                    Some(b) => self.boolean(a, b, op, path),
+                    None => Ok(a),
+                })
+                .collect();
+            items = results.into_iter().collect::<Result<_, _>>()?;
+        }
+        items.pop().ok_or_else(|| ModelError::Script {
+            file: String::new(),
+            node: path_string(path),
+            message: "an operation needs at least one child".into(),
+        })
+    }
+
+    fn leaf(&self, node: &CsgNode, path: &[usize]) -> Result<Solid, ModelError> {
+        let located = |e: ModelError| match e {
+            ModelError::InvalidParameter { param, message } => ModelError::Script {
+                file: String::new(),
+                node: path_string(path),
+                message: format!("{param} {message}"),
+            },
+            other => other,
+        };
+        let mesh = match &node.shape {
+            CsgShape::Box(b) => cuboid(DVec3::from_array(b.size), b.center),
+            CsgShape::Sphere(s) => uv_sphere(s.radius, s.segments, s.rings()),
+            CsgShape::Cylinder(c) => cylinder(
+                c.radius,
+                c.radius_top.unwrap_or(c.radius),
+                c.height,
+                c.segments,
+                c.center,
+            ),
+            CsgShape::Torus(t) => torus(t.radius, t.tube, t.segments),
+            CsgShape::File(p) => read_file(p, path),
+            CsgShape::Op { .. } => Err(ModelError::Script {
+                file: String::new(),
+                node: path_string(path),
+                message: "an operation is not a leaf".into(),
+            }),
+        }
+        .map_err(located)?;
+        Ok(if self.options.triangulate {
+            Solid::Tri(triangulate_mesh(&mesh))
+        } else {
+            Solid::Poly(mesh)
+        })
+    }
+
+    fn eval(&self, node: &CsgNode, path: &[usize]) -> Result<Solid, ModelError> {
+        let (solid, booleans, operand_facets, own_ms) = match &node.shape {
+            CsgShape::Op { op, children } => {
+                let results: Vec<Result<Solid, ModelError>> = children
+                    .par_iter()
+                    .enumerate()
+                    .map(|(i, c)| {
+                        let mut p = path.to_vec();
+                        p.push(i);
+                        self.eval(c, &p)
+                    })
+                    .collect();
+                let solids: Vec<Solid> = results.into_iter().collect::<Result<_, _>>()?;
+                let operand_facets = solids.iter().map(Solid::facets).collect();
+                let start = Instant::now();
+                let booleans = solids.len().saturating_sub(1);
+                let solid = match op {
+                    CsgOp::Union => self.reduce(solids, BooleanOp::Union, path)?,
+                    CsgOp::Intersection => self.reduce(solids, BooleanOp::Intersection, path)?,
+                    CsgOp::Difference => {
+                        let mut it = solids.into_iter();
+                        let first = it.next();
+                        let rest: Vec<Solid> = it.collect();
+                        match first {
+                            None => self.reduce(Vec::new(), BooleanOp::Union, path)?,
+                            Some(a) if rest.is_empty() => a,
+                            Some(a) => {
+                                let b = self.reduce(rest, BooleanOp::Union, path)?;
+                                self.boolean(a, b, BooleanOp::Difference, path)?
+                            }
+                        }
+                    }
+                };
+                (solid, booleans, operand_facets, start.elapsed())
+            }
+            _ => {
+                let start = Instant::now();
+                let solid = self.leaf(node, path)?;
+                (solid, 0, Vec::new(), start.elapsed())
+            }
+        };
+        let start = Instant::now();
+        let solid = if node.transform.is_identity() {
+            solid
+        } else {
+            let m = node.transform.matrix();
+            let located = |e: ModelError| ModelError::Script {
+                file: String::new(),
+                node: path_string(path),
+                message: e.to_string(),
+            };
+            match solid {
+                Solid::Poly(s) => Solid::Poly(transform_mesh(&s, &m).map_err(located)?),
+                Solid::Tri(s) => Solid::Tri(transform_triangles(&s, &m).map_err(located)?),
+            }
+        };
+        let ms = (own_ms + start.elapsed()).as_secs_f64() * 1e3;
+        let report = NodeReport {
+            path: path_string(path),
+            kind: node.shape.kind().to_string(),
+            booleans,
+            operand_facets,
+            vertices: solid.vertices(),
+            facets: solid.facets(),
+            ms,
+        };
+        if let Ok(mut nodes) = self.nodes.lock() {
+            nodes.push((path.to_vec(), report));
+        }
+        Ok(solid)
+    }
+}
+
+#[cfg(feature = "io")]
+fn read_file(p: &std::path::Path, path: &[usize]) -> Result<PolygonMesh, ModelError> {
+    crate::read_mesh(p, crate::MeshReadOptions::default(), true).map_err(|e| ModelError::File {
+        node: path_string(path),
+        message: e.to_string(),
+    })
+}
+
+#[cfg(not(feature = "io"))]
+fn read_file(p: &std::path::Path, path: &[usize]) -> Result<PolygonMesh, ModelError> {
+    Err(ModelError::File {
+        node: path_string(path),
+        message: format!(
+            "{}: reading mesh files needs the facade's `io` feature",
+            p.display()
+        ),
+    })
+}
+
+/// The number of edges not shared by exactly one pair of opposite
+/// half-edges. Zero-length edges (between vertices at the same position,
+/// which the Boolean may leave where parts touch) are not counted.
+pub fn non_manifold_edge_count(mesh: &PolygonMesh) -> usize {
+    let mut count: HashMap<(u32, u32), (u32, u32)> = HashMap::new();
+    let at = |v: u32| mesh.vertices.get(v as usize);
+    for f in &mesh.facets {
+        for h in &f.half_edges {
+            if h.start == h.end || at(h.start) == at(h.end) {
+                continue;
+            }
+            let e = count
+                .entry((h.start.min(h.end), h.start.max(h.end)))
+                .or_default();
+            if h.start < h.end {
+                e.0 += 1;
+            } else {
+                e.1 += 1;
+            }
+        }
+    }
+    count.values().filter(|&&c| c != (1, 1)).count()
+}
+
+/// The signed volume of a closed polygon mesh (its triangulation of
+/// section 4.8, divergence theorem).
+pub fn mesh_volume(mesh: &PolygonMesh) -> f64 {
+    triangulate_mesh(mesh).signed_volume()
+}
+
+/// Evaluates a CSG tree (see [`evaluate_csg_with_progress`]).
+pub fn evaluate_csg(root: &CsgNode, options: CsgOptions) -> Result<CsgResult, ModelError> {
+    evaluate_csg_with_progress(root, options, None)
+}
+
+/// Evaluates a CSG tree with the 3D Boolean of chapter 4: every node's
+/// children in parallel, an n-ary union or intersection as a balanced tree
+/// of binary Booleans, a difference as the first child minus the union of
+/// the others, each node's transform applied to its result. `progress` is
+/// called after every Boolean with (done, total), from any thread. The
+/// output mesh is the same bit for bit whatever the number of threads; the
+/// first failing node in tree order is reported. Trees built in code are
+/// checked here as scripts are when parsed (parameters, transforms, at
+/// least one child per operation, depth at most [`MAX_DEPTH`]): a bad tree
+/// gives an error, never a panic.
+///
+/// # Example
+///
+/// ```
+/// use umbra::{evaluate_csg, parse_csg, CsgOptions};
+///
+/// let tree = parse_csg(r#"{"op": "difference", "children": [
+///     {"box": {"size": [2, 2, 2], "center": true}},
+///     {"cylinder": {"radius": 0.5, "height": 3, "segments": 8, "center": true}}]}"#)?;
+/// let out = evaluate_csg(&tree, CsgOptions::default())?;
+/// assert!(out.report.valid);
+/// assert_eq!(out.report.booleans, 1);
+/// // The box minus the octagonal prism: 8 - 2 * (8 / 2) * 0.25 * sin(pi / 4).
+/// let prism = 2.0 * 4.0 * 0.25 * (std::f64::consts::TAU / 8.0).sin();
+/// assert!((out.report.volume - (8.0 - prism)).abs() < 1e-12);
+/// # Ok::<(), umbra::ModelError>(())
+/// ```
+pub fn evaluate_csg_with_progress(
+    root: &CsgNode,
+    options: CsgOptions,
+    progress: Option<&(dyn Fn(usize, usize) + Sync)>,
+) -> Result<CsgResult, ModelError> {
+    let start = Instant::now();
+    let depth = root.depth();
+    if depth > MAX_DEPTH + 1 {
+        return Err(ModelError::Script {
+            file: String::new(),
+            node: "root".into(),
+            message: format!("nesting deeper than {MAX_DEPTH} ({depth} levels)"),
+        });
+    }
+    let ctx = Ctx {
+        options,
+        total: root.boolean_count(),
+        done: AtomicUsize::new(0),
+        progress,
+        nodes: Mutex::new(Vec::new()),
+    };
+    let solid = ctx.eval(root, &[])?;
+    let mesh = match solid {
+        Solid::Poly(m) => m,
+        Solid::Tri(t) => t.to_polygon_mesh(),
+    };
+    let mut nodes = ctx.nodes.into_inner().unwrap_or_else(|e| e.into_inner());
+    nodes.sort_by(|a, b| a.0.cmp(&b.0));
+    let topology = mesh.check_topology();
+    let bounds = mesh.vertices.first().map(|&v0| {
+        let mut lo = v0;
+        let mut hi = v0;
+        for v in &mesh.vertices {
+            for k in 0..3 {
+                lo[k] = lo[k].min(v[k]);
+                hi[k] = hi[k].max(v[k]);
+            }
+        }
+        [lo, hi]
+    });
+    let report = CsgReport {
+        variant: if options.triangulate {
+            "triangle"
+        } else {
+            "polygon"
+        },
+        booleans: ctx.done.load(Ordering::SeqCst),
+        leaves: root.leaf_count(),
+        threads: rayon::current_num_threads(),
+        vertices: mesh.vertices.len(),
+        facets: mesh.facets.len(),
+        half_edges: mesh.half_edge_count(),
+        valid: topology.is_ok(),
+        topology_error: topology.err().map(|e| e.to_string()),
+        non_manifold_edges: non_manifold_edge_count(&mesh),
+        volume: mesh_volume(&mesh),
+        bounds,
+        total_ms: start.elapsed().as_secs_f64() * 1e3,
+        nodes: nodes.into_iter().map(|(_, r)| r).collect(),
+    };
+    Ok(CsgResult { mesh, report })
+}
