@@ -78,10 +78,7 @@ pub const DEV_ONLY: &[&str] = &["test-support"];
 
 /// `[workspace.dependencies]` entries kept although no member takes them
 /// yet, each with the reason. Keep this short: an entry here is a promise.
-pub const RESERVED_WORKSPACE_DEPS: &[(&str, &str)] = &[(
-    "umbra",
-    "the `umbra-cli` package (being created) takes the facade",
-)];
+pub const RESERVED_WORKSPACE_DEPS: &[(&str, &str)] = &[];
 
 /// Declared dependencies a package keeps without naming them in its code,
 /// as `(package, dependency, reason)`. Empty: every entry so far was dead.
@@ -997,7 +994,7 @@ umbra.workspace = true
         write(
             &root,
             "Cargo.toml",
-            "[workspace]\nmembers = [\"a\"]\n[workspace.dependencies]\nsmallvec = \"1\"\nslotmap = \"1\"\numbra = { path = \"u\" }\nnum-traits = \"0.2\"\n",
+            "[workspace]\nmembers = [\"a\"]\n[workspace.dependencies]\nsmallvec = \"1\"\nslotmap = \"1\"\nnum-traits = \"0.2\"\n",
         )?;
         write(
             &root,

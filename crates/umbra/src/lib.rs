@@ -2,14 +2,25 @@
 //! in plain `f64` arithmetic, after the dissertation "Towards robust inexact
 //! geometric computation" (see `docs/ARCHITECTURE.md` in the repository).
 //!
-//! This facade re-exports the main types of the lower crates and adds file
-//! input/output and shape checks:
+//! This facade is the whole public API, flat: the lower crates' entry
+//! points and types, file input/output (feature `io`, on by default),
+//! shape checks and typed reports. The `umbra` command-line tool (package
+//! `umbra-cli`) calls nothing else.
 //!
 //! - Shapes: [`PolygonSet2`] (2D directed edges with multiplicity),
 //!   [`PolygonMesh`], [`TriangleMesh`], with `check_topology()` naming the
 //!   violated constraint of section 4.2.
-//! - The 2D Boolean: [`boolean`] with [`BooleanOp`] (chapter 4, eq.
-//!   4.7-4.16); its output is always topologically valid.
+//! - One [`BooleanOp`] (union, intersection, difference, xor) and one
+//!   [`Operand`] for every engine.
+//! - 2D: the basic Boolean [`boolean`] (chapter 4, eq. 4.7-4.16; its output
+//!   is always topologically valid); through simplification (chapter 6):
+//!   [`simplify`] by a [`FillRule`], [`boolean_via_simplify`],
+//!   [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
+//! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
+//!   (triangle meshes), [`triangulate_mesh`], and [`boolean_solid`], which
+//!   runs either [`MeshVariant`] on any valid operands.
+//! - Reports: [`Boolean2Report`], [`SimplifyReport`], [`Boolean3Report`]
+//!   and their parts, `serde::Serialize`, built from an operation's output.
 //! - WKT: [`read_wkt_file`], [`read_wkt_str`], [`write_wkt_file`],
 //!   [`write_wkt_string`]; `geo-types` conversions [`to_geo`] and
 //!   [`from_geo`]. Rings are read by role by default (outer rings enclose
@@ -19,8 +30,9 @@
 //!   geometric-validity hints (exact count of crossing edge pairs).
 //! - [`UmbraError`]: every error names the file and the problem on one
 //!   line.
-//!
-//! The command-line tool `umbra` (`src/bin/umbra.rs`) is built on these.
+//! - Output encoded in memory before anything is written:
+//!   [`encode_polygon_set`] (which also counts the rings as written) and
+//!   [`encode_mesh`].
 //!
 //! # Example
 //!
@@ -51,24 +63,41 @@
 
 #[cfg(feature = "io")]
 mod check;
+#[cfg(feature = "io")]
+mod encode;
 mod error;
 #[cfg(feature = "io")]
 mod io;
 mod mesh_check;
 mod model;
+mod ops;
 mod predicates;
+mod report;
 
-pub use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput, Operand};
+pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
 pub use boolean_3d::{
     boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
 };
 #[cfg(feature = "io")]
 pub use check::{check_polygon_set, CheckReport};
+#[cfg(feature = "io")]
+pub use encode::{encode_mesh, encode_polygon_set, EncodedPolygons};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
 pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
 pub use model::*;
+pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
+pub use report::{
+    fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
+    SimplifyReport, SweepReport, Timings,
+};
 pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
-pub use simplify_2d::{FillRule, Simplified, SimplifyError};
-pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};
+pub use simplify_2d::{
+    boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
+    SimplifyError, SweepStats,
+};
+pub use topology::{
+    BooleanOp, Edge2, Facet, HalfEdge, Operand, PolygonMesh, PolygonSet2, TopologyError,
+    TriangleMesh,
+};

@@ -1,0 +1,247 @@
+//! `umbra boolean OP A B -o OUT`: the 2D Boolean (basic, or through
+//! simplification with `--via simplify`) or the 3D Boolean (polygon-mesh
+//! variant, or triangle-mesh variant with `--triangulate`), by the files'
+//! extensions.
+
+use super::{invalid_result, millis_since, orientation, warn_orphans};
+use crate::errors::{self, usage};
+use crate::files::OutputArgs;
+use crate::stdout::outln;
+use clap::ValueEnum;
+use std::path::PathBuf;
+use std::process::ExitCode;
+use std::time::Instant;
+use umbra::{
+    boolean, boolean_solid, boolean_via_simplify, encode_mesh, encode_polygon_set, read_mesh,
+    read_polygon_set, Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts,
+    MeshReadOptions, MeshVariant, Operands, ReadOptions, SetCounts, Via,
+};
+
+/// Union, intersection, difference (or, via simplify, xor) of two files
+/// of the same dimension (.wkt/.geojson or .obj/.off).
+#[derive(clap::Args, Debug)]
+pub struct BooleanArgs {
+    /// The operation.
+    #[arg(value_enum)]
+    op: OpArg,
+    /// The first operand, A.
+    a: PathBuf,
+    /// The second operand, B.
+    b: PathBuf,
+    #[command(flatten)]
+    out: OutputArgs,
+    /// 2D: read every ring as a directed loop exactly as written and
+    /// write every loop as its own polygon (keeps inside-out and
+    /// multiply enclosed shapes); by default rings are read by role.
+    #[arg(long)]
+    keep_orientation: bool,
+    /// 2D: the algorithm. `basic` is the basic Boolean of chapter 4
+    /// (tolerates invalid input); `simplify` assembles both boundaries
+    /// and simplifies (chapter 6: resolves self-intersections).
+    #[arg(long, value_enum, default_value = "basic")]
+    via: ViaArg,
+    /// 3D: run the triangle-mesh variant (section 4.8) instead of the
+    /// polygon-mesh one: operands with other facets are triangulated by
+    /// internal edges first, and the output is triangles.
+    #[arg(long)]
+    triangulate: bool,
+}
+
+/// The Boolean operations, as named on the command line.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum OpArg {
+    /// A ∪ B.
+    Union,
+    /// A ∩ B.
+    Intersection,
+    /// A − B.
+    Difference,
+    /// Symmetric difference (2D, with --via simplify only).
+    Xor,
+}
+
+impl OpArg {
+    fn op(self) -> BooleanOp {
+        match self {
+            OpArg::Union => BooleanOp::Union,
+            OpArg::Intersection => BooleanOp::Intersection,
+            OpArg::Difference => BooleanOp::Difference,
+            OpArg::Xor => BooleanOp::Xor,
+        }
+    }
+}
+
+/// The 2D algorithm.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, ValueEnum)]
+enum ViaArg {
+    /// The basic Boolean (chapter 4).
+    Basic,
+    /// Through simplification (chapter 6).
+    Simplify,
+}
+
+impl BooleanArgs {
+    /// Checks the arguments, runs the Boolean, writes the output (and the
+    /// report) and prints a summary.
+    pub fn run(self) -> anyhow::Result<ExitCode> {
+        let kinds = [
+            FileKind::from_path(&self.a)?,
+            FileKind::from_path(&self.b)?,
+            FileKind::from_path(&self.out.output)?,
+        ];
+        let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
+        if meshes != 0 && meshes != 3 {
+            return Err(usage(
+                "A, B and the output must all be 2D files (.wkt, .geojson) or all 3D files (.obj, .off)",
+            ));
+        }
+        self.out
+            .refuse_overlaps(&[("operand A", &self.a), ("operand B", &self.b)])?;
+        let op = self.op.op();
+        if meshes == 3 {
+            if self.via == ViaArg::Simplify {
+                return Err(usage("--via simplify is for 2D files only"));
+            }
+            if self.keep_orientation {
+                return Err(usage("--keep-orientation is for 2D files only"));
+            }
+            if op == BooleanOp::Xor {
+                return Err(usage(
+                    "xor is only available for 2D files with --via simplify",
+                ));
+            }
+            self.run_3d(op, kinds[2])
+        } else {
+            if self.triangulate {
+                return Err(usage("--triangulate is for 3D files (.obj, .off) only"));
+            }
+            let via = match self.via {
+                ViaArg::Basic if op == BooleanOp::Xor => {
+                    return Err(usage(
+                        "xor needs --via simplify (the basic Boolean has union, intersection, difference)",
+                    ))
+                }
+                ViaArg::Basic => Via::Basic,
+                ViaArg::Simplify => Via::Simplify,
+            };
+            self.run_2d(op, via, kinds[2])
+        }
+    }
+
+    fn run_2d(&self, op: BooleanOp, via: Via, out_kind: FileKind) -> anyhow::Result<ExitCode> {
+        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
+        let keep = self.keep_orientation;
+        let options = ReadOptions {
+            orientation: orientation(keep),
+            ..ReadOptions::default()
+        };
+        let a = read_polygon_set(a_path, options)?;
+        let b = read_polygon_set(b_path, options)?;
+        let inputs = Operands {
+            a: SetCounts::of_set(a_path.display().to_string(), &a),
+            b: SetCounts::of_set(b_path.display().to_string(), &b),
+        };
+        let out_file = out_path.display().to_string();
+        let files = [a_path.as_path(), b_path.as_path()];
+        let start = Instant::now();
+        let (encoded, report) = match via {
+            Via::Basic => {
+                let result = boolean(&a, &b, op);
+                let total = millis_since(start);
+                let out = result.map_err(|e| errors::boolean2(e, files))?;
+                let encoded =
+                    encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
+                let report = Boolean2Report::basic(
+                    op,
+                    keep,
+                    inputs,
+                    encoded.counts(&out_file),
+                    &out,
+                    total,
+                );
+                (encoded, report)
+            }
+            Via::Simplify => {
+                let result = boolean_via_simplify(&a, &b, op);
+                let total = millis_since(start);
+                let out = result.map_err(|e| errors::simplify(e, &files))?;
+                let encoded =
+                    encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
+                let report = Boolean2Report::via_simplify(
+                    op,
+                    keep,
+                    inputs,
+                    encoded.counts(&out_file),
+                    &out,
+                    total,
+                );
+                (encoded, report)
+            }
+        };
+        self.out.write(&encoded.bytes, &report)?;
+        warn_orphans(encoded.orphan_holes, out_path);
+        let detail = match (report.intersections, report.k_max) {
+            (Some(n), _) => format!("{n} intersecting edge pairs"),
+            (None, Some(k)) => format!("k_max {k}"),
+            (None, None) => String::new(),
+        };
+        outln!(
+            "{}{}: {} vertices, {} rings, {detail}, epsilon {:e}, {:.3} ms -> {}",
+            op.name(),
+            if via == Via::Simplify {
+                " (via simplify)"
+            } else {
+                ""
+            },
+            report.output.vertices,
+            report.output.rings,
+            report.epsilon,
+            report.timings_ms.total,
+            out_path.display()
+        )?;
+        if !report.topologically_valid {
+            return Err(invalid_result());
+        }
+        Ok(ExitCode::SUCCESS)
+    }
+
+    fn run_3d(&self, op: BooleanOp, out_kind: FileKind) -> anyhow::Result<ExitCode> {
+        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
+        let a = read_mesh(a_path, MeshReadOptions::default(), true)?;
+        let b = read_mesh(b_path, MeshReadOptions::default(), true)?;
+        let variant = if self.triangulate {
+            MeshVariant::TriangleMesh
+        } else {
+            MeshVariant::PolygonMesh
+        };
+        let out = boolean_solid(&a, &b, op, variant)
+            .map_err(|e| errors::boolean3(e, [a_path, b_path]))?;
+        let out_file = out_path.display().to_string();
+        let bytes = encode_mesh(out_kind, &out.mesh, &out_file)?;
+        let report = Boolean3Report::new(
+            op,
+            Operands {
+                a: MeshCounts::of_mesh(a_path.display().to_string(), &a),
+                b: MeshCounts::of_mesh(b_path.display().to_string(), &b),
+            },
+            out_file,
+            &out,
+        );
+        self.out.write(&bytes, &report)?;
+        outln!(
+            "{} ({}): {} vertices, {} facets, {} edge-facet intersections, volume {}, {:.3} ms -> {}",
+            op.name(),
+            report.variant,
+            report.output.vertices,
+            report.output.facets,
+            report.intersections,
+            report.output.signed_volume,
+            report.timings_ms.total,
+            out_path.display()
+        )?;
+        if !report.topologically_valid {
+            return Err(invalid_result());
+        }
+        Ok(ExitCode::SUCCESS)
+    }
+}

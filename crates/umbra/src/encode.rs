@@ -1,0 +1,99 @@
+//! Results serialized to memory before anything is written (feature
+//! `io`): a front end encodes every output first, so that a failure leaves
+//! every destination untouched, and counts the 2D result as it will be
+//! written (writing by role merges rings that touch at a vertex and drops
+//! back-and-forth spikes, so the written rings may differ from
+//! [`PolygonSet2::loops`]).
+
+use crate::report::SetCounts;
+use crate::{
+    layout_polygons, mesh_to_obj, mesh_to_off, polygons_to_geojson, polygons_to_wkt, FileKind,
+    RingOrientation, UmbraError,
+};
+use topology::{PolygonMesh, PolygonSet2};
+
+/// A 2D result encoded for one file format.
+#[derive(Clone, Debug, PartialEq)]
+pub struct EncodedPolygons {
+    /// The file's contents.
+    pub bytes: Vec<u8>,
+    /// Rings written.
+    pub rings: usize,
+    /// Points written over all rings (no closing duplicates).
+    pub points: usize,
+    /// Holes that no outer ring contains (see
+    /// [`crate::PolygonLayout::orphan_holes`]).
+    pub orphan_holes: usize,
+    /// The signed area of the set.
+    pub signed_area: f64,
+}
+
+impl EncodedPolygons {
+    /// The counts of what is written, under the name `file`.
+    pub fn counts(&self, file: impl Into<String>) -> SetCounts {
+        SetCounts {
+            file: file.into(),
+            vertices: self.points,
+            edges: self.points,
+            rings: self.rings,
+            signed_area: self.signed_area,
+        }
+    }
+}
+
+fn wrong_dimension(file: &str, want: &str) -> UmbraError {
+    UmbraError::UnsupportedFileType {
+        file: file.to_string(),
+        detail: format!("expected a {want} file here"),
+    }
+}
+
+/// Encodes `set` as `kind` (WKT or GeoJSON) with the ring layout of
+/// `orientation`, exactly as [`crate::write_polygon_set`] writes it;
+/// errors name `file`.
+///
+/// ```
+/// use umbra::{encode_polygon_set, FileKind, PolygonSet2, RingOrientation};
+/// let mut s = PolygonSet2::new();
+/// // Two squares sharing an edge: two loops, one ring once written.
+/// s.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// s.add_loop(&[[1.0, 0.0], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]);
+/// let e = encode_polygon_set(FileKind::Wkt, &s, RingOrientation::ByRole, "out.wkt").unwrap();
+/// assert_eq!((e.rings, e.points), (1, 6));
+/// assert_eq!(e.bytes, b"POLYGON ((0 0, 1 0, 2 0, 2 1, 1 1, 0 1, 0 0))\n");
+/// ```
+pub fn encode_polygon_set(
+    kind: FileKind,
+    set: &PolygonSet2,
+    orientation: RingOrientation,
+    file: &str,
+) -> Result<EncodedPolygons, UmbraError> {
+    if kind.is_mesh() {
+        return Err(wrong_dimension(file, "2D (.wkt, .geojson)"));
+    }
+    let layout = layout_polygons(set, orientation, file)?;
+    let text = match kind {
+        FileKind::Wkt => polygons_to_wkt(&layout.polygons),
+        FileKind::GeoJson => polygons_to_geojson(&layout.polygons),
+        FileKind::Obj | FileKind::Off => return Err(wrong_dimension(file, "2D (.wkt, .geojson)")),
+    };
+    let rings = layout.polygons.iter().map(Vec::len).sum();
+    let points = layout.polygons.iter().flatten().map(Vec::len).sum();
+    Ok(EncodedPolygons {
+        bytes: text.into_bytes(),
+        rings,
+        points,
+        orphan_holes: layout.orphan_holes,
+        signed_area: set.signed_area(),
+    })
+}
+
+/// Encodes `mesh` as `kind` (OBJ or OFF) exactly as [`crate::write_mesh`]
+/// writes it; errors name `file`.
+pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec<u8>, UmbraError> {
+    match kind {
+        FileKind::Obj => Ok(mesh_to_obj(mesh).into_bytes()),
+        FileKind::Off => Ok(mesh_to_off(mesh).into_bytes()),
+        FileKind::Wkt | FileKind::GeoJson => Err(wrong_dimension(file, "3D (.obj, .off)")),
+    }
+}

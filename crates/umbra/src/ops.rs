@@ -1,0 +1,150 @@
+//! What the facade adds over the lower crates' entry points: the 2D
+//! Boolean's algorithm as a value ([`Via`]) and the 3D Boolean by variant
+//! ([`MeshVariant`], [`boolean_solid`]), which triangulates operands that
+//! are not triangle meshes when the triangle-mesh variant is asked for.
+
+use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error};
+use std::time::Instant;
+use topology::{BooleanOp, PolygonMesh, TriangleMesh};
+
+/// The algorithm of a 2D Boolean.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum Via {
+    /// The basic Boolean of chapter 4 ([`crate::boolean`]): tolerant of
+    /// self-intersecting and inside-out operands (section 4.7).
+    #[default]
+    Basic,
+    /// The Boolean through simplification of chapter 6
+    /// ([`crate::boolean_via_simplify`]): both boundaries assembled and
+    /// simplified, which resolves self-intersecting operands.
+    Simplify,
+}
+
+impl Via {
+    /// The algorithm as a report names it.
+    pub fn algorithm(self) -> &'static str {
+        match self {
+            Via::Basic => "basic Boolean (chapter 4)",
+            Via::Simplify => "Boolean through simplification (chapter 6)",
+        }
+    }
+}
+
+/// The variant of the 3D Boolean (section 4.8).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
+pub enum MeshVariant {
+    /// [`crate::boolean_mesh`]: polygon facets in and out (facets may
+    /// gain holes or several regions).
+    #[default]
+    PolygonMesh,
+    /// [`crate::boolean_triangles`]: triangles in, every retained facet
+    /// triangulated by internal edges only.
+    TriangleMesh,
+}
+
+impl MeshVariant {
+    /// The variant as a report names it (`"polygon mesh"`, `"triangle
+    /// mesh"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            MeshVariant::PolygonMesh => "polygon mesh",
+            MeshVariant::TriangleMesh => "triangle mesh",
+        }
+    }
+}
+
+/// The result of [`boolean_solid`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct SolidOutput {
+    /// The resulting shape, always topologically valid (triangles as
+    /// facets for [`MeshVariant::TriangleMesh`]).
+    pub mesh: PolygonMesh,
+    /// The number of edge-facet intersection vertices.
+    pub intersections: usize,
+    /// The variant that ran.
+    pub variant: MeshVariant,
+    /// For A and B: whether the operand was triangulated first (only for
+    /// the triangle-mesh variant, when it had facets other than single
+    /// triangles).
+    pub inputs_triangulated: [bool; 2],
+    /// Milliseconds spent triangulating the operands (triangle-mesh
+    /// variant only).
+    pub triangulate_ms: Option<f64>,
+    /// Milliseconds of the whole call.
+    pub total_ms: f64,
+}
+
+/// The operand as a triangle mesh when every facet is one loop of three
+/// half-edges, `None` otherwise.
+///
+/// ```
+/// use umbra::{as_triangle_mesh, Facet, PolygonMesh};
+/// let quad = PolygonMesh {
+///     vertices: vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [0.0, 1.0, 0.0]],
+///     facets: vec![Facet::from_loop(&[0, 1, 2, 3])],
+/// };
+/// assert!(as_triangle_mesh(&quad).is_none());
+/// ```
+pub fn as_triangle_mesh(mesh: &PolygonMesh) -> Option<TriangleMesh> {
+    let mut tris = Vec::with_capacity(mesh.facets.len());
+    for f in &mesh.facets {
+        let h = &f.half_edges;
+        if h.len() != 3
+            || h[0].end != h[1].start
+            || h[1].end != h[2].start
+            || h[2].end != h[0].start
+        {
+            return None;
+        }
+        tris.push([h[0].start, h[1].start, h[2].start]);
+    }
+    Some(TriangleMesh::new(mesh.vertices.clone(), tris))
+}
+
+fn ms(since: Instant) -> f64 {
+    since.elapsed().as_secs_f64() * 1e3
+}
+
+/// The 3D Boolean `op` of `a` and `b` by `variant`. The triangle-mesh
+/// variant first triangulates (by internal edges, which keeps a closed
+/// operand closed) any operand that is not already a triangle mesh, so
+/// both variants run on any valid input. Errors are those of the 3D
+/// Boolean, naming the operand.
+pub fn boolean_solid(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    variant: MeshVariant,
+) -> Result<SolidOutput, Boolean3Error> {
+    let start = Instant::now();
+    match variant {
+        MeshVariant::PolygonMesh => {
+            let out = boolean_mesh(a, b, op)?;
+            Ok(SolidOutput {
+                mesh: out.mesh,
+                intersections: out.intersections,
+                variant,
+                inputs_triangulated: [false, false],
+                triangulate_ms: None,
+                total_ms: ms(start),
+            })
+        }
+        MeshVariant::TriangleMesh => {
+            let ta = as_triangle_mesh(a);
+            let tb = as_triangle_mesh(b);
+            let inputs_triangulated = [ta.is_none(), tb.is_none()];
+            let ta = ta.unwrap_or_else(|| triangulate_mesh(a));
+            let tb = tb.unwrap_or_else(|| triangulate_mesh(b));
+            let triangulate_ms = Some(ms(start));
+            let out = boolean_triangles(&ta, &tb, op)?;
+            Ok(SolidOutput {
+                mesh: out.mesh.to_polygon_mesh(),
+                intersections: out.intersections,
+                variant,
+                inputs_triangulated,
+                triangulate_ms,
+                total_ms: ms(start),
+            })
+        }
+    }
+}

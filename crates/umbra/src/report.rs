@@ -1,0 +1,395 @@
+//! Typed reports of the operations, for JSON output (`serde::Serialize`):
+//! what `umbra --report` writes and what any other front end can reuse.
+//! Each report is built from an operation's output by a constructor here,
+//! so every front end reports the same fields with the same meaning.
+//!
+//! Counts describe shapes as files hold them ([`SetCounts`],
+//! [`MeshCounts`]); `timings_ms.total` ([`Timings`]) covers the operation
+//! alone, never file input or output.
+
+use crate::ops::{SolidOutput, Via};
+use boolean_2d::{BooleanOutput, Timings as BooleanTimings};
+use serde::Serialize;
+use simplify_2d::{FillRule, Simplified, SweepStats};
+use topology::{BooleanOp, PolygonMesh, PolygonSet2, TopologyError};
+
+/// One value per operand.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct Operands<T> {
+    /// Operand A.
+    pub a: T,
+    /// Operand B.
+    pub b: T,
+}
+
+/// The counts of a 2D polygon set and the file it was read from or
+/// written to.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SetCounts {
+    /// The file (as given on the command line), or a caller's label.
+    pub file: String,
+    /// Points of every ring (a ring of `n` points counted `n` times; no
+    /// closing duplicates).
+    pub vertices: usize,
+    /// Edges of every ring (equal to `vertices` for rings as files hold
+    /// them; the edge entries of a set built in memory otherwise).
+    pub edges: usize,
+    /// Rings (closed loops).
+    pub rings: usize,
+    /// The multiplicity-weighted signed area (f64 shoelace).
+    pub signed_area: f64,
+}
+
+impl SetCounts {
+    /// The counts of a set: its vertices, edge entries and closed loops
+    /// ([`PolygonSet2::loops`]). For a set read from a file these are the
+    /// file's points and rings; for an operation's output, count what is
+    /// written instead (`EncodedPolygons::counts` with the feature `io`),
+    /// since writing by role merges touching rings and drops spikes.
+    pub fn of_set(file: impl Into<String>, set: &PolygonSet2) -> Self {
+        SetCounts {
+            file: file.into(),
+            vertices: set.vertex_count(),
+            edges: set.edge_count(),
+            rings: set.loops().len(),
+            signed_area: set.signed_area(),
+        }
+    }
+}
+
+/// The counts of a 3D polygon mesh and its file.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct MeshCounts {
+    /// The file (as given on the command line), or a caller's label.
+    pub file: String,
+    /// Vertices.
+    pub vertices: usize,
+    /// Facets.
+    pub facets: usize,
+    /// Half-edges over all facet loops.
+    pub half_edges: usize,
+    /// The enclosed volume (positive for outward-facing facets).
+    pub signed_volume: f64,
+}
+
+impl MeshCounts {
+    /// The counts of `mesh`.
+    pub fn of_mesh(file: impl Into<String>, mesh: &PolygonMesh) -> Self {
+        MeshCounts {
+            file: file.into(),
+            vertices: mesh.vertices.len(),
+            facets: mesh.facets.len(),
+            half_edges: mesh.half_edge_count(),
+            signed_volume: crate::mesh_signed_volume(mesh),
+        }
+    }
+}
+
+/// Wall-clock milliseconds: `total` is the operation alone; the phases
+/// present depend on the operation (each is part of `total`).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize)]
+pub struct Timings {
+    /// The whole operation (no file input or output).
+    pub total: f64,
+    /// 2D basic Boolean: validation of both operands.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub validate: Option<f64>,
+    /// 2D basic Boolean: the broad phase.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub broad_phase: Option<f64>,
+    /// 2D basic Boolean: `X11` on the candidate pairs.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub intersections: Option<f64>,
+    /// 2D basic Boolean: `X02` and `X20`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub winding_numbers: Option<f64>,
+    /// 2D basic Boolean: levels 3-4 and the shape.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub construct: Option<f64>,
+    /// 3D triangle-mesh variant: triangulating the operands.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub triangulate_inputs: Option<f64>,
+}
+
+impl Timings {
+    /// Only a total.
+    pub fn total(total: f64) -> Self {
+        Timings {
+            total,
+            ..Timings::default()
+        }
+    }
+
+    /// A total and the phases of the 2D basic Boolean.
+    pub fn with_phases(total: f64, t: &BooleanTimings) -> Self {
+        Timings {
+            total,
+            validate: Some(t.validate),
+            broad_phase: Some(t.broad_phase),
+            intersections: Some(t.intersections),
+            winding_numbers: Some(t.winding),
+            construct: Some(t.construct),
+            triangulate_inputs: None,
+        }
+    }
+}
+
+/// The counters of a simplification sweep.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize)]
+pub struct SweepReport {
+    /// Edges handed to the sweep.
+    pub input_edges: usize,
+    /// Input edges after merging duplicates.
+    pub merged_input_edges: usize,
+    /// Events processed.
+    pub events: u64,
+    /// Intersection points found.
+    pub intersections: u64,
+    /// Splits of an edge at a vertex lying on it.
+    pub vertex_on_edge_splits: u64,
+    /// Splits whose edges were regrouped.
+    pub misgrouped_splits: u64,
+    /// Full scans of the sweep line.
+    pub full_scans: u64,
+    /// The longest sweep line.
+    pub max_sweep_len: usize,
+}
+
+impl From<&SweepStats> for SweepReport {
+    fn from(s: &SweepStats) -> Self {
+        SweepReport {
+            input_edges: s.input_edges,
+            merged_input_edges: s.merged_input_edges,
+            events: s.events,
+            intersections: s.intersections,
+            vertex_on_edge_splits: s.vertex_on_edge_splits,
+            misgrouped_splits: s.misgrouped_splits,
+            full_scans: s.full_scans,
+            max_sweep_len: s.max_sweep_len,
+        }
+    }
+}
+
+/// `(valid, error)` of a topology check.
+fn validity(check: Result<(), TopologyError>) -> (bool, Option<String>) {
+    (check.is_ok(), check.err().map(|e| e.to_string()))
+}
+
+/// The report of a 2D Boolean.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Boolean2Report {
+    /// `union`, `intersection`, `difference` or `xor`.
+    pub operation: &'static str,
+    /// The algorithm that ran ([`Via::algorithm`]).
+    pub algorithm: &'static str,
+    /// Rings were read and written as directed loops, not by role.
+    pub keep_orientation: bool,
+    /// The operands.
+    pub inputs: Operands<SetCounts>,
+    /// The result as written.
+    pub output: SetCounts,
+    /// Basic Boolean: edge pairs with `X11 != 0`.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub intersections: Option<usize>,
+    /// The result satisfies shape boundary closure (always, unless a bug).
+    pub topologically_valid: bool,
+    /// The violated constraint, if any.
+    pub topology_error: Option<String>,
+    /// The error bound of section 8.4.
+    pub epsilon: f64,
+    /// Through simplification: the largest adjustment count (section 8.4).
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub k_max: Option<u32>,
+    /// Through simplification: the sweep's counters.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub sweep: Option<SweepReport>,
+    /// Milliseconds.
+    pub timings_ms: Timings,
+}
+
+impl Boolean2Report {
+    /// The report of a basic Boolean ([`crate::boolean`]) that took
+    /// `total_ms`; `output` counts the result as written.
+    pub fn basic(
+        op: BooleanOp,
+        keep_orientation: bool,
+        inputs: Operands<SetCounts>,
+        output: SetCounts,
+        out: &BooleanOutput,
+        total_ms: f64,
+    ) -> Self {
+        let (topologically_valid, topology_error) = validity(out.shape.check_topology());
+        Boolean2Report {
+            operation: op.name(),
+            algorithm: Via::Basic.algorithm(),
+            keep_orientation,
+            inputs,
+            output,
+            intersections: Some(out.intersections),
+            topologically_valid,
+            topology_error,
+            epsilon: out.epsilon,
+            k_max: None,
+            sweep: None,
+            timings_ms: Timings::with_phases(total_ms, &out.timings),
+        }
+    }
+
+    /// The report of a Boolean through simplification
+    /// ([`crate::boolean_via_simplify`]) that took `total_ms`.
+    pub fn via_simplify(
+        op: BooleanOp,
+        keep_orientation: bool,
+        inputs: Operands<SetCounts>,
+        output: SetCounts,
+        out: &Simplified,
+        total_ms: f64,
+    ) -> Self {
+        let (topologically_valid, topology_error) = validity(out.shape.check_topology());
+        Boolean2Report {
+            operation: op.name(),
+            algorithm: Via::Simplify.algorithm(),
+            keep_orientation,
+            inputs,
+            output,
+            intersections: None,
+            topologically_valid,
+            topology_error,
+            epsilon: out.epsilon,
+            k_max: Some(out.k_max),
+            sweep: Some(SweepReport::from(&out.stats)),
+            timings_ms: Timings::total(total_ms),
+        }
+    }
+}
+
+/// The name of a fill rule (`positive`, `nonzero`, `evenodd`,
+/// `negative`, `at-least-2`, or `custom` for a caller's predicate).
+pub fn fill_rule_name(rule: FillRule) -> &'static str {
+    match rule {
+        FillRule::Positive => "positive",
+        FillRule::NonZero => "nonzero",
+        FillRule::EvenOdd => "evenodd",
+        FillRule::Negative => "negative",
+        FillRule::AtLeast2 => "at-least-2",
+        FillRule::Custom(_) => "custom",
+    }
+}
+
+/// The report of a simplification.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SimplifyReport {
+    /// Always `simplify`.
+    pub operation: &'static str,
+    /// The fill rule ([`fill_rule_name`]).
+    pub rule: &'static str,
+    /// Rings were read and written as directed loops, not by role.
+    pub keep_orientation: bool,
+    /// The input.
+    pub input: SetCounts,
+    /// The result as written.
+    pub output: SetCounts,
+    /// The result satisfies shape boundary closure (always, unless a bug).
+    pub topologically_valid: bool,
+    /// The violated constraint, if any.
+    pub topology_error: Option<String>,
+    /// `(k_max + 1) sqrt(153) u L` (section 8.4).
+    pub epsilon: f64,
+    /// The largest adjustment count.
+    pub k_max: u32,
+    /// The sweep's counters.
+    pub sweep: SweepReport,
+    /// Milliseconds.
+    pub timings_ms: Timings,
+}
+
+impl SimplifyReport {
+    /// The report of [`crate::simplify`] by `rule` that took `total_ms`.
+    pub fn new(
+        rule: FillRule,
+        keep_orientation: bool,
+        input: SetCounts,
+        output: SetCounts,
+        out: &Simplified,
+        total_ms: f64,
+    ) -> Self {
+        let (topologically_valid, topology_error) = validity(out.shape.check_topology());
+        SimplifyReport {
+            operation: "simplify",
+            rule: fill_rule_name(rule),
+            keep_orientation,
+            input,
+            output,
+            topologically_valid,
+            topology_error,
+            epsilon: out.epsilon,
+            k_max: out.k_max,
+            sweep: SweepReport::from(&out.stats),
+            timings_ms: Timings::total(total_ms),
+        }
+    }
+}
+
+/// The report of a 3D Boolean.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct Boolean3Report {
+    /// `union`, `intersection` or `difference`.
+    pub operation: &'static str,
+    /// The variant that ran ([`crate::MeshVariant::name`]).
+    pub variant: &'static str,
+    /// Which operands were triangulated first.
+    pub inputs_triangulated: Operands<bool>,
+    /// The operands.
+    pub inputs: Operands<MeshCounts>,
+    /// The result.
+    pub output: MeshCounts,
+    /// Edge-facet intersection vertices.
+    pub intersections: usize,
+    /// The result satisfies the closure constraints (always, unless a bug).
+    pub topologically_valid: bool,
+    /// The violated constraint, if any.
+    pub topology_error: Option<String>,
+    /// Milliseconds.
+    pub timings_ms: Timings,
+}
+
+impl Boolean3Report {
+    /// The report of [`crate::boolean_solid`]; the result is counted as
+    /// `output_file`.
+    pub fn new(
+        op: BooleanOp,
+        inputs: Operands<MeshCounts>,
+        output_file: impl Into<String>,
+        out: &SolidOutput,
+    ) -> Self {
+        let (topologically_valid, topology_error) = validity(out.mesh.check_topology());
+        Boolean3Report {
+            operation: op.name(),
+            variant: out.variant.name(),
+            inputs_triangulated: Operands {
+                a: out.inputs_triangulated[0],
+                b: out.inputs_triangulated[1],
+            },
+            inputs,
+            output: MeshCounts::of_mesh(output_file, &out.mesh),
+            intersections: out.intersections,
+            topologically_valid,
+            topology_error,
+            timings_ms: Timings {
+                triangulate_inputs: out.triangulate_ms,
+                ..Timings::total(out.total_ms)
+            },
+        }
+    }
+}
+
+/// A check report with the file it is about (`umbra check --json`): the
+/// report's fields and `file` at the same level.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct FileReport<R> {
+    /// The file.
+    pub file: String,
+    /// The report ([`crate::CheckReport`] or [`crate::MeshCheckReport`]).
+    #[serde(flatten)]
+    pub report: R,
+}
