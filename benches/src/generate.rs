@@ -1,10 +1,8 @@
 //! Deterministic input generators: regular n-gons (Table 7.4 of the
 //! dissertation) and seeded random star-shaped polygons.
 
-/// A closed ring of points, the last joining back to the first (no
-/// repeated closing point). Counter-clockwise rings bound their interior on
-/// the left, as [`topology::PolygonSet2`] expects (section 4.2).
-pub type Ring = Vec<[f64; 2]>;
+use test_support::rng::SplitMix64;
+pub use test_support::shapes::{regular_ngon, Ring};
 
 /// One row of Table 7.4: `n` vertices, rotation `alpha` in degrees.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -73,46 +71,10 @@ pub const TABLE_7_4: [Case; 10] = [
     },
 ];
 
-/// The regular `n`-gon of radius `radius` centred at the origin, counter
-/// clockwise, vertex `k` at angle `2 pi k / n + rotation_deg` (degrees
-/// converted with [`f64::to_radians`]). Fewer than three vertices give an
-/// empty ring.
-pub fn regular_ngon(n: usize, radius: f64, rotation_deg: f64) -> Ring {
-    if n < 3 {
-        return Vec::new();
-    }
-    let rotation = rotation_deg.to_radians();
-    (0..n)
-        .map(|k| {
-            let theta = std::f64::consts::TAU * (k as f64) / (n as f64) + rotation;
-            [radius * theta.cos(), radius * theta.sin()]
-        })
-        .collect()
-}
-
 /// The two operands of a Table 7.4 row: the unit regular `n`-gon and the
 /// same polygon rotated by `alpha_deg` degrees about the origin.
 pub fn rotated_ngon_pair(n: usize, alpha_deg: f64) -> (Ring, Ring) {
     (regular_ngon(n, 1.0, 0.0), regular_ngon(n, 1.0, alpha_deg))
-}
-
-/// SplitMix64: a tiny seeded generator so that inputs are identical on
-/// every machine and run.
-struct SplitMix64(u64);
-
-impl SplitMix64 {
-    fn next_u64(&mut self) -> u64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        z ^ (z >> 31)
-    }
-
-    /// A uniform value in `[0, 1)` from the top 53 bits.
-    fn next_f64(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
 }
 
 /// A seeded random simple polygon with `n` vertices, counter clockwise and
@@ -123,11 +85,11 @@ pub fn random_star_polygon(seed: u64, n: usize, center: [f64; 2], radius: f64) -
     if n < 3 {
         return Vec::new();
     }
-    let mut rng = SplitMix64(seed);
+    let mut rng = SplitMix64::new(seed);
     (0..n)
         .map(|k| {
             let theta = std::f64::consts::TAU * (k as f64) / (n as f64);
-            let r = radius * (0.5 + 0.5 * rng.next_f64());
+            let r = radius * (0.5 + 0.5 * rng.unit());
             [center[0] + r * theta.cos(), center[1] + r * theta.sin()]
         })
         .collect()

@@ -11,72 +11,9 @@
 use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
 use manifold_rust::manifold::Manifold;
 use manifold_rust::types::MeshGL64;
+pub use test_support::measure::polygon_mesh_volume as polygon_volume;
+pub use test_support::shapes::{uv_sphere, uv_sphere_quads};
 use topology::{Facet, PolygonMesh, TriangleMesh};
-
-/// A UV sphere of `slices` segments and `stacks` bands centred at `c`:
-/// `2 slices (stacks - 1)` triangles, outward facing.
-pub fn uv_sphere(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> TriangleMesh {
-    let mut v = vec![[c[0], c[1], c[2] + r]];
-    for i in 1..stacks {
-        let th = std::f64::consts::PI * f64::from(i) / f64::from(stacks);
-        for j in 0..slices {
-            let ph = std::f64::consts::TAU * f64::from(j) / f64::from(slices);
-            v.push([
-                c[0] + r * th.sin() * ph.cos(),
-                c[1] + r * th.sin() * ph.sin(),
-                c[2] + r * th.cos(),
-            ]);
-        }
-    }
-    v.push([c[0], c[1], c[2] - r]);
-    let south = v.len() as u32 - 1;
-    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
-    let mut t = Vec::with_capacity(2 * (slices * (stacks - 1)) as usize);
-    for j in 0..slices {
-        t.push([0, ring(1, j), ring(1, j + 1)]);
-        t.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
-    }
-    for i in 1..stacks - 1 {
-        for j in 0..slices {
-            let (a, b, c2, d) = (
-                ring(i, j),
-                ring(i, j + 1),
-                ring(i + 1, j),
-                ring(i + 1, j + 1),
-            );
-            t.push([a, c2, d]);
-            t.push([a, d, b]);
-        }
-    }
-    TriangleMesh::new(v, t)
-}
-
-/// The same sphere as quadrilaterals (triangles at the poles).
-pub fn uv_sphere_quads(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> PolygonMesh {
-    let t = uv_sphere(c, r, slices, stacks);
-    let south = t.vertices.len() as u32 - 1;
-    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
-    let mut f = Vec::new();
-    for j in 0..slices {
-        f.push(Facet::from_loop(&[0, ring(1, j), ring(1, j + 1)]));
-        f.push(Facet::from_loop(&[
-            south,
-            ring(stacks - 1, j + 1),
-            ring(stacks - 1, j),
-        ]));
-    }
-    for i in 1..stacks - 1 {
-        for j in 0..slices {
-            f.push(Facet::from_loop(&[
-                ring(i, j),
-                ring(i + 1, j),
-                ring(i + 1, j + 1),
-                ring(i, j + 1),
-            ]));
-        }
-    }
-    PolygonMesh::new(t.vertices, f)
-}
 
 /// The quadrilateral form of a sphere made by [`uv_sphere`]: each band's
 /// triangle pair `(a, c, d)`, `(a, d, b)` merged back into the
@@ -145,24 +82,6 @@ pub fn analytic_difference_volume() -> f64 {
 /// Signed volume of a triangle mesh (divergence theorem).
 pub fn triangle_volume(m: &TriangleMesh) -> f64 {
     m.signed_volume()
-}
-
-/// Signed volume of a polygon mesh (fan of each facet loop from its first
-/// vertex).
-pub fn polygon_volume(m: &PolygonMesh) -> f64 {
-    let mut six = 0.0;
-    for f in &m.facets {
-        let Some(first) = f.half_edges.first() else {
-            continue;
-        };
-        let c = m.vertices[first.start as usize];
-        for h in &f.half_edges {
-            let (a, b) = (m.vertices[h.start as usize], m.vertices[h.end as usize]);
-            six += c[0] * (a[1] * b[2] - a[2] * b[1]) - c[1] * (a[0] * b[2] - a[2] * b[0])
-                + c[2] * (a[0] * b[1] - a[1] * b[0]);
-        }
-    }
-    six / 6.0
 }
 
 /// What one run produced: triangle (or facet) count, volume, and whether

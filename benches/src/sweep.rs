@@ -21,6 +21,8 @@ use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::simplify::SimplifyShape;
 use i_overlay::float::single::SingleFloatOverlay;
 use simplify_2d::{simplify, FillRule as UmbraRule, SimplifyError};
+use test_support::rng::SplitMix64;
+use test_support::shapes::square;
 use topology::PolygonSet2;
 
 /// The fill rules the table exercises, each with its counterpart in Umbra
@@ -83,36 +85,19 @@ pub struct SweepCase {
     pub expected: Option<(usize, Option<usize>)>,
 }
 
-/// Splitmix64, for seeded inputs.
-struct Rng(u64);
-
-impl Rng {
-    fn next(&mut self) -> f64 {
-        self.0 = self.0.wrapping_add(0x9E37_79B9_7F4A_7C15);
-        let mut z = self.0;
-        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
-        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
-        ((z ^ (z >> 31)) >> 11) as f64 * (1.0 / (1u64 << 53) as f64)
-    }
-}
-
 /// Section 7.7: `n` random points in the unit disc joined cyclically,
 /// drawn from the splitmix64 stream of `seed` (the same seed gives the
 /// same polygon on every machine).
 pub fn random_topological_polygon(seed: u64, n: usize) -> Ring {
-    let mut rng = Rng(seed);
+    let mut rng = SplitMix64::new(seed);
     let mut out = Vec::with_capacity(n);
     while out.len() < n {
-        let (x, y) = (2.0 * rng.next() - 1.0, 2.0 * rng.next() - 1.0);
+        let (x, y) = (2.0 * rng.unit() - 1.0, 2.0 * rng.unit() - 1.0);
         if x * x + y * y <= 1.0 {
             out.push([x, y]);
         }
     }
     out
-}
-
-fn square(x: f64, y: f64, s: f64) -> Ring {
-    vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]]
 }
 
 /// Two `k x k` checkerboards of unit squares, the second offset by half a

@@ -28,7 +28,10 @@ fuzz_target!(|input: BooleanInput| {
                 data.composite_counts.iter().all(|(s, e)| s == e),
                 "Theorem 2 violated"
             );
-            assert_eq!(reference.shape, out.shape, "fast path differs from reference");
+            assert_eq!(
+                reference.shape, out.shape,
+                "fast path differs from reference"
+            );
         }
         Err(boolean_2d::BooleanError::InvalidInput { .. }) => {
             assert!(!coords_ok, "valid input rejected");

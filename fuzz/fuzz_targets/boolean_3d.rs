@@ -20,7 +20,9 @@ fuzz_target!(|input: SolidInput| {
     match boolean_mesh_audit(&a, &b, op) {
         Ok((out, audit)) => {
             assert!(coords_ok, "bad coordinates were accepted");
-            out.mesh.check_topology().expect("Theorem 4: result not closed");
+            out.mesh
+                .check_topology()
+                .expect("Theorem 4: result not closed");
             audit.verify().expect("audit of Theorems 1-4");
         }
         Err(Boolean3Error::InvalidInput { .. }) => assert!(!coords_ok, "valid input rejected"),
@@ -30,7 +32,9 @@ fuzz_target!(|input: SolidInput| {
     if let (Some(ta), Some(tb)) = (input.a.to_triangles(), input.b.to_triangles()) {
         match boolean_triangles_audit(&ta, &tb, op) {
             Ok((out, audit)) => {
-                out.mesh.check_topology().expect("triangle result not closed");
+                out.mesh
+                    .check_topology()
+                    .expect("triangle result not closed");
                 audit.verify().expect("audit of Theorems 1-4 (triangles)");
             }
             Err(Boolean3Error::InvalidInput { .. }) => assert!(!coords_ok),

@@ -12,13 +12,17 @@ use umbra::{
 fuzz_target!(|data: &[u8]| {
     let text = String::from_utf8_lossy(data);
     for options in [ReadOptions::default(), ReadOptions::keep_orientation()] {
-        for set in [read_wkt_str(&text, options), read_geojson_str(&text, options)]
-            .into_iter()
-            .flatten()
+        for set in [
+            read_wkt_str(&text, options),
+            read_geojson_str(&text, options),
+        ]
+        .into_iter()
+        .flatten()
         {
             let _ = check_polygon_set(&set);
             if let Ok(out) = write_wkt_string(&set, RingOrientation::AsWritten) {
-                read_wkt_str(&out, ReadOptions::keep_orientation()).expect("written WKT reads back");
+                read_wkt_str(&out, ReadOptions::keep_orientation())
+                    .expect("written WKT reads back");
             }
         }
     }

@@ -31,7 +31,9 @@ fuzz_target!(|input: SimplifyInput| {
         _ => FillRule::AtLeast2,
     };
     let out = simplify(&set, rule).expect("simplify after a valid cell structure");
-    out.shape.check_topology().expect("simplified shape not closed");
+    out.shape
+        .check_topology()
+        .expect("simplified shape not closed");
     let other = input.other.to_set();
     if other.validate_coordinates().is_ok() {
         let op = match input.rule % 4 {
@@ -41,6 +43,8 @@ fuzz_target!(|input: SimplifyInput| {
             _ => BooleanOp::Xor,
         };
         let out = boolean(&set, &other, op).expect("Boolean through simplification");
-        out.shape.check_topology().expect("Boolean result not closed");
+        out.shape
+            .check_topology()
+            .expect("Boolean result not closed");
     }
 });

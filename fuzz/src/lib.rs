@@ -4,6 +4,7 @@
 
 use arbitrary::Arbitrary;
 use std::fmt;
+use test_support::shapes::{CUBE_FACES, OCTA_FACES, TETRA_FACES};
 use topology::{Facet, PolygonMesh, PolygonSet2, TriangleMesh};
 
 /// A coordinate: mostly small integers (exact ties everywhere), sometimes
@@ -117,31 +118,9 @@ pub enum Template {
 impl Template {
     fn loops(self) -> (usize, Vec<Vec<u32>>) {
         match self {
-            Template::Tetrahedron => (4, vec![vec![0, 2, 1], vec![0, 1, 3], vec![1, 2, 3], vec![0, 3, 2]]),
-            Template::Cube => (
-                8,
-                vec![
-                    vec![0, 2, 3, 1],
-                    vec![4, 5, 7, 6],
-                    vec![0, 1, 5, 4],
-                    vec![2, 6, 7, 3],
-                    vec![0, 4, 6, 2],
-                    vec![1, 3, 7, 5],
-                ],
-            ),
-            Template::Octahedron => (
-                6,
-                vec![
-                    vec![0, 2, 4],
-                    vec![2, 1, 4],
-                    vec![1, 3, 4],
-                    vec![3, 0, 4],
-                    vec![2, 0, 5],
-                    vec![1, 2, 5],
-                    vec![3, 1, 5],
-                    vec![0, 3, 5],
-                ],
-            ),
+            Template::Tetrahedron => (4, TETRA_FACES.iter().map(|t| t.to_vec()).collect()),
+            Template::Cube => (8, CUBE_FACES.iter().map(|q| q.to_vec()).collect()),
+            Template::Octahedron => (6, OCTA_FACES.iter().map(|t| t.to_vec()).collect()),
         }
     }
 }

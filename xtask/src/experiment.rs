@@ -10,10 +10,10 @@
 //! distribution, and the distance from the true intersection point (which
 //! has no bound, section 8.2) are reported.
 
-use crate::exact::{distance_to_line_intersection, distance_to_segment};
-use crate::rng::SplitMix64;
 use rayon::prelude::*;
 use robust_arith::{interpolate, y_at_x, INTERSECTION_ERROR_FACTOR, UNIT_ROUNDOFF};
+use test_support::exact::{distance_to_line_intersection, distance_to_segment};
+use test_support::rng::SplitMix64;
 
 type P = [f64; 2];
 

@@ -10,12 +10,12 @@
 //! simplification for every operation (the case against itself shifted).
 //! Errors are hashed by their message, so a changed error shows too.
 
-use crate::rng::SplitMix64;
 use crate::verify::{boolean_2d_suite, Suite};
 use crate::verify3::{boolean_3d_suite, simplify_suite};
 use rayon::prelude::*;
 use std::fmt::Debug;
 use std::fmt::Write as _;
+use test_support::rng::SplitMix64;
 
 /// 64-bit FNV-1a.
 fn fnv(bytes: &[u8], mut h: u64) -> u64 {

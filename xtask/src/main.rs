@@ -13,7 +13,9 @@ use xtask::{experiment, tidy, verify, verify3};
 const USAGE: &str = "usage: cargo xtask <task>
 
 tasks:
-  tidy                                   dependency direction (DESIGN.md) and //! headers
+  tidy                                   dependency direction (docs/ARCHITECTURE.md), unused
+                                         dependencies, //! headers, no reference outside
+                                         the repository
   arith-experiment [--pairs N] [--seed S]  section 8.3 experiment (default N = 10000000)
   verify [--suite 2d|3d|simplify|all] [--cases N] [--seed S]
                                          2D: Theorems 1-2, closure, eq. 4.20 (default N = 2000);

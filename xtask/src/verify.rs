@@ -29,12 +29,12 @@
 //!   input edge, the exact winding number of the result equals
 //!   `c_A a + c_B b + c_I a b` of the exact winding numbers of A and B.
 
-use crate::exact::{distance_to_segment, l_exp, winding};
-use crate::rng::SplitMix64;
 use boolean_2d::{boolean_audit, boolean_reference, BooleanOp, BooleanOutput, LevelData};
 use rayon::prelude::*;
 use robust_arith::{INTERSECTION_ERROR_FACTOR, UNIT_ROUNDOFF};
 use std::collections::BTreeMap;
+use test_support::exact::{distance_to_segment, l_exp, winding};
+use test_support::rng::SplitMix64;
 use topology::PolygonSet2;
 
 type P = [f64; 2];

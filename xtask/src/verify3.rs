@@ -21,12 +21,13 @@
 //! `closure` of every fill rule's shape, `vertex-bound` (at most
 //! `2 n^2 + 8` vertices).
 
-use crate::rng::SplitMix64;
 use crate::verify::{Check, Corpus, Outcome, Suite};
 use boolean_3d::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles_audit, Boolean3Error, BooleanOp,
 };
 use simplify_2d::{cell_structure, simplify, FillRule};
+use test_support::rng::SplitMix64;
+use test_support::shapes::{push_box, CUBE_FACES, OCTA_FACES, TETRA_FACES};
 use topology::{Facet, PolygonMesh, PolygonSet2, TriangleMesh};
 
 const OPS: [BooleanOp; 3] = [
@@ -43,32 +44,6 @@ pub struct Case3 {
     pub b: PolygonMesh,
 }
 
-/// A cube `[o, o + s]` with outward quads, vertices appended to `v`.
-fn push_box(v: &mut Vec<[f64; 3]>, f: &mut Vec<Facet>, lo: [f64; 3], hi: [f64; 3], flip: bool) {
-    let base = v.len() as u32;
-    for i in 0..8u32 {
-        v.push([
-            if i & 1 == 0 { lo[0] } else { hi[0] },
-            if i & 2 == 0 { lo[1] } else { hi[1] },
-            if i & 4 == 0 { lo[2] } else { hi[2] },
-        ]);
-    }
-    for q in [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ] {
-        let mut l: Vec<u32> = q.iter().map(|k| k + base).collect();
-        if flip {
-            l.reverse();
-        }
-        f.push(Facet::from_loop(&l));
-    }
-}
-
 /// Shells of random templates with garbage coordinates.
 fn garbage_mesh(r: &mut SplitMix64) -> PolygonMesh {
     let mut v = Vec::new();
@@ -77,24 +52,9 @@ fn garbage_mesh(r: &mut SplitMix64) -> PolygonMesh {
         let base = v.len() as u32;
         let flip = r.range(0, 3) == 0;
         let loops: Vec<Vec<u32>> = match r.range(0, 2) {
-            0 => vec![vec![0, 2, 1], vec![0, 1, 3], vec![1, 2, 3], vec![0, 3, 2]],
-            1 => vec![
-                vec![0, 2, 4],
-                vec![2, 1, 4],
-                vec![1, 3, 4],
-                vec![3, 0, 4],
-                vec![2, 0, 5],
-                vec![1, 2, 5],
-                vec![3, 1, 5],
-                vec![0, 3, 5],
-            ],
-            _ => {
-                let (mut vv, mut ff) = (Vec::new(), Vec::new());
-                push_box(&mut vv, &mut ff, [0.0; 3], [1.0; 3], false);
-                ff.iter()
-                    .map(|x| x.half_edges.iter().map(|h| h.start).collect())
-                    .collect()
-            }
+            0 => TETRA_FACES.iter().map(|t| t.to_vec()).collect(),
+            1 => OCTA_FACES.iter().map(|t| t.to_vec()).collect(),
+            _ => CUBE_FACES.iter().map(|q| q.to_vec()).collect(),
         };
         let n = loops.iter().flatten().max().map_or(0, |m| m + 1);
         for _ in 0..n {

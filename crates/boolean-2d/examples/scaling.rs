@@ -22,30 +22,15 @@
 
 use boolean_2d::{boolean, BooleanOp};
 use std::time::Instant;
+use test_support::shapes::{comb, square};
 use topology::PolygonSet2;
 
-/// A comb of `teeth` long thin teeth `[1, w] x [2i, 2i + 1/2]` on a spine
-/// `[0, 1]`, counter-clockwise; with `mirrored`, its mirror image
-/// `x -> w + 2 - x` shifted up by 1 (spine on the right, teeth interleaved
-/// with the first comb's and never touching them).
-fn comb(teeth: usize, w: f64, mirrored: bool) -> PolygonSet2 {
-    let mut pts = vec![[0.0, 0.0]];
-    for i in 0..teeth {
-        let y = 2.0 * i as f64;
-        pts.extend_from_slice(&[[w, y], [w, y + 0.5], [1.0, y + 0.5], [1.0, y + 2.0]]);
-    }
-    pts.truncate(pts.len() - 2);
-    pts.push([0.0, 2.0 * teeth as f64 - 1.5]);
-    if mirrored {
-        // A mirror image reverses the orientation: reverse the loop too.
-        pts = pts
-            .iter()
-            .rev()
-            .map(|p| [w + 2.0 - p[0], p[1] + 1.0])
-            .collect();
-    }
+/// A comb of `teeth` long thin teeth of length `w - 1` on a spine; with
+/// `mirrored`, its mirror image shifted up by 1 (spine on the right, teeth
+/// interleaved with the first comb's and never touching them).
+fn comb_set(teeth: usize, w: f64, mirrored: bool) -> PolygonSet2 {
     let mut set = PolygonSet2::new();
-    set.add_loop(&pts);
+    set.add_loop(&comb(teeth, w, mirrored, 1.0));
     set
 }
 
@@ -54,7 +39,7 @@ fn comb(teeth: usize, w: f64, mirrored: bool) -> PolygonSet2 {
 fn squares(origins: impl Iterator<Item = (f64, f64)>, s: f64) -> PolygonSet2 {
     let mut set = PolygonSet2::new();
     for (x, y) in origins {
-        set.add_loop(&[[x, y], [x + s, y], [x + s, y + s], [x, y + s]]);
+        set.add_loop(&square(x, y, s));
     }
     set
 }
@@ -63,7 +48,10 @@ fn family(name: &str, n: usize) -> (PolygonSet2, PolygonSet2) {
     match name {
         "comb" => {
             let teeth = (n / 4).max(1);
-            (comb(teeth, 1000.0, false), comb(teeth, 1000.0, true))
+            (
+                comb_set(teeth, 1000.0, false),
+                comb_set(teeth, 1000.0, true),
+            )
         }
         "column" => {
             let count = (n / 4).max(1);

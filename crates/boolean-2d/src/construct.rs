@@ -2,8 +2,9 @@
 //! composite edges (eq. 4.14-4.16) and the resulting shape.
 
 use crate::composite::{pair_composite_edge, CompositeEdge};
-use crate::reference::LevelData;
-use crate::{BooleanError, BooleanOp};
+use crate::error::BooleanError;
+use crate::level_data::LevelData;
+use topology::BooleanOp;
 use topology::PolygonSet2;
 
 /// Lazily numbered output vertices.

@@ -15,9 +15,10 @@
 //! the same interval set. Either way the cost is `O((n + c) log n)` for `c`
 //! overlapping box pairs.
 
+use crate::error::BooleanError;
 use crate::interval_set::IntervalSet;
-use crate::reference::LevelData;
-use crate::BooleanError;
+use crate::level_data::LevelData;
+use crate::timing::ms;
 use rayon::prelude::*;
 use robust_arith::total_order_key;
 use shadow_1d::{s01, s10};
@@ -722,15 +723,10 @@ pub(crate) fn level2_fast(
     ))
 }
 
-/// Milliseconds since `start`.
-pub(crate) fn ms(start: Instant) -> f64 {
-    start.elapsed().as_secs_f64() * 1e3
-}
-
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::interval_set::tests::Rng;
+    use test_support::rng::Xorshift64;
 
     fn boxes(v: &[(f64, f64, f64, f64)]) -> Vec<EdgeBox> {
         let mut b: Vec<EdgeBox> = v
@@ -812,9 +808,9 @@ mod tests {
 
     /// A random edge set of up to 40 vertices and 60 edges with
     /// multiplicities in `-2..=2` (0 included).
-    fn random_set(rng: &mut Rng, coords: Coords) -> PolygonSet2 {
+    fn random_set(rng: &mut Xorshift64, coords: Coords) -> PolygonSet2 {
         let n = 1 + rng.below(40) as usize;
-        let coord = |rng: &mut Rng| {
+        let coord = |rng: &mut Xorshift64| {
             let sign = if rng.below(2) == 0 { 1.0 } else { -1.0 };
             match coords {
                 Coords::Grid => {
@@ -851,7 +847,7 @@ mod tests {
 
     #[test]
     fn both_sweeps_find_exactly_the_overlapping_pairs() {
-        let mut rng = Rng(0x2545_f491_4f6c_dd1d);
+        let mut rng = Xorshift64::new(0x2545_f491_4f6c_dd1d);
         for round in 0..600 {
             let coords = ALL_COORDS[round % 3];
             let (a, b) = (random_set(&mut rng, coords), random_set(&mut rng, coords));
@@ -905,7 +901,7 @@ mod tests {
 
     #[test]
     fn both_casts_equal_the_brute_force_sums() {
-        let mut rng = Rng(0x9e6c_63d0_676a_9a99);
+        let mut rng = Xorshift64::new(0x9e6c_63d0_676a_9a99);
         for round in 0..600 {
             let coords = ALL_COORDS[round % 3];
             let (own, other) = (random_set(&mut rng, coords), random_set(&mut rng, coords));

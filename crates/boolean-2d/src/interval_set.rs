@@ -171,34 +171,19 @@ impl IntervalSet {
 }
 
 #[cfg(test)]
-pub(crate) mod tests {
+mod tests {
     use super::*;
-
-    /// A small deterministic generator (xorshift), so the unit tests need
-    /// no dependency.
-    pub(crate) struct Rng(pub(crate) u64);
-
-    impl Rng {
-        pub(crate) fn next(&mut self) -> u64 {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            self.0
-        }
-        pub(crate) fn below(&mut self, n: u64) -> u64 {
-            self.next() % n
-        }
-    }
+    use test_support::rng::Xorshift64;
 
     #[test]
     fn matches_a_brute_force_list_with_ties() {
-        let mut rng = Rng(0x9e37_79b9_7f4a_7c15);
+        let mut rng = Xorshift64::new(0x9e37_79b9_7f4a_7c15);
         for round in 0..200 {
             let n = 1 + rng.below(if round % 4 == 0 { 300 } else { 60 }) as usize;
             // Integer end points in a small range: ties everywhere, both
             // zeros, degenerate intervals.
             let range = 1 + rng.below(12) as i64;
-            let coord = |rng: &mut Rng| {
+            let coord = |rng: &mut Xorshift64| {
                 let v = rng.below(2 * range as u64 + 1) as i64 - range;
                 if v == 0 && rng.below(2) == 0 {
                     -0.0

@@ -41,36 +41,18 @@ mod construct;
 mod error;
 mod fast;
 mod interval_set;
+mod level_data;
 mod reference;
+mod timing;
 
 pub use composite::{pair_composite_edge, CompositeEdge};
 pub use error::BooleanError;
-pub use reference::{boolean_reference, LevelData};
+pub use level_data::LevelData;
 use std::time::Instant;
+use timing::ms;
+pub use timing::Timings;
 use topology::PolygonSet2;
 pub use topology::{BooleanOp, Operand};
-
-/// Wall-clock durations of the phases of one Boolean, in milliseconds.
-///
-/// `total` covers the whole call (validation included); the phases add up
-/// to about `total`. Informational only: no decision depends on them.
-#[derive(Clone, Copy, Debug, Default, PartialEq)]
-pub struct Timings {
-    /// Coordinate validation and the closure check of both operands.
-    pub validate: f64,
-    /// Edge boxes and the sweep-line broad phase (0 on the reference
-    /// path).
-    pub broad_phase: f64,
-    /// `X11` on the candidate pairs (every pair on the reference path).
-    pub intersections: f64,
-    /// `X02` and `X20`: ray casts and propagation (brute-force sums on the
-    /// reference path).
-    pub winding: f64,
-    /// Levels 3-4: inclusion values, composite edges, the shape.
-    pub construct: f64,
-    /// The whole operation.
-    pub total: f64,
-}
 
 /// The result of a 2D Boolean.
 #[derive(Clone, Debug)]
@@ -116,19 +98,49 @@ pub fn boolean_audit(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    run(a, b, op, |timings| {
+        let (data, t) = fast::level2_fast(a, b)?;
+        timings.broad_phase = t.broad_phase;
+        timings.intersections = t.intersections;
+        timings.winding = t.winding;
+        Ok(data)
+    })
+}
+
+/// The 2D Boolean with level 2 evaluated by brute force (every vertex
+/// against every edge, every edge against every edge), returning the level
+/// data for audit. `O(n m)`; use [`boolean`] for real work.
+pub fn boolean_reference(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+) -> Result<(BooleanOutput, LevelData), BooleanError> {
+    run(a, b, op, |timings| {
+        let clock = Instant::now();
+        let data = reference::level2_brute_force(a, b)?;
+        timings.intersections = ms(clock);
+        Ok(data)
+    })
+}
+
+/// One Boolean: validation, level 2 by `level2` (which records its own
+/// phase timings), levels 3-4, the output.
+fn run(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+    level2: impl FnOnce(&mut Timings) -> Result<LevelData, BooleanError>,
+) -> Result<(BooleanOutput, LevelData), BooleanError> {
     let start = Instant::now();
     let mut timings = Timings::default();
     validate(a, Operand::A)?;
     validate(b, Operand::B)?;
-    timings.validate = fast::ms(start);
-    let (mut data, t) = fast::level2_fast(a, b)?;
-    timings.broad_phase = t.broad_phase;
-    timings.intersections = t.intersections;
-    timings.winding = t.winding;
+    timings.validate = ms(start);
+    let mut data = level2(&mut timings)?;
     let clock = Instant::now();
     let shape = construct::construct(a, b, op, &mut data)?;
-    timings.construct = fast::ms(clock);
-    timings.total = fast::ms(start);
+    timings.construct = ms(clock);
+    timings.total = ms(start);
     Ok((output(a, b, shape, &data, timings), data))
 }
 

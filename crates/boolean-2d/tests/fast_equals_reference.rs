@@ -6,6 +6,7 @@
 
 use boolean_2d::{boolean, boolean_audit, boolean_reference, BooleanOp};
 use proptest::prelude::*;
+use test_support::shapes::{comb, rect};
 use topology::{Edge2, PolygonSet2};
 
 /// A polygon set from loops of points, each loop with a multiplicity.
@@ -168,35 +169,6 @@ fn many_components_and_long_edges() {
 // casts (many components in one column). Large enough that the fast path
 // abandons its plain active lists for the interval sets over y and the
 // Fenwick-tree ray casts, small enough for the quadratic reference.
-
-/// A comb of `teeth` teeth `[1, w] x [2i, 2i + 1/2]` on the spine `[0, 1]`,
-/// counter-clockwise; with `mirrored`, its mirror image `x -> w + 2 - x`
-/// shifted up by `shift` (spine on the right). Shift 1: interleaved teeth
-/// that never touch; 1/2: teeth touching along whole edges; 1/4: teeth
-/// overlapping (crossings at every tooth tip).
-fn comb(teeth: usize, w: f64, mirrored: bool, shift: f64) -> Vec<[f64; 2]> {
-    let mut pts = vec![[0.0, 0.0]];
-    for i in 0..teeth {
-        let y = 2.0 * i as f64;
-        pts.extend_from_slice(&[[w, y], [w, y + 0.5], [1.0, y + 0.5], [1.0, y + 2.0]]);
-    }
-    pts.truncate(pts.len() - 2);
-    pts.push([0.0, 2.0 * teeth as f64 - 1.5]);
-    if mirrored {
-        pts = pts
-            .iter()
-            .rev()
-            .map(|p| [w + 2.0 - p[0], p[1] + shift])
-            .collect();
-    }
-    pts
-}
-
-/// The square `[x, x + w] x [y, y + h]`, counter-clockwise from its lower
-/// left corner (the vertex that gets the component's ray cast).
-fn rect(x: f64, y: f64, w: f64, h: f64) -> Vec<[f64; 2]> {
-    vec![[x, y], [x + w, y], [x + w, y + h], [x, y + h]]
-}
 
 #[test]
 fn interleaved_combs() {

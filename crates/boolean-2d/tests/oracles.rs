@@ -7,9 +7,9 @@
 //! bad input.
 
 use boolean_2d::{boolean, boolean_audit, BooleanError, BooleanOp, Operand};
-use num_rational::BigRational;
-use num_traits::{Signed, Zero};
 use proptest::prelude::*;
+use test_support::exact::winding;
+use test_support::shapes::{regular_ngon, square};
 use topology::{Edge2, PolygonSet2, TopologyError};
 
 fn set_from(loops: &[Vec<[f64; 2]>]) -> PolygonSet2 {
@@ -18,39 +18,6 @@ fn set_from(loops: &[Vec<[f64; 2]>]) -> PolygonSet2 {
         set.add_loop(l);
     }
     set
-}
-
-fn exact(v: f64) -> BigRational {
-    BigRational::from_float(v).expect("finite")
-}
-
-/// Sign of the exact orientation of `(s, t, p)`: positive when `p` is left
-/// of `s -> t`.
-fn orient_exact(s: [f64; 2], t: [f64; 2], p: [f64; 2]) -> i32 {
-    let (sx, sy) = (exact(s[0]), exact(s[1]));
-    let d = (exact(t[0]) - &sx) * (exact(p[1]) - &sy) - (exact(t[1]) - &sy) * (exact(p[0]) - &sx);
-    if d.is_zero() {
-        0
-    } else if d.is_positive() {
-        1
-    } else {
-        -1
-    }
-}
-
-/// The exact winding number of `p` (not on any edge): multiplicity-weighted
-/// signed crossings of a rightward ray (half-open in y).
-fn winding(set: &PolygonSet2, p: [f64; 2]) -> i64 {
-    let mut w = 0i64;
-    for e in set.edges() {
-        let (s, t) = set.edge_points(e);
-        if s[1] <= p[1] && t[1] > p[1] && orient_exact(s, t, p) > 0 {
-            w += i64::from(e.mult);
-        } else if t[1] <= p[1] && s[1] > p[1] && orient_exact(s, t, p) < 0 {
-            w -= i64::from(e.mult);
-        }
-    }
-    w
 }
 
 /// Distance from `p` to the segment `s t` (f64; only used to keep sample
@@ -88,9 +55,9 @@ fn check_identity(
             if !(clear_of(a, p, 1e-9) && clear_of(b, p, 1e-9)) {
                 continue;
             }
-            let (wa, wb) = (winding(a, p), winding(b, p));
+            let (wa, wb) = (winding(p, a), winding(p, b));
             let want = op.result_winding(wa, wb);
-            let got = winding(&out.shape, p);
+            let got = winding(p, &out.shape);
             prop_assert_eq!(got, want, "{:?} at {:?}: w_A = {}, w_B = {}", op, p, wa, wb);
             checked += 1;
         }
@@ -154,17 +121,13 @@ proptest! {
                 for i in 0..13 {
                     for j in 0..13 {
                         let c = [f64::from(i) + 0.5, f64::from(j) + 0.5];
-                        want += op.result_winding(winding(p, c), winding(q, c));
+                        want += op.result_winding(winding(c, p), winding(c, q));
                     }
                 }
                 prop_assert_eq!(out.shape.signed_area(), want as f64, "{:?}", op);
             }
         }
     }
-}
-
-fn square(x: f64, y: f64, s: f64) -> Vec<[f64; 2]> {
-    vec![[x, y], [x + s, y], [x + s, y + s], [x, y + s]]
 }
 
 #[test]
@@ -229,8 +192,8 @@ fn touching_squares_in_both_orders() {
         })
         .sum();
     assert_eq!(net, 0);
-    assert_eq!(winding(&out.shape, [0.9, 0.5]), 1);
-    assert_eq!(winding(&out.shape, [1.1, 0.5]), 1);
+    assert_eq!(winding([0.9, 0.5], &out.shape), 1);
+    assert_eq!(winding([1.1, 0.5], &out.shape), 1);
 }
 
 #[test]
@@ -267,13 +230,13 @@ fn figure_4_9_inside_out_region() {
     // A figure-8 crossing itself at (4.5, 0): the left lobe (over A's bottom
     // edge) is clockwise, i.e. inside out; the right lobe counter-clockwise.
     let b = set_from(&[vec![[1.0, -1.0], [1.0, 1.0], [8.0, -1.0], [8.0, 1.0]]]);
-    assert_eq!(winding(&b, [2.0, 0.5]), -1);
-    assert_eq!(winding(&b, [7.0, 0.0]), 1);
+    assert_eq!(winding([2.0, 0.5], &b), -1);
+    assert_eq!(winding([7.0, 0.0], &b), 1);
     let (out, data) = boolean_audit(&a, &b, BooleanOp::Union).unwrap();
     assert!(out.shape.check_topology().is_ok());
     assert!(data.composite_counts.iter().all(|(s, e)| s == e));
-    assert_eq!(winding(&out.shape, [2.0, -0.2]), -1);
-    assert_eq!(winding(&out.shape, [2.0, 0.2]), 1);
+    assert_eq!(winding([2.0, -0.2], &out.shape), -1);
+    assert_eq!(winding([2.0, 0.2], &out.shape), 1);
     // The retained part of the bottom edge is represented twice: the
     // multiplicities of result edges on y = 0 covering x = 2 add up to 2.
     let covering: i32 = out
@@ -294,14 +257,7 @@ fn figure_4_9_inside_out_region() {
 }
 
 fn ngon(n: usize, alpha_degrees: f64) -> PolygonSet2 {
-    let alpha = alpha_degrees.to_radians();
-    let pts: Vec<[f64; 2]> = (0..n)
-        .map(|k| {
-            let t = 2.0 * std::f64::consts::PI * k as f64 / n as f64 + alpha;
-            [t.cos(), t.sin()]
-        })
-        .collect();
-    set_from(&[pts])
+    set_from(&[regular_ngon(n, 1.0, alpha_degrees)])
 }
 
 /// Table 7.4: the union of a regular n-gon with a copy rotated by a tiny

@@ -11,73 +11,7 @@
 
 use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
 use std::time::Instant;
-use topology::{Facet, PolygonMesh, TriangleMesh};
-
-/// A UV sphere with `slices` segments and `stacks` bands:
-/// `2 slices (stacks - 1)` triangles.
-fn uv_sphere(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> TriangleMesh {
-    let mut v = vec![[c[0], c[1], c[2] + r]];
-    for i in 1..stacks {
-        let th = std::f64::consts::PI * f64::from(i) / f64::from(stacks);
-        for j in 0..slices {
-            let ph = 2.0 * std::f64::consts::PI * f64::from(j) / f64::from(slices);
-            v.push([
-                c[0] + r * th.sin() * ph.cos(),
-                c[1] + r * th.sin() * ph.sin(),
-                c[2] + r * th.cos(),
-            ]);
-        }
-    }
-    v.push([c[0], c[1], c[2] - r]);
-    let south = v.len() as u32 - 1;
-    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
-    let mut t = Vec::new();
-    for j in 0..slices {
-        t.push([0, ring(1, j), ring(1, j + 1)]);
-        t.push([south, ring(stacks - 1, j + 1), ring(stacks - 1, j)]);
-    }
-    for i in 1..stacks - 1 {
-        for j in 0..slices {
-            let (a, b, c2, d) = (
-                ring(i, j),
-                ring(i, j + 1),
-                ring(i + 1, j),
-                ring(i + 1, j + 1),
-            );
-            t.push([a, c2, d]);
-            t.push([a, d, b]);
-        }
-    }
-    TriangleMesh::new(v, t)
-}
-
-/// The same UV sphere as a polygon mesh of quadrilaterals (triangles at
-/// the poles): about half as many facets for the same vertices.
-fn uv_sphere_quads(c: [f64; 3], r: f64, slices: u32, stacks: u32) -> PolygonMesh {
-    let t = uv_sphere(c, r, slices, stacks);
-    let south = t.vertices.len() as u32 - 1;
-    let ring = |i: u32, j: u32| 1 + (i - 1) * slices + (j % slices);
-    let mut f = Vec::new();
-    for j in 0..slices {
-        f.push(Facet::from_loop(&[0, ring(1, j), ring(1, j + 1)]));
-        f.push(Facet::from_loop(&[
-            south,
-            ring(stacks - 1, j + 1),
-            ring(stacks - 1, j),
-        ]));
-    }
-    for i in 1..stacks - 1 {
-        for j in 0..slices {
-            f.push(Facet::from_loop(&[
-                ring(i, j),
-                ring(i + 1, j),
-                ring(i + 1, j + 1),
-                ring(i, j + 1),
-            ]));
-        }
-    }
-    PolygonMesh::new(t.vertices, f)
-}
+use test_support::shapes::{uv_sphere, uv_sphere_quads};
 
 fn best_of<T>(runs: usize, mut f: impl FnMut() -> T) -> (f64, T) {
     let mut best = f64::INFINITY;

@@ -5,7 +5,11 @@
 mod common;
 
 use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, triangulate_mesh, BooleanOp};
-use common::*;
+use common::volume;
+use test_support::exact::triangle_mesh_volume as exact_volume;
+use test_support::measure::{distance_to_mesh, winding_number};
+use test_support::rng::Lcg64;
+use test_support::shapes::{box_mesh, box_triangles, icosphere, tetra, uv_sphere};
 use topology::TriangleMesh;
 
 fn box_volume(lo: [f64; 3], hi: [f64; 3]) -> f64 {
@@ -47,9 +51,9 @@ fn overlapping_boxes_have_exact_volumes() {
 
 #[test]
 fn random_box_pairs_have_the_inclusion_exclusion_volume() {
-    let mut rng = Rng(7);
+    let mut rng = Lcg64::new(7);
     for _ in 0..40 {
-        let mut r = || (rng.range(-4.0, 4.0) * 8.0).round() / 8.0 + 1.0 / 64.0;
+        let mut r = || (rng.uniform(-4.0, 4.0) * 8.0).round() / 8.0 + 1.0 / 64.0;
         let alo = [r(), r(), r()];
         let ahi = [alo[0] + 2.5, alo[1] + 1.75, alo[2] + 3.0];
         let blo = [r() + 1.0 / 256.0, r() + 1.0 / 256.0, r() + 1.0 / 256.0];
@@ -130,7 +134,7 @@ fn sphere_booleans_approach_the_analytic_volumes() {
 /// the generalized winding number of the result equals
 /// `c_A a + c_B b + c_I a b` of the inputs' winding numbers.
 fn check_winding_identity(a: &TriangleMesh, b: &TriangleMesh, seed: u64, samples: usize, gap: f64) {
-    let mut rng = Rng(seed);
+    let mut rng = Lcg64::new(seed);
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for p in a.vertices.iter().chain(b.vertices.iter()) {
@@ -150,9 +154,9 @@ fn check_winding_identity(a: &TriangleMesh, b: &TriangleMesh, seed: u64, samples
     let mut tested = 0;
     while tested < samples {
         let q = [
-            rng.range(lo[0] - 0.2, hi[0] + 0.2),
-            rng.range(lo[1] - 0.2, hi[1] + 0.2),
-            rng.range(lo[2] - 0.2, hi[2] + 0.2),
+            rng.uniform(lo[0] - 0.2, hi[0] + 0.2),
+            rng.uniform(lo[1] - 0.2, hi[1] + 0.2),
+            rng.uniform(lo[2] - 0.2, hi[2] + 0.2),
         ];
         if distance_to_mesh(a, q) < gap || distance_to_mesh(b, q) < gap {
             continue;
@@ -241,8 +245,8 @@ mod random_placements {
         /// numbers -1, 0, 1) against a random box or a second tetrahedron.
         #[test]
         fn winding_identity_for_random_solids(seed in any::<u64>(), kind in 0u32..2) {
-            let mut rng = Rng(seed);
-            let mut p = || [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)];
+            let mut rng = Lcg64::new(seed);
+            let mut p = || [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)];
             let a = tetra([p(), p(), p(), p()]);
             let b = if kind == 0 {
                 let lo = p();

@@ -2,11 +2,10 @@
 //! and the violated constraint exactly as `topology`'s checks do, and
 //! nothing panics.
 
-mod common;
-
 use boolean_3d::{boolean_mesh, boolean_triangles, Boolean3Error, BooleanOp, Operand};
-use common::{box_mesh, icosphere, Rng};
 use proptest::prelude::*;
+use test_support::rng::Lcg64;
+use test_support::shapes::{box_mesh, icosphere};
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError};
 
 #[test]
@@ -62,12 +61,12 @@ fn open_mesh_and_dangling_index_are_rejected() {
 
 /// Random damage to a valid mesh: remove, reverse, redirect or add a
 /// half-edge, or make an index dangle.
-fn damage(m: &mut PolygonMesh, rng: &mut Rng) {
+fn damage(m: &mut PolygonMesh, rng: &mut Lcg64) {
     let nf = m.facets.len() as u64;
-    let f = rng.int(nf) as usize;
+    let f = rng.below(nf) as usize;
     let nh = m.facets[f].half_edges.len() as u64;
-    let h = rng.int(nh.max(1)) as usize;
-    match rng.int(5) {
+    let h = rng.below(nh.max(1)) as usize;
+    match rng.below(5) {
         0 => {
             m.facets[f].half_edges.remove(h);
         }
@@ -75,12 +74,12 @@ fn damage(m: &mut PolygonMesh, rng: &mut Rng) {
             let e = &mut m.facets[f].half_edges[h];
             std::mem::swap(&mut e.start, &mut e.end);
         }
-        2 => m.facets[f].half_edges[h].end = rng.int(m.vertices.len() as u64) as u32,
+        2 => m.facets[f].half_edges[h].end = rng.below(m.vertices.len() as u64) as u32,
         3 => m.facets[f].half_edges.push(HalfEdge {
-            start: rng.int(m.vertices.len() as u64) as u32,
-            end: rng.int(m.vertices.len() as u64) as u32,
+            start: rng.below(m.vertices.len() as u64) as u32,
+            end: rng.below(m.vertices.len() as u64) as u32,
         }),
-        _ => m.facets[f].half_edges[h].start = m.vertices.len() as u32 + rng.int(3) as u32,
+        _ => m.facets[f].half_edges[h].start = m.vertices.len() as u32 + rng.below(3) as u32,
     }
 }
 
@@ -91,7 +90,7 @@ proptest! {
     /// reports the same first violation.
     #[test]
     fn validation_agrees_with_check_topology(seed in any::<u64>(), which in 0u32..3) {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let mut m = match which {
             0 => box_mesh([0.0; 3], [1.0; 3]),
             1 => icosphere([0.0; 3], 1.0, 1).to_polygon_mesh(),
@@ -198,26 +197,5 @@ fn xor_is_refused_before_any_work() {
 }
 
 fn boolean_3d_cube() -> topology::PolygonMesh {
-    let v: Vec<[f64; 3]> = (0..8)
-        .map(|i| {
-            [
-                f64::from(i & 1),
-                f64::from((i >> 1) & 1),
-                f64::from((i >> 2) & 1),
-            ]
-        })
-        .collect();
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let f = quads
-        .iter()
-        .map(|q| topology::Facet::from_loop(q))
-        .collect();
-    topology::PolygonMesh::new(v, f)
+    box_mesh([0.0; 3], [1.0; 3])
 }

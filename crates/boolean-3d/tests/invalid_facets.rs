@@ -15,12 +15,10 @@
 //! every triangulation by internal edges; where loops can be triangulated
 //! without any overlap the oracle is the `|w|`-weighted area itself.
 
-mod common;
-
 use boolean_3d::triangulate_facet;
-use common::Rng;
 use proptest::prelude::*;
 use std::collections::HashMap;
+use test_support::rng::Lcg64;
 
 type P2 = [f64; 2];
 
@@ -373,8 +371,8 @@ proptest! {
     /// closed and covers no more than the best triangulation of the loop.
     #[test]
     fn random_loops_are_triangulated_optimally(seed in any::<u64>(), n in 4usize..24) {
-        let mut rng = Rng(seed);
-        let p: Vec<P2> = (0..n).map(|_| [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)]).collect();
+        let mut rng = Lcg64::new(seed);
+        let p: Vec<P2> = (0..n).map(|_| [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)]).collect();
         let l: Vec<u32> = (0..n as u32).collect();
         let hes = half_edges(std::slice::from_ref(&l));
         let mut tris = Vec::new();

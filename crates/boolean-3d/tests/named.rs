@@ -9,7 +9,9 @@
 mod common;
 
 use boolean_3d::{boolean_mesh_audit, boolean_triangles_audit, triangulate_mesh, BooleanOp};
-use common::*;
+use common::{rotate, volume};
+use test_support::exact::triangle_mesh_volume as exact_volume;
+use test_support::shapes::{box_mesh, box_triangles, icosphere, tetra};
 use topology::{PolygonMesh, TriangleMesh};
 
 /// Runs `op` in both variants, checks every theorem and returns the exact

@@ -10,14 +10,14 @@
 //! claim that "even replacing the vertex position data with random data
 //! would generate a topologically valid result".
 
-mod common;
-
 use boolean_3d::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
     level3_reference, triangulate_mesh, BooleanOp,
 };
-use common::{box_mesh, distance_to_mesh, winding_number, Rng, CUBE_FACES};
 use proptest::prelude::*;
+use test_support::measure::{distance_to_mesh, winding_number};
+use test_support::rng::Lcg64;
+use test_support::shapes::{box_mesh, CUBE_FACES};
 use topology::{Facet, PolygonMesh, TriangleMesh};
 
 /// One closed, outward-facing shell about the origin: vertices and facet
@@ -100,16 +100,16 @@ fn rotate3(p: [f64; 3], ang: [f64; 3]) -> [f64; 3] {
 /// keeps every facet's loops closed and every half-edge paired with an
 /// opposite one, so facet and shape boundary closure (section 4.2) hold
 /// whatever is identified with what.
-fn random_mesh(rng: &mut Rng, shells: usize) -> PolygonMesh {
+fn random_mesh(rng: &mut Lcg64, shells: usize) -> PolygonMesh {
     let mut m = PolygonMesh::default();
     for s in 0..shells {
-        let (v, mut loops) = unit_shell(rng.int(4));
-        let scale = rng.range(0.4, 1.2);
-        let ang = [0; 3].map(|_| rng.range(0.0, std::f64::consts::TAU));
-        let shift = [0; 3].map(|_| rng.range(-0.5, 0.5));
+        let (v, mut loops) = unit_shell(rng.below(4));
+        let scale = rng.uniform(0.4, 1.2);
+        let ang = [0; 3].map(|_| rng.uniform(0.0, std::f64::consts::TAU));
+        let shift = [0; 3].map(|_| rng.uniform(-0.5, 0.5));
         // One shell in four is inside-out (winding number -1 inside,
         // section 4.7).
-        if rng.int(4) == 0 {
+        if rng.below(4) == 0 {
             for l in &mut loops {
                 l.reverse();
             }
@@ -117,16 +117,16 @@ fn random_mesh(rng: &mut Rng, shells: usize) -> PolygonMesh {
         let base = m.vertices.len() as u32;
         let mut map: Vec<u32> = (base..base + v.len() as u32).collect();
         if s > 0 && base > 0 {
-            match rng.int(4) {
+            match rng.below(4) {
                 // Touching an earlier shell at one vertex.
-                0 => map[rng.int(v.len() as u64) as usize] = rng.int(u64::from(base)) as u32,
+                0 => map[rng.below(v.len() as u64) as usize] = rng.below(u64::from(base)) as u32,
                 // Sharing an edge with an earlier facet: the edge gets two
                 // pairs of half-edges (a non-manifold edge).
                 1 => {
-                    let f = &m.facets[rng.int(m.facets.len() as u64) as usize];
-                    let h = f.half_edges[rng.int(f.half_edges.len() as u64) as usize];
-                    let l = &loops[rng.int(loops.len() as u64) as usize];
-                    let k = rng.int(l.len() as u64) as usize;
+                    let f = &m.facets[rng.below(m.facets.len() as u64) as usize];
+                    let h = f.half_edges[rng.below(f.half_edges.len() as u64) as usize];
+                    let l = &loops[rng.below(loops.len() as u64) as usize];
+                    let k = rng.below(l.len() as u64) as usize;
                     let (a, b) = (l[k], l[(k + 1) % l.len()]);
                     map[a as usize] = h.end;
                     map[b as usize] = h.start;
@@ -134,9 +134,9 @@ fn random_mesh(rng: &mut Rng, shells: usize) -> PolygonMesh {
                 // Arbitrary identifications, possibly of two vertices of
                 // one facet (zero-length edges).
                 2 => {
-                    for _ in 0..1 + rng.int(3) {
-                        let from = rng.int(v.len() as u64) as usize;
-                        map[from] = rng.int(u64::from(base) + v.len() as u64) as u32;
+                    for _ in 0..1 + rng.below(3) {
+                        let from = rng.below(v.len() as u64) as usize;
+                        map[from] = rng.below(u64::from(base) + v.len() as u64) as u32;
                         if map[from] >= base {
                             map[from] = map[(map[from] - base) as usize];
                         }
@@ -158,14 +158,14 @@ fn random_mesh(rng: &mut Rng, shells: usize) -> PolygonMesh {
 }
 
 /// Random garbage of mixed magnitude, with small integers for exact ties.
-fn garbage(rng: &mut Rng, m: &mut PolygonMesh) {
+fn garbage(rng: &mut Lcg64, m: &mut PolygonMesh) {
     for p in &mut m.vertices {
         for x in p.iter_mut() {
-            *x = match rng.int(6) {
-                0 => rng.range(-1e300, 1e300),
-                1 => rng.range(-1e-300, 1e-300),
-                2 | 3 => rng.int(3) as f64,
-                _ => rng.range(-2.0, 2.0),
+            *x = match rng.below(6) {
+                0 => rng.uniform(-1e300, 1e300),
+                1 => rng.uniform(-1e-300, 1e-300),
+                2 | 3 => rng.below(3) as f64,
+                _ => rng.uniform(-2.0, 2.0),
             };
         }
     }
@@ -214,7 +214,7 @@ fn check_theorems(a: &PolygonMesh, b: &PolygonMesh, what: &str) -> [TriangleMesh
 /// generalized winding numbers of the triangle meshes, computed in the
 /// test.
 fn check_winding_identity(
-    rng: &mut Rng,
+    rng: &mut Lcg64,
     a: &PolygonMesh,
     b: &PolygonMesh,
     outs: &[TriangleMesh; 3],
@@ -222,7 +222,7 @@ fn check_winding_identity(
     let (ta, tb) = (triangulate_mesh(a), triangulate_mesh(b));
     let mut checked = 0;
     while checked < 6 {
-        let q = [0; 3].map(|_| rng.range(-1.6, 1.6));
+        let q = [0; 3].map(|_| rng.uniform(-1.6, 1.6));
         if distance_to_mesh(&ta, q).min(distance_to_mesh(&tb, q)) < 1e-3 {
             continue;
         }
@@ -262,7 +262,7 @@ fn unit_shells_face_outwards() {
 fn generator_covers_the_advertised_topologies() {
     let (mut non_manifold, mut zero_length, mut negative, mut double) = (0, 0, 0, 0);
     for seed in 0..200 {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let m = random_mesh(&mut rng, 4);
         let mut uses = std::collections::HashMap::new();
         for h in m.facets.iter().flat_map(|f| &f.half_edges) {
@@ -274,7 +274,7 @@ fn generator_covers_the_advertised_topologies() {
         non_manifold += uses.values().filter(|&&n| n > 2).count();
         let t = triangulate_mesh(&m);
         for _ in 0..50 {
-            let q = [0; 3].map(|_| rng.range(-1.0, 1.0));
+            let q = [0; 3].map(|_| rng.uniform(-1.0, 1.0));
             match winding_number(&t, q).round() as i64 {
                 ..=-1 => negative += 1,
                 2.. => double += 1,
@@ -295,7 +295,7 @@ proptest! {
     fn random_topologies_satisfy_theorems_1_to_4(
         na in 1usize..=4, nb in 1usize..=4, seed in any::<u64>()
     ) {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let mut a = random_mesh(&mut rng, na);
         let mut b = random_mesh(&mut rng, nb);
         let outs = check_theorems(&a, &b, "placed");

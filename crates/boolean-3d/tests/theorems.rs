@@ -5,14 +5,13 @@
 //! propagation) must equal the brute-force Table 4.1 oracle exactly. Both
 //! variants must also give bit-identical output for every thread count.
 
-mod common;
-
 use boolean_3d::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
     level3_reference, BooleanOp, MeshOutput, TriangleOutput,
 };
-use common::{box_mesh, icosphere, tetra, uv_sphere, Rng};
 use proptest::prelude::*;
+use test_support::rng::Lcg64;
+use test_support::shapes::{box_mesh, icosphere, tetra, uv_sphere};
 use topology::{Facet, PolygonMesh, TriangleMesh};
 
 /// Topologies: every one satisfies the constraints of section 4.2.
@@ -90,22 +89,22 @@ pub fn two_cubes_sharing_an_edge() -> PolygonMesh {
 /// Replaces the coordinates: 0 = garbage of mixed magnitude, 1 = integer
 /// grid {0, 1, 2} (exact ties everywhere), 2 = a valid shape perturbed by
 /// a few ulps (near-degenerate), 3 = garbage in [-1, 1].
-fn recoordinate(m: &mut PolygonMesh, mode: u32, rng: &mut Rng, shift: [f64; 3]) {
+fn recoordinate(m: &mut PolygonMesh, mode: u32, rng: &mut Lcg64, shift: [f64; 3]) {
     for p in &mut m.vertices {
         for (c, x) in p.iter_mut().enumerate() {
             *x = match mode % 4 {
-                0 => match rng.int(5) {
-                    0 => rng.range(-1e300, 1e300),
-                    1 => rng.range(-1e-300, 1e-300),
-                    2 => rng.int(3) as f64,
-                    _ => rng.range(-10.0, 10.0),
+                0 => match rng.below(5) {
+                    0 => rng.uniform(-1e300, 1e300),
+                    1 => rng.uniform(-1e-300, 1e-300),
+                    2 => rng.below(3) as f64,
+                    _ => rng.uniform(-10.0, 10.0),
                 },
-                1 => rng.int(3) as f64,
+                1 => rng.below(3) as f64,
                 2 => {
                     let v = *x + shift[c];
-                    v + v * f64::EPSILON * (rng.int(5) as f64 - 2.0)
+                    v + v * f64::EPSILON * (rng.below(5) as f64 - 2.0)
                 }
-                _ => rng.range(-1.0, 1.0),
+                _ => rng.uniform(-1.0, 1.0),
             };
         }
     }
@@ -151,10 +150,10 @@ proptest! {
     fn garbage_grid_and_near_degenerate_coordinates_give_valid_results(
         ka in 0u32..7, kb in 0u32..7, mode in 0u32..4, seed in any::<u64>()
     ) {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let mut a = topology_of(ka);
         let mut b = topology_of(kb);
-        let shift = [rng.range(-0.7, 0.7), rng.range(-0.7, 0.7), rng.range(-0.7, 0.7)];
+        let shift = [rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7), rng.uniform(-0.7, 0.7)];
         recoordinate(&mut a, mode, &mut rng, [0.0; 3]);
         recoordinate(&mut b, mode, &mut rng, shift);
         check_all(&a, &b);
@@ -164,7 +163,7 @@ proptest! {
     fn triangle_variant_is_valid_on_garbage(
         ka in 0u32..7, kb in 0u32..7, mode in 0u32..4, seed in any::<u64>()
     ) {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let mut a = topology_of(ka);
         let mut b = topology_of(kb);
         recoordinate(&mut a, mode, &mut rng, [0.0; 3]);

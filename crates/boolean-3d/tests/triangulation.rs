@@ -2,11 +2,10 @@
 //! non-overlapping triangles that all face the facet's way; an invalid
 //! facet still gives a closed triangulation.
 
-mod common;
-
 use boolean_3d::{boolean_mesh, triangulate_facet, BooleanOp};
-use common::*;
 use proptest::prelude::*;
+use test_support::rng::Lcg64;
+use test_support::shapes::{box_mesh, icosphere, uv_sphere};
 use topology::PolygonMesh;
 
 fn cross(a: [f64; 3], b: [f64; 3]) -> [f64; 3] {
@@ -145,10 +144,10 @@ proptest! {
     /// triangles' half-edges minus the facet's cancel in opposite pairs.
     #[test]
     fn any_facet_gives_a_closed_triangulation(seed in any::<u64>(), n in 3usize..12, holes in 0usize..3) {
-        let mut rng = Rng(seed);
+        let mut rng = Lcg64::new(seed);
         let nv = n + 3 * holes;
         let v: Vec<[f64; 3]> = (0..nv)
-            .map(|_| [rng.range(-1.0, 1.0), rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)])
+            .map(|_| [rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0), rng.uniform(-1.0, 1.0)])
             .collect();
         let mut hes: Vec<(u32, u32)> = (0..n as u32).map(|i| (i, (i + 1) % n as u32)).collect();
         for h in 0..holes as u32 {

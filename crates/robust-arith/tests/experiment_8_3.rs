@@ -11,8 +11,9 @@
 
 mod common;
 
-use common::{distance_to_segment, SplitMix64, U};
+use common::{distance_to_segment, U};
 use robust_arith::{interpolate, y_at_x, INTERSECTION_ERROR_FACTOR};
+use test_support::rng::SplitMix64;
 
 /// The y of segment `p - q` (either direction, not vertical) at `x`.
 fn y_on(p: [f64; 2], q: [f64; 2], x: f64) -> f64 {
@@ -45,7 +46,7 @@ fn table_7_2_point(a: [[f64; 2]; 2], b: [[f64; 2]; 2]) -> Option<[f64; 2]> {
 #[test]
 fn sqrt_153_bound_over_100k_random_intersecting_pairs() {
     const PAIRS: usize = 100_000;
-    let mut rng = SplitMix64(0x0005_eed8);
+    let mut rng = SplitMix64::new(0x0005_eed8);
     let bound = INTERSECTION_ERROR_FACTOR; // in units of u L, L = 1
     let (mut found, mut tried) = (0usize, 0usize);
     let (mut max_far, mut max_a, mut max_b) = (0.0f64, 0.0f64, 0.0f64);

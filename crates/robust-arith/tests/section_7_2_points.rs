@@ -8,9 +8,10 @@
 
 mod common;
 
-use common::{orient, U};
+use common::U;
 use shadow_1d::{s01, s10, x01, x10};
 use shadow_2d::x11;
+use test_support::exact::orient;
 
 type P = [f64; 2];
 

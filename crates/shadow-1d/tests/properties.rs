@@ -14,41 +14,9 @@
 
 use proptest::prelude::*;
 use shadow_1d::{s00, s01, s10, x00, x01, x10};
+use test_support::strategies::{float_coord, garbage_coord, grid_coord};
 
 type P = [f64; 2];
-
-/// Random floats in `[-1, 1]` with full precision at every scale.
-fn float_coord() -> BoxedStrategy<f64> {
-    (any::<u64>(), any::<bool>())
-        .prop_map(|(b, neg)| {
-            let v = b as f64 * (1.0 / 18_446_744_073_709_551_616.0);
-            if neg {
-                -v
-            } else {
-                v
-            }
-        })
-        .boxed()
-}
-
-/// Small integers: ties in x and y everywhere.
-fn grid_coord() -> BoxedStrategy<f64> {
-    (-4i32..=4).prop_map(f64::from).boxed()
-}
-
-/// Garbage: any sign, binary exponent in [-1000, 1000], sometimes zero or
-/// one of a few repeated values.
-fn garbage_coord() -> BoxedStrategy<f64> {
-    prop_oneof![
-        4 => (any::<bool>(), 0u64..(1 << 52), -1000i32..=1000).prop_map(|(neg, m, e)| {
-            let v = (1.0 + m as f64 / 4_503_599_627_370_496.0) * 2f64.powi(e);
-            if neg { -v } else { v }
-        }),
-        1 => Just(0.0),
-        1 => prop::sample::select(vec![1e300, -1e300, 1e-300, 3.0, -3.0]),
-    ]
-    .boxed()
-}
 
 fn point(c: BoxedStrategy<f64>) -> impl Strategy<Value = P> {
     [c.clone(), c]
@@ -62,10 +30,10 @@ fn vertex_edge(c: BoxedStrategy<f64>) -> impl Strategy<Value = (P, P, P)> {
 fn any_vertex_edge() -> impl Strategy<Value = (P, P, P)> {
     prop_oneof![
         vertex_edge(float_coord()),
-        vertex_edge(grid_coord()),
+        vertex_edge(grid_coord(4)),
         vertex_edge(garbage_coord()),
         // A vertex sharing x with an end of the edge.
-        (point(grid_coord()), point(float_coord()), 0usize..2).prop_map(|(s, e, k)| {
+        (point(grid_coord(4)), point(float_coord()), 0usize..2).prop_map(|(s, e, k)| {
             let v = [if k == 0 { s[0] } else { e[0] }, e[1]];
             (v, s, e)
         }),
@@ -199,7 +167,7 @@ proptest! {
     /// Eq. 4.1 on the integer grid: every function equals its exact
     /// definition, ties (vertex on the edge, shared x) going to B.
     #[test]
-    fn exact_definitions_on_the_grid(v in point(grid_coord()), s in point(grid_coord()), e in point(grid_coord())) {
+    fn exact_definitions_on_the_grid(v in point(grid_coord(4)), s in point(grid_coord(4)), e in point(grid_coord(4))) {
         let (iv, is, ie) = (gi(v), gi(s), gi(e));
         prop_assert_eq!(s00(&v, &s), i32::from(is[0] >= iv[0]));
         let x = exact_x01(iv, is, ie);

@@ -19,46 +19,18 @@
 //! - The `X11` point lies in both bounding boxes (eq. 8.18-8.19), within
 //!   `sqrt(153) u L` of both segments (eq. 8.17), and is the Table 7.2 point.
 
-use num_bigint::BigInt;
-use num_traits::{Signed, ToPrimitive, Zero};
+use num_traits::Signed;
 use proptest::prelude::*;
 use robust_arith::{interpolate, y_at_x, INTERSECTION_ERROR_FACTOR, UNIT_ROUNDOFF};
 use shadow_1d::{x01, x10};
 use shadow_2d::{s02, s11, s20, x02, x02_weighted, x11, x20, ShadowError};
+use test_support::exact::{distance_to_segment, orient};
+use test_support::strategies::{float_coord, garbage_coord, grid_coord};
 
 type P = [f64; 2];
 type Facet = Vec<(P, P)>;
 
 // ---------------------------------------------------------------- inputs
-
-fn float_coord() -> BoxedStrategy<f64> {
-    (any::<u64>(), any::<bool>())
-        .prop_map(|(b, neg)| {
-            let v = b as f64 * (1.0 / 18_446_744_073_709_551_616.0);
-            if neg {
-                -v
-            } else {
-                v
-            }
-        })
-        .boxed()
-}
-
-fn grid_coord() -> BoxedStrategy<f64> {
-    (-3i32..=3).prop_map(f64::from).boxed()
-}
-
-fn garbage_coord() -> BoxedStrategy<f64> {
-    prop_oneof![
-        4 => (any::<bool>(), 0u64..(1 << 52), -1000i32..=1000).prop_map(|(neg, m, e)| {
-            let v = (1.0 + m as f64 / 4_503_599_627_370_496.0) * 2f64.powi(e);
-            if neg { -v } else { v }
-        }),
-        1 => Just(0.0),
-        1 => prop::sample::select(vec![1e300, -1e300, 1e-300, 3.0, -3.0]),
-    ]
-    .boxed()
-}
 
 #[derive(Clone, Copy, Debug, PartialEq)]
 enum Kind {
@@ -70,7 +42,7 @@ enum Kind {
 fn coord(kind: Kind) -> BoxedStrategy<f64> {
     match kind {
         Kind::Float => float_coord(),
-        Kind::Grid => grid_coord(),
+        Kind::Grid => grid_coord(3),
         Kind::Garbage => garbage_coord(),
     }
 }
@@ -118,55 +90,6 @@ fn lift(p: P, z: f64) -> [f64; 3] {
 }
 
 // --------------------------------------------------------------- oracles
-
-/// `(mantissa, exponent)` with `x = mantissa * 2^exponent` exactly.
-fn decode(x: f64) -> (i64, i32) {
-    let bits = x.to_bits();
-    let sign = if bits >> 63 == 0 { 1 } else { -1 };
-    let exp = ((bits >> 52) & 0x7ff) as i32;
-    let frac = (bits & 0xf_ffff_ffff_ffff) as i64;
-    if exp == 0 {
-        (sign * frac, -1074)
-    } else {
-        (sign * (frac | (1 << 52)), exp - 1075)
-    }
-}
-
-/// The values as exact big integers on a common binary scale.
-fn scaled(values: &[f64]) -> (Vec<BigInt>, i32) {
-    let dec: Vec<(i64, i32)> = values.iter().map(|&v| decode(v)).collect();
-    let scale = dec
-        .iter()
-        .filter(|d| d.0 != 0)
-        .map(|d| d.1)
-        .min()
-        .unwrap_or(0);
-    let ints = dec
-        .iter()
-        .map(|&(m, e)| {
-            if m == 0 {
-                BigInt::zero()
-            } else {
-                BigInt::from(m) << ((e - scale) as usize)
-            }
-        })
-        .collect();
-    (ints, scale)
-}
-
-/// The exact sign of the orientation of `(p, q, r)` (positive:
-/// anticlockwise, `r` left of `p -> q`).
-fn orient(p: P, q: P, r: P) -> i32 {
-    let (i, _) = scaled(&[p[0], p[1], q[0], q[1], r[0], r[1]]);
-    let v = (&i[2] - &i[0]) * (&i[5] - &i[1]) - (&i[3] - &i[1]) * (&i[4] - &i[0]);
-    if v.is_positive() {
-        1
-    } else if v.is_negative() {
-        -1
-    } else {
-        0
-    }
-}
 
 /// The exact winding number of `p` (not on the boundary) by the crossing
 /// rule with a horizontal ray: upward edges with `p` strictly left count
@@ -237,56 +160,6 @@ fn exact_s10(s: P, e: P, v: P) -> i32 {
         x
     } else {
         0
-    }
-}
-
-/// `x * 2^e` without intermediate overflow or underflow of the factor.
-fn ldexp(mut x: f64, mut e: i64) -> f64 {
-    while e > 1000 {
-        x *= 2f64.powi(1000);
-        e -= 1000;
-    }
-    while e < -1000 {
-        x *= 2f64.powi(-1000);
-        e += 1000;
-    }
-    x * 2f64.powi(e as i32)
-}
-
-/// A big integer as `(top, shift)` with `v ~= top * 2^shift`, `|top| < 2^61`.
-fn split(v: &BigInt) -> (f64, i64) {
-    let shift = (v.bits() as i64 - 60).max(0);
-    ((v >> (shift as usize)).to_f64().unwrap_or(f64::NAN), shift)
-}
-
-/// The exact distance from `p` to the closed segment `s0 - s1`, divided by
-/// `2^unit_exp` (so any magnitude of input gives a finite ratio), rounded
-/// to f64 only at the end.
-fn distance_to_segment(p: P, s0: P, s1: P, unit_exp: i64) -> f64 {
-    let (i, e) = scaled(&[p[0], p[1], s0[0], s0[1], s1[0], s1[1]]);
-    let e = i64::from(e);
-    let to_unit = |v: &BigInt| {
-        let (t, sh) = split(v);
-        ldexp(t, sh + e - unit_exp)
-    };
-    let (dx, dy) = (&i[4] - &i[2], &i[5] - &i[3]);
-    let (wx, wy) = (&i[0] - &i[2], &i[1] - &i[3]);
-    let len2 = &dx * &dx + &dy * &dy;
-    let dot = &dx * &wx + &dy * &wy;
-    let norm = |x: &BigInt, y: &BigInt| to_unit(x).hypot(to_unit(y));
-    if len2.is_zero() || dot.is_negative() {
-        norm(&wx, &wy)
-    } else if dot > len2 {
-        norm(&(&i[0] - &i[4]), &(&i[1] - &i[5]))
-    } else {
-        let cross = (&dx * &wy - &dy * &wx).abs();
-        let (ct, cs) = split(&cross);
-        let (mut lt, mut ls) = split(&len2);
-        if ls % 2 != 0 {
-            lt *= 2.0;
-            ls -= 1;
-        }
-        ldexp(ct / lt.sqrt(), cs - ls / 2 + e - unit_exp)
     }
 }
 

@@ -591,19 +591,17 @@ mod tests {
     use super::*;
     use crate::collection::elementary_intervals;
     use std::collections::BTreeMap;
+    use test_support::rng::Xorshift64;
 
     /// Keyed edges `(l, r, m)` on ranks, as `shape_with` builds them.
     type Keyed = Vec<(u32, u32, i32)>;
 
-    /// A small xorshift generator, so that the cases are reproducible.
-    struct Rng(u64);
+    /// The unit tests' xorshift generator, reduced to `0..n`.
+    struct Rng(Xorshift64);
 
     impl Rng {
         fn below(&mut self, n: usize) -> usize {
-            self.0 ^= self.0 << 13;
-            self.0 ^= self.0 >> 7;
-            self.0 ^= self.0 << 17;
-            (self.0 % n as u64) as usize
+            self.0.below(n as u64) as usize
         }
     }
 
@@ -679,7 +677,7 @@ mod tests {
     /// `merge_keyed` sums and sorts as a map does.
     #[test]
     fn merge_keyed_sums_in_key_order() {
-        let mut rng = Rng(0x9E37_79B9_7F4A_7C15);
+        let mut rng = Rng(Xorshift64::new(0x9E37_79B9_7F4A_7C15));
         for _ in 0..2_000 {
             let (sel, v) = random_case(&mut rng);
             let mut map: BTreeMap<(u32, u32), i32> = BTreeMap::new();
@@ -700,7 +698,7 @@ mod tests {
     /// removing, appending and sorting again.
     #[test]
     fn vertical_merge_matches_a_full_sort() {
-        let mut rng = Rng(0x2545_F491_4F6C_DD1D);
+        let mut rng = Rng(Xorshift64::new(0x2545_F491_4F6C_DD1D));
         let mut merged = 0;
         for _ in 0..5_000 {
             let (sel, v) = random_case(&mut rng);

@@ -205,7 +205,10 @@ mod tests {
     /// stand for one point.
     #[test]
     fn counts_exactly_and_covers_every_live_end() {
-        let mut rnd = crate::test_rng::below(0x2545_F491_4F6C_DD1Du64);
+        let mut rnd = {
+            let mut g = test_support::rng::Xorshift64::new(0x2545_F491_4F6C_DD1Du64);
+            move |n: u64| g.below(n)
+        };
         let mut events = 0;
         for _round in 0..40 {
             let mut passed: Option<Pt> = None;

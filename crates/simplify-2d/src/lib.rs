@@ -59,8 +59,6 @@ mod error;
 mod point;
 mod sweep;
 mod sweep_line;
-#[cfg(test)]
-mod test_rng;
 mod vertex_table;
 mod winding;
 

@@ -310,7 +310,10 @@ mod tests {
     /// predicates.
     #[test]
     fn matches_a_vector() {
-        let mut below = crate::test_rng::below(0x9E37_79B9_7F4A_7C15);
+        let mut below = {
+            let mut g = test_support::rng::Xorshift64::new(0x9E37_79B9_7F4A_7C15);
+            move |n: u64| g.below(n)
+        };
         let mut rnd = move |n: usize| below(n as u64) as usize;
         let mut line: SweepLine<u32> = SweepLine::default();
         let mut plain: Vec<u32> = Vec::new();

@@ -169,7 +169,10 @@ mod tests {
     /// plain map: every point in one place, counts exact.
     #[test]
     fn ahead_matches_a_plain_map_in_both_regimes() {
-        let mut rnd = crate::test_rng::below(0x2545_F491_4F6C_DD1Du64);
+        let mut rnd = {
+            let mut g = test_support::rng::Xorshift64::new(0x2545_F491_4F6C_DD1Du64);
+            move |n: u64| g.below(n)
+        };
         let mut a = Ahead::default();
         let mut plain: HashMap<Pt, u32> = HashMap::new();
         let mut spilled = false;
@@ -207,7 +210,10 @@ mod tests {
     /// repeats, against a plain map.
     #[test]
     fn matches_a_plain_map() {
-        let mut rnd = crate::test_rng::below(0x9E37_79B9_7F4A_7C15u64);
+        let mut rnd = {
+            let mut g = test_support::rng::Xorshift64::new(0x9E37_79B9_7F4A_7C15u64);
+            move |n: u64| g.below(n)
+        };
         let mut t = VertexTable::with_capacity(16);
         let mut ids: HashMap<Pt, u32> = HashMap::new();
         let mut ks: HashMap<Pt, u32> = HashMap::new();

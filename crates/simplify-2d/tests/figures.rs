@@ -6,6 +6,8 @@ mod common;
 use common::*;
 use simplify_2d::*;
 use std::collections::BTreeSet;
+use test_support::rng::Xorshift64Star;
+use test_support::shapes::regular_ngon;
 use topology::PolygonSet2;
 
 /// Samples points in the unit disc far from every cell edge and checks that
@@ -15,7 +17,7 @@ fn assert_rule_matches_oracle(input: &PolygonSet2, rule: FillRule, seed: u64) {
     let cells = cell_structure(input).unwrap();
     let shape = cells.shape_with(|w| rule.contains(*w));
     let segs = cell_segments(&cells);
-    let mut r = Rng::new(seed);
+    let mut r = Xorshift64Star::new(seed);
     let mut tested = 0;
     for _ in 0..400 {
         let p = r.in_disc();
@@ -225,14 +227,7 @@ fn coincident_loops() {
 }
 
 fn ngon(n: usize, rot_deg: f64) -> PolygonSet2 {
-    let rot = rot_deg.to_radians();
-    let pts: Vec<[f64; 2]> = (0..n)
-        .map(|i| {
-            let a = std::f64::consts::TAU * i as f64 / n as f64 + rot;
-            [a.cos(), a.sin()]
-        })
-        .collect();
-    polygon(&pts)
+    polygon(&regular_ngon(n, 1.0, rot_deg))
 }
 
 /// Table 7.4: the union of a regular n-gon and a copy rotated by alpha

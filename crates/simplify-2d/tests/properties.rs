@@ -17,6 +17,7 @@ mod common;
 use common::*;
 use proptest::prelude::*;
 use simplify_2d::*;
+use test_support::rng::Xorshift64Star;
 use topology::PolygonSet2;
 
 const D49: f64 = 1.5 * 562_949_953_421_312.0; // 1.5 * 2^49
@@ -120,7 +121,7 @@ fn check_oracle(input: &PolygonSet2, cells: &CellStructure<i32>, seed: u64) {
         .iter()
         .map(|r| cells.shape_with(|w| r.contains(*w)))
         .collect();
-    let mut rng = common::Rng::new(seed ^ 0xABCD);
+    let mut rng = Xorshift64Star::new(seed ^ 0xABCD);
     for _ in 0..40 {
         let p = rng.in_disc();
         if segs.iter().any(|&(a, b)| dist_f64(p, a, b) < 1e-9) {

@@ -207,6 +207,9 @@ pub(crate) fn check_shape_closure(
 mod tests {
     use super::*;
 
+    /// The unit cube. A local copy of `test_support::shapes::box_mesh`:
+    /// `test-support` depends on this crate, so here its meshes would be a
+    /// second, foreign `PolygonMesh` type.
     fn cube() -> PolygonMesh {
         let mut v = Vec::new();
         for i in 0..8u32 {

@@ -78,6 +78,9 @@ impl TriangleMesh {
 mod tests {
     use super::*;
 
+    /// The unit tetrahedron. A local copy of `test_support::shapes::tetra`:
+    /// `test-support` depends on this crate, so here its meshes would be a
+    /// second, foreign `TriangleMesh` type.
     fn tetra() -> TriangleMesh {
         TriangleMesh::new(
             vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]],

@@ -1,7 +1,7 @@
 //! Shared test helpers: input generators of section 7.7 (random topological
 //! polygons, polygonal stars, displacements), exact rational oracles
-//! (winding numbers, signed area, point-segment distance) and structural
-//! checks.
+//! (signed area, point-segment distance; the generator, orientation and
+//! winding number come from `test-support`) and structural checks.
 #![allow(dead_code)]
 
 use num_bigint::BigInt;
@@ -9,44 +9,14 @@ use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use robust_arith::y_at_x;
 use simplify_2d::CellStructure;
+use test_support::exact::orient;
+use test_support::rng::Xorshift64Star;
 use topology::PolygonSet2;
-
-/// A small deterministic generator (xorshift64*), so cases are reproducible
-/// from a seed without extra dependencies.
-pub struct Rng(pub u64);
-
-impl Rng {
-    pub fn new(seed: u64) -> Rng {
-        Rng(seed.wrapping_mul(0x9E37_79B9_7F4A_7C15) | 1)
-    }
-    pub fn next_u64(&mut self) -> u64 {
-        let mut x = self.0;
-        x ^= x >> 12;
-        x ^= x << 25;
-        x ^= x >> 27;
-        self.0 = x;
-        x.wrapping_mul(0x2545_F491_4F6C_DD1D)
-    }
-    /// Uniform in [0, 1).
-    pub fn f64(&mut self) -> f64 {
-        (self.next_u64() >> 11) as f64 / (1u64 << 53) as f64
-    }
-    /// A uniform random point in the unit disc.
-    pub fn in_disc(&mut self) -> [f64; 2] {
-        loop {
-            let x = 2.0 * self.f64() - 1.0;
-            let y = 2.0 * self.f64() - 1.0;
-            if x * x + y * y <= 1.0 {
-                return [x, y];
-            }
-        }
-    }
-}
 
 /// The random topological polygon of section 7.7: a cyclic sequence of `n`
 /// random points in the unit disc.
 pub fn random_polygon(n: usize, seed: u64) -> Vec<[f64; 2]> {
-    let mut r = Rng::new(seed);
+    let mut r = Xorshift64Star::new(seed);
     (0..n).map(|_| r.in_disc()).collect()
 }
 
@@ -84,35 +54,11 @@ pub fn q(v: f64) -> BigRational {
     BigRational::from_float(v).expect("finite")
 }
 
-/// Exact orientation sign of (a, b, p): > 0 when p is left of a -> b.
-pub fn orient(a: [f64; 2], b: [f64; 2], p: [f64; 2]) -> i32 {
-    let (ax, ay, bx, by, px, py) = (q(a[0]), q(a[1]), q(b[0]), q(b[1]), q(p[0]), q(p[1]));
-    let d = (bx - &ax) * (py - &ay) - (by - ay) * (px - ax);
-    if d.is_positive() {
-        1
-    } else if d.is_negative() {
-        -1
-    } else {
-        0
-    }
-}
-
 /// Exact winding number of point `p` with respect to a polygon set
 /// (crossing rule with half-open edges, exact orientation). `p` must not
 /// lie on an edge.
 pub fn winding_exact(set: &PolygonSet2, p: [f64; 2]) -> i32 {
-    let mut w = 0i32;
-    for e in set.edges() {
-        let (a, b) = set.edge_points(e);
-        if a[1] <= p[1] && b[1] > p[1] {
-            if orient(a, b, p) > 0 {
-                w += e.mult;
-            }
-        } else if a[1] > p[1] && b[1] <= p[1] && orient(a, b, p) < 0 {
-            w -= e.mult;
-        }
-    }
-    w
+    test_support::exact::winding(p, set) as i32
 }
 
 /// f64 winding number (for points far from every edge).

@@ -1,17 +1,20 @@
-//! Exact oracles in big-integer arithmetic: every f64 is an integer times a
-//! power of two, so a set of them scaled to a common exponent turns the
-//! orientation, distance and intersection formulas into exact integer
-//! arithmetic, rounded to f64 only when a figure is reported.
+//! Exact oracles, independent of the code under test: every f64 is an
+//! integer times a power of two, so a set of them scaled to a common
+//! exponent turns the orientation, distance and intersection formulas into
+//! exact integer arithmetic, rounded to f64 only when a figure is reported;
+//! rational arithmetic where a quotient is needed (volumes).
 
 use num_bigint::BigInt;
+use num_rational::BigRational;
 use num_traits::{Signed, ToPrimitive, Zero};
-use topology::PolygonSet2;
+use topology::{PolygonSet2, TriangleMesh};
 
 /// A 2D point.
 pub type P = [f64; 2];
 
-/// `(mantissa, exponent)` with `x = mantissa * 2^exponent` exactly.
-fn decode(x: f64) -> (i64, i32) {
+/// `(mantissa, exponent)` with `x = mantissa * 2^exponent` exactly (for
+/// finite `x`).
+pub fn decode(x: f64) -> (i64, i32) {
     let bits = x.to_bits();
     let sign = if bits >> 63 == 0 { 1 } else { -1 };
     let exp = ((bits >> 52) & 0x7ff) as i32;
@@ -59,13 +62,13 @@ pub fn ldexp(mut x: f64, mut e: i64) -> f64 {
 }
 
 /// A big integer as `(top, shift)`, `v ~= top * 2^shift`, `|top| < 2^61`.
-fn split(v: &BigInt) -> (f64, i64) {
+pub fn split(v: &BigInt) -> (f64, i64) {
     let shift = (v.bits() as i64 - 60).max(0);
     ((v >> (shift as usize)).to_f64().unwrap_or(f64::NAN), shift)
 }
 
 /// `v * 2^e` as f64.
-fn to_f64(v: &BigInt, e: i64) -> f64 {
+pub fn to_f64(v: &BigInt, e: i64) -> f64 {
     let (t, s) = split(v);
     ldexp(t, s + e)
 }
@@ -78,7 +81,8 @@ pub fn orient(p: P, q: P, r: P) -> i32 {
     sign(&v)
 }
 
-fn sign(v: &BigInt) -> i32 {
+/// The sign of `v` as -1, 0 or +1.
+pub fn sign(v: &BigInt) -> i32 {
     if v.is_positive() {
         1
     } else if v.is_negative() {
@@ -166,6 +170,31 @@ pub fn l_exp(max_abs: f64) -> i64 {
     i64::from(l.log2().round() as i32)
 }
 
+/// An f64 as an exact rational (`None` for NaN and infinities).
+pub fn rational(x: f64) -> Option<BigRational> {
+    BigRational::from_float(x)
+}
+
+/// The signed volume of a triangle mesh in exact rational arithmetic
+/// (divergence theorem), rounded to the nearest f64 once at the end; a
+/// non-finite coordinate counts as 0.
+pub fn triangle_mesh_volume(m: &TriangleMesh) -> f64 {
+    let q = |x: f64| rational(x).unwrap_or_else(BigRational::zero);
+    let mut six = BigRational::zero();
+    for t in &m.triangles {
+        let [a, b, c] = t.map(|i| m.vertices[i as usize].map(q));
+        let cross = [
+            &b[1] * &c[2] - &b[2] * &c[1],
+            &b[2] * &c[0] - &b[0] * &c[2],
+            &b[0] * &c[1] - &b[1] * &c[0],
+        ];
+        six += &a[0] * &cross[0] + &a[1] * &cross[1] + &a[2] * &cross[2];
+    }
+    (six / BigRational::from_integer(6.into()))
+        .to_f64()
+        .unwrap_or(f64::NAN)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -210,5 +239,21 @@ mod tests {
         assert_eq!(winding([1.0, 1.0], &sq), 1);
         assert_eq!(winding([3.0, 1.0], &sq), 0);
         assert_eq!(winding([1.0, 1.0], &sq.reversed()), -1);
+        assert_eq!(decode(0.75), (3 << 51, -53));
+        assert_eq!(decode(-0.0), (0, -1074));
+    }
+
+    #[test]
+    fn exact_volume_of_a_unit_tetrahedron() {
+        let t = TriangleMesh::new(
+            vec![
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.0, 0.0, 1.0],
+            ],
+            vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]],
+        );
+        assert_eq!(triangle_mesh_volume(&t), 1.0 / 6.0);
     }
 }

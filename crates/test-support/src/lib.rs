@@ -1,0 +1,24 @@
+//! Development-only support shared by the tests, `xtask`, the benches and
+//! the fuzz targets: seeded generators ([`rng`]), exact oracles in big
+//! integer and rational arithmetic ([`exact`]), floating-point measures
+//! such as winding numbers and volumes ([`measure`]) and the primitive
+//! shapes tests build again and again ([`shapes`]); with the feature
+//! `proptest`, coordinate strategies for property tests (`strategies`).
+//!
+//! Nothing here is part of Umbra's API. A library crate may take this crate
+//! only as a dev-dependency (the tidy test enforces it), so no test code can
+//! be reached from library code.
+//!
+//! Every generator keeps the exact algorithm of the copy it replaced, so a
+//! seed gives the same sequence as before and no corpus changed when the
+//! copies were merged; the different algorithms are kept as named variants.
+
+#![forbid(unsafe_code)]
+#![warn(missing_docs)]
+
+pub mod exact;
+pub mod measure;
+pub mod rng;
+pub mod shapes;
+#[cfg(feature = "proptest")]
+pub mod strategies;
