@@ -1,6 +1,6 @@
 //! File types by extension and the format-independent read/write entry
 //! points (the command-line tool goes through these). The extension decides
-//! the dimension (DESIGN.md): `.wkt` and `.geojson` are 2D polygon sets,
+//! the dimension: `.wkt` and `.geojson` are 2D polygon sets,
 //! `.obj` and `.off` are 3D meshes.
 
 use super::geojson::{read_geojson_file, write_geojson_file};
