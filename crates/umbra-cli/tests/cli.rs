@@ -464,11 +464,13 @@ fn usage_errors_exit_2() {
     let dir = temp_dir("usage");
     let a = write(&dir, "a.wkt", A_SQUARE);
     let a = a.to_str().unwrap();
+    let cube = examples().join("cube.obj");
+    let cube = cube.to_str().unwrap();
     let cases: Vec<Vec<&str>> = vec![
         vec![],
         vec!["frobnicate"],
         vec!["boolean"],
-        vec!["boolean", "xor", a, a, "-o", "o.wkt"],
+        vec!["boolean", "xor", cube, cube, "-o", "o.obj"],
         vec!["boolean", "union", a, a],
         vec!["boolean", "union", a, "-o", "o.wkt"],
         vec!["boolean", "union", a, a, "-o", "o.wkt", "--bogus"],

@@ -17,7 +17,7 @@ use umbra::{
     MeshReadOptions, MeshVariant, Operands, ReadOptions, SetCounts, Via,
 };
 
-/// Union, intersection, difference (or, via simplify, xor) of two files
+/// Union, intersection, difference or (2D only) xor of two files
 /// of the same dimension (.wkt/.geojson or .obj/.off).
 #[derive(clap::Args, Debug)]
 pub struct BooleanArgs {
@@ -56,7 +56,7 @@ enum OpArg {
     Intersection,
     /// A − B.
     Difference,
-    /// Symmetric difference (2D, with --via simplify only).
+    /// Symmetric difference (2D only).
     Xor,
 }
 
@@ -107,7 +107,7 @@ impl BooleanArgs {
             }
             if op == BooleanOp::Xor {
                 return Err(usage(
-                    "xor is only available for 2D files with --via simplify",
+                    "xor is for 2D files only (a 3D half-edge has no multiplicity for the doubled intersection curves)",
                 ));
             }
             self.run_3d(op, kinds[2])
@@ -116,11 +116,6 @@ impl BooleanArgs {
                 return Err(usage("--triangulate is for 3D files (.obj, .off) only"));
             }
             let via = match self.via {
-                ViaArg::Basic if op == BooleanOp::Xor => {
-                    return Err(usage(
-                        "xor needs --via simplify (the basic Boolean has union, intersection, difference)",
-                    ))
-                }
                 ViaArg::Basic => Via::Basic,
                 ViaArg::Simplify => Via::Simplify,
             };
