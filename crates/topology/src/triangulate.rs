@@ -1,0 +1,664 @@
+//! The triangulation of a facet by internal edges (section 4.8), used by
+//! the triangle-mesh variant of the 3D Boolean and by shape inspection:
+//! internal edges are added between vertices of the facet, so the
+//! original half-edges plus both half-edges of every internal edge form the
+//! triangles. Topology holds whatever the geometry; the geometry is as good
+//! as ear clipping in the facet's dominant projection plane can make it.
+//!
+//! Steps:
+//!
+//! 1. Chain the half-edges into loops (facet boundary closure makes this
+//!    always possible). Loops of one or two half-edges (`v->v`, or
+//!    `a->b->a`) are dropped: their half-edges balance among themselves, so
+//!    facet and shape boundary closure are unaffected.
+//! 2. Project onto the coordinate plane most perpendicular to the facet's
+//!    Newell normal, mirrored so that the facet's outer loops run
+//!    anticlockwise.
+//! 3. Loops of positive area are outer boundaries; the others are holes.
+//!    Each hole is bridged into the outer boundary its rightmost vertex sees
+//!    first along the +u ray (the scheme of Eberly's and the `earcut`
+//!    library's hole elimination), by an internal edge added as two
+//!    half-edges, one each way. A hole whose rightmost vertex is not inside
+//!    a region (the ray meets no boundary, or first meets one from outside)
+//!    bounds an inside-out region (section 4.7): a bridge would only drag
+//!    the region's triangles across the facet, so it is triangulated on its
+//!    own, mirrored.
+//! 4. Each outer polygon is ear-clipped: an ear `(a, b, c)` adds the
+//!    internal edge `c -> a` to the triangle and `a -> c` to the remaining
+//!    polygon. A valid ear (anticlockwise, no other vertex in it) is taken
+//!    first, then a degenerate (zero-area) one. When neither exists the
+//!    polygon is geometrically invalid, and the ear of smallest absolute
+//!    area is clipped; for a quadrilateral both diagonals are compared and
+//!    the one whose two triangles cover the smaller total area is taken
+//!    (figure 4.10). Every triangulation of a loop has the loop's winding
+//!    number everywhere (the internal edges cancel), so the covered area
+//!    beyond `|winding|` is exactly the overlap the figure minimises.
+//! 5. Ear clipping is optimal when every triangle faces the polygon's way
+//!    (the covered area is then the polygon's signed area, a lower bound
+//!    for any triangulation). Otherwise the polygon is geometrically
+//!    invalid, and a greedy choice of ears can extend the invalid region
+//!    far more than necessary (a figure eight can be clipped straight
+//!    across its crossing), so a polygon of at most `MAX_OPTIMAL`
+//!    vertices is re-triangulated by the exact minimum of the total
+//!    absolute triangle area over all its triangulations by internal edges
+//!    (section 4.8: "minimises how far any geometrically invalid region is
+//!    extended").
+
+use crate::{HalfEdge, PolygonMesh, TriangleMesh};
+use robust_arith::Point3;
+
+type P2 = [f64; 2];
+
+/// Triangulates one facet given as half-edges `(start, end)` between
+/// vertices of `positions` (section 4.8), appending triangles to `out`.
+///
+/// The triangles' half-edges are the facet's half-edges (minus loops of one
+/// or two half-edges, which balance by themselves) plus both half-edges of
+/// every internal edge, so a mesh of facets satisfying shape boundary
+/// closure stays closed. Half-edges referring to a vertex beyond
+/// `positions` make the facet invalid input: it is skipped (no triangles).
+///
+/// A valid facet gives non-overlapping triangles facing its way. An
+/// invalid one (figure 4.10) gives, for each of its polygons of up to 160
+/// vertices, the triangulation covering the least total area, i.e.
+/// extending the invalid region as little as possible, and triangulates
+/// inside-out loops lying outside every region on their own.
+pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &mut Vec<[u32; 3]>) {
+    let n = positions.len();
+    if half_edges
+        .iter()
+        .any(|&(s, e)| s as usize >= n || e as usize >= n)
+    {
+        return;
+    }
+    if half_edges.len() == 3 {
+        let [h0, h1, h2] = [half_edges[0], half_edges[1], half_edges[2]];
+        if h0.1 == h1.0 && h1.1 == h2.0 && h2.1 == h0.0 {
+            out.push([h0.0, h1.0, h2.0]);
+            return;
+        }
+    }
+    let Some(&(first, _)) = half_edges.iter().find(|&&(s, e)| s != e) else {
+        return; // only zero-length half-edges: each balances itself
+    };
+    // Newell normal from the half-edges (facet closure makes it the sum
+    // over loops), relative to one vertex for accuracy.
+    let o = positions[first as usize];
+    let rel = |v: u32| {
+        let p = positions[v as usize];
+        [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
+    };
+    let mut n = [0.0f64; 3];
+    for &(s, e) in half_edges {
+        let p = rel(s);
+        let q = rel(e);
+        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    let axis = if n[0].abs() > n[1].abs() && n[0].abs() > n[2].abs() {
+        0
+    } else if n[1].abs() > n[2].abs() {
+        1
+    } else {
+        2
+    };
+    let (iu, iv) = match axis {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    };
+    let (iu, iv) = if n[axis] < 0.0 { (iv, iu) } else { (iu, iv) };
+    let proj = |v: u32| {
+        let p = rel(v);
+        [p[iu], p[iv]]
+    };
+    let loops = chain_loops(half_edges, &proj);
+    let rings: Vec<Vec<(u32, P2)>> = loops
+        .iter()
+        .filter(|l| l.len() >= 3)
+        .map(|l| l.iter().map(|&v| (v, proj(v))).collect())
+        .collect();
+    if rings.is_empty() {
+        return;
+    }
+    for polygon in bridge_holes(rings) {
+        triangulate_polygon(polygon, out);
+    }
+}
+
+/// Polygons of at most this many vertices that ear clipping leaves with a
+/// reversed triangle are re-triangulated by the exact minimum-overlap
+/// recurrence (`O(n^3)` time, `O(n^2)` memory; invalid polygons are rare).
+const MAX_OPTIMAL: usize = 160;
+
+/// Triangulates one polygon (an outer boundary with its holes bridged in,
+/// or an inside-out loop on its own), appending triangles of vertex ids.
+fn triangulate_polygon(mut poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
+    // A polygon of negative area (an inside-out loop, section 4.7) is
+    // clipped mirrored, so that its ears are valid, and flipped back:
+    // reversing a ring and every triangle keeps the internal edges paired.
+    let flip = ring_area(&poly) < 0.0;
+    if flip {
+        poly.reverse();
+    }
+    let mut tris = Vec::with_capacity(poly.len().saturating_sub(2));
+    ear_clip(&poly, &mut tris);
+    let twice_area = |t: &[usize; 3]| orient(poly[t[0]].1, poly[t[1]].1, poly[t[2]].1);
+    if poly.len() <= MAX_OPTIMAL && tris.iter().any(|t| twice_area(t) < 0.0) {
+        // Figure 4.10 generalised: the triangulation covering the least
+        // total area, if it beats the ears.
+        let clipped: f64 = tris.iter().map(|t| twice_area(t).abs()).sum();
+        let (least, optimal) = min_overlap(&poly);
+        if least < clipped {
+            tris = optimal;
+        }
+    }
+    out.extend(tris.iter().map(|t| {
+        let [a, b, c] = t.map(|i| poly[i].0);
+        if flip {
+            [a, c, b]
+        } else {
+            [a, b, c]
+        }
+    }));
+}
+
+/// The triangulation of a polygon (as positions in `poly`) of least total
+/// absolute area, and twice that area, by the classic recurrence over
+/// sub-polygons `i..=j` (every internal edge splits a polygon in two, so
+/// these are all the triangulations by internal edges). Non-finite areas
+/// (garbage coordinates) never win a comparison, so the result is always a
+/// complete triangulation.
+fn min_overlap(poly: &[(u32, P2)]) -> (f64, Vec<[usize; 3]>) {
+    let n = poly.len();
+    let mut cost = vec![0.0f64; n * n];
+    let mut split = vec![0u32; n * n];
+    for len in 2..n {
+        for i in 0..n - len {
+            let j = i + len;
+            let (mut best, mut arg) = (f64::INFINITY, i + 1);
+            for k in i + 1..j {
+                let c = cost[i * n + k]
+                    + cost[k * n + j]
+                    + orient(poly[i].1, poly[k].1, poly[j].1).abs();
+                if c < best {
+                    best = c;
+                    arg = k;
+                }
+            }
+            cost[i * n + j] = best;
+            split[i * n + j] = arg as u32;
+        }
+    }
+    let mut tris = Vec::with_capacity(n.saturating_sub(2));
+    let mut stack = vec![(0, n - 1)];
+    while let Some((i, j)) = stack.pop() {
+        if j - i >= 2 {
+            let k = split[i * n + j] as usize;
+            tris.push([i, k, j]);
+            stack.push((k, j));
+            stack.push((i, k));
+        }
+    }
+    (cost[n - 1], tris)
+}
+
+/// Triangulates every facet of a polygon mesh (section 4.8). The result
+/// satisfies shape boundary closure whenever the input does.
+pub fn triangulate_mesh(mesh: &PolygonMesh) -> TriangleMesh {
+    let mut tris = Vec::new();
+    let mut hes = Vec::new();
+    let n = mesh.vertices.len() as u32;
+    for f in &mesh.facets {
+        hes.clear();
+        hes.extend(
+            f.half_edges
+                .iter()
+                .filter(|h| h.start < n && h.end < n)
+                .map(|&HalfEdge { start, end }| (start, end)),
+        );
+        triangulate_facet(&mesh.vertices, &hes, &mut tris);
+    }
+    TriangleMesh::new(mesh.vertices.clone(), tris)
+}
+
+/// Chains half-edges into closed loops of vertices. Where a vertex has
+/// several unused outgoing half-edges (the facet touches itself there), the
+/// one first clockwise from the way back along the incoming half-edge is
+/// taken, which traces each region with its interior on the left without
+/// crossing the other regions when the facet is valid. Every half-edge ends
+/// up in exactly one loop when the facet is closed; an open chain
+/// (impossible for closed facets) is returned as is.
+fn chain_loops(half_edges: &[(u32, u32)], proj: &impl Fn(u32) -> P2) -> Vec<Vec<u32>> {
+    let mut by_start: Vec<u32> = (0..half_edges.len() as u32).collect();
+    by_start.sort_by_key(|&i| (half_edges[i as usize].0, i));
+    let mut used = vec![false; half_edges.len()];
+    let mut loops = Vec::new();
+    for first in 0..half_edges.len() {
+        if used[first] {
+            continue;
+        }
+        used[first] = true;
+        let start = half_edges[first].0;
+        if half_edges[first].1 == start {
+            continue; // a zero-length half-edge balances itself
+        }
+        let mut ring = vec![start];
+        let mut from = start;
+        let mut at = half_edges[first].1;
+        while at != start {
+            let lo = by_start.partition_point(|&i| half_edges[i as usize].0 < at);
+            let mut cands = by_start[lo..]
+                .iter()
+                .take_while(|&&i| half_edges[i as usize].0 == at)
+                .filter(|&&i| !used[i as usize] && half_edges[i as usize].1 != at)
+                .copied();
+            let Some(mut best) = cands.next() else {
+                break;
+            };
+            let rest: Vec<u32> = cands.collect();
+            if !rest.is_empty() {
+                let pa = proj(at);
+                let back = proj(from);
+                let back_ang = (back[1] - pa[1]).atan2(back[0] - pa[0]);
+                let cw = |i: u32| {
+                    let w = proj(half_edges[i as usize].1);
+                    let a = (w[1] - pa[1]).atan2(w[0] - pa[0]);
+                    let mut d = back_ang - a;
+                    while d <= 0.0 {
+                        d += std::f64::consts::TAU;
+                    }
+                    if d.is_finite() {
+                        d
+                    } else {
+                        f64::INFINITY
+                    }
+                };
+                let mut best_d = cw(best);
+                for i in rest {
+                    let d = cw(i);
+                    if d < best_d {
+                        best = i;
+                        best_d = d;
+                    }
+                }
+            }
+            used[best as usize] = true;
+            ring.push(at);
+            from = at;
+            at = half_edges[best as usize].1;
+        }
+        loops.push(ring);
+    }
+    loops
+}
+
+#[inline]
+fn orient(a: P2, b: P2, c: P2) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+fn ring_area(r: &[(u32, P2)]) -> f64 {
+    let mut s = 0.0;
+    for i in 0..r.len() {
+        let p = r[i].1;
+        let q = r[(i + 1) % r.len()].1;
+        s += p[0] * q[1] - p[1] * q[0];
+    }
+    s / 2.0
+}
+
+/// Merges every hole inside a region into an outer polygon by bridges
+/// (two opposite half-edges each) and returns the outer polygons followed
+/// by the holes left on their own (inside-out regions).
+fn bridge_holes(rings: Vec<Vec<(u32, P2)>>) -> Vec<Vec<(u32, P2)>> {
+    let areas: Vec<f64> = rings.iter().map(|r| ring_area(r)).collect();
+    let mut outer_idx: Vec<usize> = (0..rings.len()).filter(|&i| areas[i] > 0.0).collect();
+    if outer_idx.is_empty() {
+        // An inside-out or degenerate facet: the loop of largest extent
+        // plays the outer boundary.
+        let mut best = 0;
+        for i in 1..rings.len() {
+            if areas[i].abs() > areas[best].abs() {
+                best = i;
+            }
+        }
+        outer_idx.push(best);
+    }
+    let mut is_outer = vec![false; rings.len()];
+    for &i in &outer_idx {
+        is_outer[i] = true;
+    }
+    let rightmost = |r: &[(u32, P2)]| {
+        let mut k = 0;
+        for i in 1..r.len() {
+            let (p, q) = (r[i].1, r[k].1);
+            if p[0] > q[0] || (p[0] == q[0] && p[1] > q[1]) {
+                k = i;
+            }
+        }
+        k
+    };
+    let mut holes: Vec<(usize, usize)> = (0..rings.len())
+        .filter(|&i| !is_outer[i])
+        .map(|i| (i, rightmost(&rings[i])))
+        .collect();
+    // Rightmost holes first, so a hole further left may bridge into one
+    // already merged (its edges are then part of the outer polygon).
+    holes.sort_by(|&(i, ki), &(j, kj)| {
+        let (p, q) = (rings[i][ki].1, rings[j][kj].1);
+        q[0].total_cmp(&p[0])
+            .then(q[1].total_cmp(&p[1]))
+            .then(i.cmp(&j))
+    });
+    let mut outers: Vec<Vec<(u32, P2)>> = outer_idx.iter().map(|&i| rings[i].clone()).collect();
+    let mut alone = Vec::new();
+    for (h, k) in holes {
+        let hole = &rings[h];
+        let m = hole[k].1;
+        let Some((oi, pi)) = find_bridge(&outers, m) else {
+            alone.push(hole.clone());
+            continue;
+        };
+        let outer = &mut outers[oi];
+        let mut merged = Vec::with_capacity(outer.len() + hole.len() + 2);
+        merged.extend_from_slice(&outer[..=pi]);
+        for t in 0..hole.len() {
+            merged.push(hole[(k + t) % hole.len()]);
+        }
+        merged.push(hole[k]);
+        merged.push(outer[pi]);
+        merged.extend_from_slice(&outer[pi + 1..]);
+        *outer = merged;
+    }
+    outers.extend(alone);
+    outers
+}
+
+/// The outer polygon and vertex a hole's rightmost point `m` is bridged
+/// to: the nearest boundary crossing of the ray from `m` in +u, its
+/// endpoint of larger u, or a vertex inside the triangle (m, crossing,
+/// endpoint) making the smallest angle with the ray. `None` when `m` is
+/// not inside a region: the ray meets no boundary, or meets a boundary
+/// going down (entering a region from outside) strictly first.
+fn find_bridge(outers: &[Vec<(u32, P2)>], m: P2) -> Option<(usize, usize)> {
+    let mut best: Option<(f64, usize, usize)> = None; // (crossing u, outer, vertex)
+    let mut entering = f64::INFINITY;
+    for (oi, r) in outers.iter().enumerate() {
+        for i in 0..r.len() {
+            let p = r[i].1;
+            let q = r[(i + 1) % r.len()].1;
+            if p[1] == q[1] || m[1] < p[1].min(q[1]) || m[1] > p[1].max(q[1]) {
+                continue;
+            }
+            // Exact at the endpoints, so that the two edges at a vertex on
+            // the ray cross it at the same u.
+            let x = if m[1] == p[1] {
+                p[0]
+            } else if m[1] == q[1] {
+                q[0]
+            } else {
+                p[0] + (m[1] - p[1]) * (q[0] - p[0]) / (q[1] - p[1])
+            };
+            if x < m[0] {
+                continue;
+            }
+            if p[1] < q[1] {
+                // Edges going up cross the +u ray on the right of an
+                // anticlockwise outer boundary.
+                if best.is_none_or(|(bx, _, _)| x < bx) {
+                    let v = if p[0] > q[0] { i } else { (i + 1) % r.len() };
+                    best = Some((x, oi, v));
+                }
+            } else {
+                entering = entering.min(x);
+            }
+        }
+    }
+    let (qx, oi, mut vi) = best?;
+    if entering < qx {
+        return None;
+    }
+    // Refine: a vertex inside the triangle (m, (qx, m.v), candidate) may
+    // block the bridge; the one at the smallest angle to the ray does not.
+    let r = &outers[oi];
+    let c = r[vi].1;
+    let (t0, t1, t2) = if m[1] < c[1] {
+        (m, [qx, m[1]], c)
+    } else {
+        ([qx, m[1]], m, c)
+    };
+    let mut tan_min = f64::INFINITY;
+    for (i, &(_, p)) in r.iter().enumerate() {
+        if p[0] >= m[0] && p[0] <= c[0] && p[0] != m[0] && p != c && in_triangle(t0, t1, t2, p) {
+            let tan = (m[1] - p[1]).abs() / (p[0] - m[0]);
+            if tan < tan_min || (tan == tan_min && p[0] < r[vi].1[0]) {
+                tan_min = tan;
+                vi = i;
+            }
+        }
+    }
+    Some((oi, vi))
+}
+
+/// Whether `p` lies in the closed triangle `(a, b, c)` of either
+/// orientation.
+#[inline]
+fn in_triangle(a: P2, b: P2, c: P2, p: P2) -> bool {
+    let d1 = orient(a, b, p);
+    let d2 = orient(b, c, p);
+    let d3 = orient(c, a, p);
+    (d1 >= 0.0 && d2 >= 0.0 && d3 >= 0.0) || (d1 <= 0.0 && d2 <= 0.0 && d3 <= 0.0)
+}
+
+/// Ear clipping of one polygon (possibly with repeated vertices from
+/// bridges, possibly self-overlapping), as triangles of positions in `poly`.
+fn ear_clip(poly: &[(u32, P2)], out: &mut Vec<[usize; 3]>) {
+    let n = poly.len();
+    if n < 3 {
+        return; // one or two half-edges balance by themselves
+    }
+    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
+    let mut alive = vec![true; n];
+    let mut remaining = n;
+    let mut cur = 0;
+    let pos = |i: usize| poly[i].1;
+    while remaining > 3 {
+        if remaining == 4 {
+            // Figure 4.10: of the two diagonals take the one whose
+            // triangles cover less area (no more than the quadrilateral
+            // when it is valid, else the smaller overlap).
+            let a = cur;
+            let b = next[a];
+            let c = next[b];
+            let d = next[c];
+            let (pa, pb, pc, pd) = (pos(a), pos(b), pos(c), pos(d));
+            let ac_valid = orient(pa, pb, pc) > 0.0 && orient(pa, pc, pd) > 0.0;
+            let bd_valid = orient(pb, pc, pd) > 0.0 && orient(pb, pd, pa) > 0.0;
+            let ac = orient(pa, pb, pc).abs() + orient(pa, pc, pd).abs();
+            let bd = orient(pb, pc, pd).abs() + orient(pb, pd, pa).abs();
+            let use_ac = if ac_valid != bd_valid {
+                ac_valid
+            } else {
+                ac <= bd
+            };
+            let (p, q, r, s) = if use_ac { (a, b, c, d) } else { (b, c, d, a) };
+            out.push([p, q, r]);
+            out.push([p, r, s]);
+            return;
+        }
+        // Pass 1: a valid ear; pass 2: a degenerate one; pass 3: the
+        // smallest absolute area.
+        let mut chosen = None;
+        let mut degenerate = None;
+        let mut smallest: Option<(f64, usize)> = None;
+        let mut i = cur;
+        for _ in 0..remaining {
+            let (a, c) = (prev[i], next[i]);
+            let (pa, pb, pc) = (pos(a), pos(i), pos(c));
+            let area = orient(pa, pb, pc);
+            if area > 0.0 {
+                let mut empty = true;
+                let mut j = next[c];
+                while j != a {
+                    let p = pos(j);
+                    if p != pa && p != pb && p != pc && in_triangle(pa, pb, pc, p) {
+                        empty = false;
+                        break;
+                    }
+                    j = next[j];
+                }
+                if empty {
+                    chosen = Some(i);
+                    break;
+                }
+            } else if area == 0.0 && degenerate.is_none() {
+                degenerate = Some(i);
+            }
+            if smallest.is_none_or(|(s, _)| area.abs() < s) {
+                smallest = Some((area.abs(), i));
+            }
+            i = next[i];
+        }
+        let ear = chosen
+            .or(degenerate)
+            .or(smallest.map(|s| s.1))
+            .unwrap_or(cur);
+        let (a, c) = (prev[ear], next[ear]);
+        out.push([a, ear, c]);
+        alive[ear] = false;
+        next[a] = c;
+        prev[c] = a;
+        remaining -= 1;
+        cur = c;
+    }
+    let a = cur;
+    let b = next[a];
+    let c = next[b];
+    debug_assert!(alive[a] && alive[b] && alive[c]);
+    out.push([a, b, c]);
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn ring(n: usize) -> Vec<(u32, u32)> {
+        (0..n as u32).map(|i| (i, (i + 1) % n as u32)).collect()
+    }
+
+    /// The triangles' half-edges minus the facet's must be symmetric
+    /// (internal edges come in opposite pairs).
+    fn balance(tris: &[[u32; 3]], hes: &[(u32, u32)]) -> bool {
+        let mut count = std::collections::HashMap::new();
+        for t in tris {
+            for (s, e) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
+                *count.entry((s, e)).or_insert(0i32) += 1;
+            }
+        }
+        for &(s, e) in hes {
+            *count.entry((s, e)).or_insert(0) -= 1;
+        }
+        count
+            .iter()
+            .all(|(&(s, e), &c)| s == e || c == count.get(&(e, s)).copied().unwrap_or(0))
+    }
+
+    #[test]
+    fn convex_and_concave_polygons_give_n_minus_2_ccw_triangles() {
+        let pts: Vec<Point3> = vec![
+            [0.0, 0.0, 0.0],
+            [4.0, 0.0, 0.0],
+            [4.0, 4.0, 0.0],
+            [2.0, 1.0, 0.0],
+            [0.0, 4.0, 0.0],
+        ];
+        let hes = ring(5);
+        let mut t = Vec::new();
+        triangulate_facet(&pts, &hes, &mut t);
+        assert_eq!(t.len(), 3);
+        let mut area = 0.0;
+        for tri in &t {
+            let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
+            let o = orient(a, b, c);
+            assert!(o > 0.0, "{t:?}");
+            area += o / 2.0;
+        }
+        assert_eq!(area, 16.0 - 6.0);
+        assert!(balance(&t, &hes));
+    }
+
+    #[test]
+    fn facet_with_hole_is_bridged() {
+        let pts: Vec<Point3> = vec![
+            [0.0, 0.0, 1.0],
+            [4.0, 0.0, 1.0],
+            [4.0, 4.0, 1.0],
+            [0.0, 4.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [3.0, 1.0, 1.0],
+            [3.0, 3.0, 1.0],
+            [1.0, 3.0, 1.0],
+        ];
+        let mut hes = ring(4);
+        hes.extend([(4, 7), (7, 6), (6, 5), (5, 4)]);
+        let mut t = Vec::new();
+        triangulate_facet(&pts, &hes, &mut t);
+        assert_eq!(t.len(), 8);
+        let mut area = 0.0;
+        for tri in &t {
+            let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
+            let o = orient(a, b, c);
+            assert!(o > 0.0, "{t:?}");
+            area += o / 2.0;
+        }
+        assert_eq!(area, 12.0);
+    }
+
+    fn total_abs_area(pts: &[Point3], t: &[[u32; 3]]) -> f64 {
+        t.iter()
+            .map(|tri| {
+                let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
+                orient(a, b, c).abs() / 2.0
+            })
+            .sum()
+    }
+
+    #[test]
+    fn concave_quadrilateral_takes_the_inner_diagonal() {
+        let pts: Vec<Point3> = vec![
+            [0.0, 0.0, 0.0],
+            [4.0, 0.0, 0.0],
+            [0.0, 2.0, 0.0],
+            [1.0, 1.0, 0.0],
+        ];
+        let mut t = Vec::new();
+        triangulate_facet(&pts, &ring(4), &mut t);
+        assert_eq!(total_abs_area(&pts, &t), 3.0);
+        assert!(balance(&t, &ring(4)));
+    }
+
+    #[test]
+    fn figure_4_10_prefers_the_smaller_overlap() {
+        // A self-overlapping quadrilateral (bow tie): diagonal a-c gives
+        // triangles of areas 2 + 1.5, diagonal b-d 3.5 + 4.
+        let pts: Vec<Point3> = vec![
+            [0.0, 0.0, 0.0],
+            [4.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [3.0, 2.0, 0.0],
+        ];
+        for rot in 0..4 {
+            let hes: Vec<(u32, u32)> = (0..4u32)
+                .map(|i| ((i + rot) % 4, (i + rot + 1) % 4))
+                .collect();
+            let mut t = Vec::new();
+            triangulate_facet(&pts, &hes, &mut t);
+            assert_eq!(t.len(), 2);
+            assert_eq!(total_abs_area(&pts, &t), 3.5);
+            assert!(balance(&t, &hes));
+        }
+    }
+}
