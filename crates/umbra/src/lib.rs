@@ -15,8 +15,13 @@
 //!   [`from_geo`]. Rings are read by role by default (outer rings enclose
 //!   positively, holes negatively, as GIS data intends) or exactly as
 //!   written with [`RingOrientation::AsWritten`].
-//! - [`check_polygon_set`]: topological validity, coordinate validity and
-//!   geometric-validity hints (exact count of crossing edge pairs).
+//! - Inspection (from the `topology` crate, on the exact predicates
+//!   [`orient2d`] and [`orient3d`]): [`check_polygon_set`] (topological
+//!   validity, coordinate validity, exact count of crossing edge pairs),
+//!   [`check_mesh`] (2-manifoldness, exact self-intersecting facet pairs,
+//!   signed volume, bounding box), also as methods of the shapes
+//!   (`mesh.check()`, `mesh.signed_volume()`, `mesh.bounding_box()`,
+//!   `mesh.self_intersections()`, `mesh.manifold_report()`).
 //! - [`UmbraError`]: every error names the file and the problem on one
 //!   line.
 //!
@@ -49,24 +54,23 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
-#[cfg(feature = "io")]
-mod check;
 mod error;
 #[cfg(feature = "io")]
 mod io;
-mod mesh_check;
-mod predicates;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput, Operand};
 pub use boolean_3d::{
     boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
 };
-#[cfg(feature = "io")]
-pub use check::{check_polygon_set, CheckReport};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
-pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
-pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
+pub use robust_arith::{
+    orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,
+};
 pub use simplify_2d::{FillRule, Simplified, SimplifyError};
+pub use topology::{
+    check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, CheckReport,
+    EdgeUse, ManifoldReport, MeshCheckReport, RingIndex, RingSide,
+};
 pub use topology::{Edge2, Facet, HalfEdge, PolygonMesh, PolygonSet2, TopologyError, TriangleMesh};
