@@ -2,17 +2,22 @@
 //! phase of the self-intersection test. Built by median splits on the
 //! longest axis of the boxes' centres (`O(n log n)`, `O(n)` memory); a
 //! query visits the boxes overlapping one box in `O(log n + k)` for boxes
-//! that are not themselves mutually overlapping in bulk.
+//! that are not themselves mutually overlapping in bulk; the queries of
+//! all boxes visit each overlapping pair once.
 
 use robust_arith::Point3;
 
 /// Boxes per leaf.
 const LEAF: usize = 4;
 
-/// A node: its box and either two children or a range of `order`.
+/// A node: its box, the range of `order` below it, and either two
+/// children or (a leaf) that range itself.
 struct Node {
     lo: Point3,
     hi: Point3,
+    /// The end of the node's range of `order` (its start is implied by
+    /// the traversal and not needed).
+    end: u32,
     /// Children (`left`, `left + 1`) when `count == 0`, else the first
     /// entry of `order`.
     first: u32,
@@ -44,6 +49,7 @@ impl Bvh {
         bvh.nodes.push(Node {
             lo: [0.0; 3],
             hi: [0.0; 3],
+            end: 0,
             first: 0,
             count: 0,
         });
@@ -68,6 +74,7 @@ impl Bvh {
             }
             bvh.nodes[node].lo = lo;
             bvh.nodes[node].hi = hi;
+            bvh.nodes[node].end = end as u32;
             if ids.len() <= LEAF {
                 bvh.nodes[node].first = start as u32;
                 bvh.nodes[node].count = ids.len() as u32;
@@ -83,6 +90,7 @@ impl Bvh {
                 bvh.nodes.push(Node {
                     lo: [0.0; 3],
                     hi: [0.0; 3],
+                    end: 0,
                     first: 0,
                     count: 0,
                 });
@@ -94,20 +102,24 @@ impl Bvh {
         bvh
     }
 
-    /// Calls `visit` with every box id whose box meets `query` (closed).
-    pub(super) fn query(
-        &self,
-        boxes: &[[Point3; 2]],
-        query: &[Point3; 2],
-        mut visit: impl FnMut(u32),
-    ) {
-        if self.nodes.is_empty() {
+    /// The box ids in the hierarchy's order: position `p` holds box
+    /// `order()[p]`.
+    pub(super) fn order(&self) -> &[u32] {
+        &self.order
+    }
+
+    /// Calls `visit` with every box id at a position after `pos` (in
+    /// [`Bvh::order`]) whose box meets box `order()[pos]` (closed): called
+    /// for every position, this visits each overlapping pair exactly once.
+    pub(super) fn query_after(&self, boxes: &[[Point3; 2]], pos: usize, mut visit: impl FnMut(u32)) {
+        let Some(&me) = self.order.get(pos) else {
             return;
-        }
+        };
+        let query = &boxes[me as usize];
         let mut stack = vec![0u32];
         while let Some(n) = stack.pop() {
             let node = &self.nodes[n as usize];
-            if !overlap(&[node.lo, node.hi], query) {
+            if node.end as usize <= pos + 1 || !overlap(&[node.lo, node.hi], query) {
                 continue;
             }
             if node.count == 0 {
@@ -115,7 +127,7 @@ impl Bvh {
                 stack.push(node.first + 1);
             } else {
                 let (s, e) = (node.first as usize, (node.first + node.count) as usize);
-                for &i in &self.order[s..e] {
+                for &i in &self.order[s.max(pos + 1)..e] {
                     if overlap(&boxes[i as usize], query) {
                         visit(i);
                     }
@@ -150,16 +162,23 @@ mod tests {
             }
         }
         let bvh = Bvh::new(&boxes);
-        for q in &boxes {
-            let mut got = Vec::new();
-            bvh.query(&boxes, q, |i| got.push(i));
-            got.sort_unstable();
-            let want: Vec<u32> = (0..boxes.len() as u32)
-                .filter(|&i| overlap(&boxes[i as usize], q))
-                .collect();
-            assert_eq!(got, want);
+        let mut got = Vec::new();
+        for pos in 0..boxes.len() {
+            let i = bvh.order()[pos];
+            bvh.query_after(&boxes, pos, |j| got.push((i.min(j), i.max(j))));
         }
+        got.sort_unstable();
+        let mut want = Vec::new();
+        for i in 0..boxes.len() as u32 {
+            for j in i + 1..boxes.len() as u32 {
+                if overlap(&boxes[i as usize], &boxes[j as usize]) {
+                    want.push((i, j));
+                }
+            }
+        }
+        // Every overlapping pair exactly once.
+        assert_eq!(got, want);
         let empty = Bvh::new(&[]);
-        empty.query(&[], &boxes[0], |_| panic!("no boxes"));
+        empty.query_after(&[], 0, |_| panic!("no boxes"));
     }
 }

@@ -449,11 +449,12 @@ pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
     let bvh = Bvh::new(&boxes);
     let mut hits: Vec<[u32; 2]> = (0..tris.len())
         .into_par_iter()
-        .fold(FacetPairs::default, |mut found, i| {
-            let t = &tris[i];
-            bvh.query(&boxes, &boxes[i], |j| {
+        .fold(FacetPairs::default, |mut found, pos| {
+            let i = bvh.order()[pos];
+            let t = &tris[i as usize];
+            bvh.query_after(&boxes, pos, |j| {
                 let u = &tris[j as usize];
-                if j as usize > i && u.facet != t.facet && improper(t, u) {
+                if u.facet != t.facet && improper(t, u) {
                     found.push([t.facet.min(u.facet), t.facet.max(u.facet)]);
                 }
             });
