@@ -230,7 +230,12 @@ mod tests {
             Ordering::Equal
         );
         assert_eq!(
-            orient3d([0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, f64::INFINITY]),
+            orient3d(
+                [0.0; 3],
+                [1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.0, 0.0, f64::INFINITY]
+            ),
             Ordering::Equal
         );
     }

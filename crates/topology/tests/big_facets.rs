@@ -46,10 +46,7 @@ fn a_30000_sided_cylinder_is_valid_and_checked_quickly() {
     let v = r.signed_volume.unwrap();
     let want = prism_volume(n, 1.0, 2.0);
     assert!((v - want).abs() <= 1e-9 * want, "{v} vs {want}");
-    assert_eq!(
-        r.bounding_box.map(|b| [b[0][2], b[1][2]]),
-        Some([0.0, 2.0])
-    );
+    assert_eq!(r.bounding_box.map(|b| [b[0][2], b[1][2]]), Some([0.0, 2.0]));
 }
 
 #[test]
@@ -70,8 +67,12 @@ fn a_big_cylinder_with_a_dent_through_the_far_side_is_found() {
     // Facet ids: 0 bottom, 1 top, 2 + i the side quad from vertex i. The
     // dented quads are 2 (0 -> 1) and 2 + n - 1 (n-1 -> 0).
     let dented = [2, n + 1];
-    assert!(pairs.iter().all(|p| p.iter().any(|f| dented.contains(f))
-        || p.contains(&0)), "{pairs:?}");
+    assert!(
+        pairs
+            .iter()
+            .all(|p| p.iter().any(|f| dented.contains(f)) || p.contains(&0)),
+        "{pairs:?}"
+    );
     assert!(pairs.iter().all(|p| !p.contains(&1)), "{pairs:?}");
     // The far side around x = -1 is crossed: the side quad at angle pi.
     let far = 2 + n / 2;

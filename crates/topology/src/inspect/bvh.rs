@@ -111,7 +111,12 @@ impl Bvh {
     /// Calls `visit` with every box id at a position after `pos` (in
     /// [`Bvh::order`]) whose box meets box `order()[pos]` (closed): called
     /// for every position, this visits each overlapping pair exactly once.
-    pub(super) fn query_after(&self, boxes: &[[Point3; 2]], pos: usize, mut visit: impl FnMut(u32)) {
+    pub(super) fn query_after(
+        &self,
+        boxes: &[[Point3; 2]],
+        pos: usize,
+        mut visit: impl FnMut(u32),
+    ) {
         let Some(&me) = self.order.get(pos) else {
             return;
         };

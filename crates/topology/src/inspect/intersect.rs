@@ -301,7 +301,6 @@ fn improper(t: &Tri, u: &Tri) -> bool {
     }
 }
 
-
 /// Facets with more half-edges than this are triangulated by halving when
 /// they are one strictly convex loop (module docs).
 pub(super) const BIG_FACET: usize = 64;
@@ -404,6 +403,12 @@ fn triangulate_for_test(positions: &[Point3], hes: &[(u32, u32)], out: &mut Vec<
 /// `[smaller, larger]`. Requires every index in range and every coordinate
 /// finite (the caller checks).
 pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
+    pairs_with(mesh, true)
+}
+
+/// [`self_intersecting_pairs`], big convex facets halved or not (the tests
+/// compare the two).
+fn pairs_with(mesh: &PolygonMesh, halving: bool) -> Vec<[u32; 2]> {
     let id = weld(&mesh.vertices);
     // Every facet's triangles with welded corners; the zero-area ones only
     // record the vertices they place inside a segment.
@@ -415,7 +420,11 @@ pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
         buf.clear();
         hes.clear();
         hes.extend(f.half_edges.iter().map(|h| (h.start, h.end)));
-        triangulate_for_test(&mesh.vertices, &hes, &mut buf);
+        if halving {
+            triangulate_for_test(&mesh.vertices, &hes, &mut buf);
+        } else {
+            triangulate_facet(&mesh.vertices, &hes, &mut buf);
+        }
         for &t in &buf {
             let v = t.map(|i| id[i as usize]);
             let p = v.map(|i| mesh.vertices[i as usize]);
@@ -492,7 +501,6 @@ impl FacetPairs {
     }
 }
 
-
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -567,10 +575,7 @@ mod tests {
     fn mesh(v: &[Point3], loops: &[&[u32]]) -> PolygonMesh {
         PolygonMesh::new(
             v.to_vec(),
-            loops
-                .iter()
-                .map(|l| crate::Facet::from_loop(l))
-                .collect(),
+            loops.iter().map(|l| crate::Facet::from_loop(l)).collect(),
         )
     }
 
@@ -791,6 +796,124 @@ mod tests {
         );
     }
 
+    /// A prism over a polygon in the plane z = 0 (loop `ring` of 2D
+    /// points, anticlockwise), from z = 0 to `h`, moved by `off`.
+    fn prism(ring: &[[f64; 2]], h: f64, off: Point3) -> (Vec<Point3>, Vec<Vec<u32>>) {
+        let n = ring.len() as u32;
+        let mut v = Vec::new();
+        for z in [0.0, h] {
+            v.extend(
+                ring.iter()
+                    .map(|p| [p[0] + off[0], p[1] + off[1], z + off[2]]),
+            );
+        }
+        let mut f = vec![(0..n).rev().collect::<Vec<u32>>(), (n..2 * n).collect()];
+        for i in 0..n {
+            let j = (i + 1) % n;
+            f.push(vec![i, j, n + j, n + i]);
+        }
+        (v, f)
+    }
+
+    #[test]
+    fn convexity_is_decided_exactly() {
+        let circle = |n: usize, turns: usize| -> Vec<Point3> {
+            (0..n)
+                .map(|i| {
+                    let t = std::f64::consts::TAU * (turns * i) as f64 / n as f64;
+                    [t.cos(), t.sin(), 0.0]
+                })
+                .collect()
+        };
+        let ring: Vec<u32> = (0..101).collect();
+        assert!(strictly_convex(&ring, &circle(101, 1), (0, 1)));
+        // Clockwise is convex too; the other projections collapse.
+        let rev: Vec<u32> = ring.iter().rev().copied().collect();
+        assert!(strictly_convex(&rev, &circle(101, 1), (0, 1)));
+        assert!(!strictly_convex(&ring, &circle(101, 1), (1, 2)));
+        // A star polygon {101/2}: every corner turns the same way, twice
+        // round.
+        assert!(!strictly_convex(&ring, &circle(101, 2), (0, 1)));
+        // Three collinear corners: not strictly convex.
+        let mut sq: Vec<Point3> = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [2.0, 0.0, 0.0]];
+        sq.extend([[2.0, 2.0, 0.0], [0.0, 2.0, 0.0]]);
+        assert!(!strictly_convex(&[0, 1, 2, 3, 4], &sq, (0, 1)));
+        assert_eq!(single_loop(&[(0, 1), (1, 2), (2, 0)]), Some(vec![0, 1, 2]));
+        assert_eq!(single_loop(&[(0, 1), (1, 0), (2, 3), (3, 2)]), None);
+        assert_eq!(single_loop(&[(0, 1), (1, 2), (2, 0), (0, 2)]), None);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Big convex caps halved give the same facet pairs as section
+        /// 4.8's triangulation (a fan): two prisms over random convex
+        /// polygons of 65 to 140 vertices (on a grid, so degenerate
+        /// contacts occur), the second shifted to cross, touch or miss
+        /// the first.
+        #[test]
+        fn halving_big_convex_caps_changes_no_pair(
+            n in 65usize..140,
+            m in 65usize..140,
+            dx in -12i32..=12,
+            dz in -2i32..=6,
+            r in 4u32..9,
+        ) {
+            let poly = |n: usize, r: f64| -> Vec<[f64; 2]> {
+                let mut pts: Vec<[f64; 2]> = (0..n)
+                    .map(|i| {
+                        let t = std::f64::consts::TAU * i as f64 / n as f64;
+                        [(r * t.cos() * 64.0).round() / 8.0, (r * t.sin() * 64.0).round() / 8.0]
+                    })
+                    .collect();
+                pts.dedup();
+                // Keep the strictly convex corners only (grid rounding).
+                let mut hull: Vec<[f64; 2]> = Vec::new();
+                for p in pts {
+                    while hull.len() >= 2
+                        && orient2d(hull[hull.len() - 2], hull[hull.len() - 1], p) != Ordering::Greater
+                    {
+                        hull.pop();
+                    }
+                    hull.push(p);
+                }
+                // Close the chain: drop corners that do not turn left
+                // across the wrap.
+                loop {
+                    let k = hull.len();
+                    if k > 3 && orient2d(hull[k - 2], hull[k - 1], hull[0]) != Ordering::Greater {
+                        hull.pop();
+                    } else if k > 3 && orient2d(hull[k - 1], hull[0], hull[1]) != Ordering::Greater {
+                        hull.remove(0);
+                    } else {
+                        break;
+                    }
+                }
+                hull
+            };
+            let (mut v, mut f) = prism(&poly(n, f64::from(r)), 4.0, [0.0; 3]);
+            let (v2, f2) = prism(&poly(m, 5.0), 3.0, [f64::from(dx) / 2.0, 0.5, f64::from(dz) / 2.0]);
+            let off = v.len() as u32;
+            v.extend(v2);
+            f.extend(f2.into_iter().map(|l| l.into_iter().map(|x| x + off).collect()));
+            let mesh = PolygonMesh::new(v, f.iter().map(|l| crate::Facet::from_loop(l)).collect());
+            prop_assume!(mesh.check_topology().is_ok());
+            // The caps really are big convex loops (halved).
+            let caps: Vec<u32> = (0..mesh.facets.len())
+                .filter(|&i| {
+                    let hes: Vec<(u32, u32)> =
+                        mesh.facets[i].half_edges.iter().map(|h| (h.start, h.end)).collect();
+                    hes.len() > BIG_FACET
+                        && single_loop(&hes)
+                            .is_some_and(|r| strictly_convex(&r, &mesh.vertices, (0, 1)))
+                })
+                .map(|i| i as u32)
+                .collect();
+            prop_assert_eq!(caps, vec![0, 1, off / 2 + 2, off / 2 + 3]);
+            prop_assert_eq!(pairs_with(&mesh, true), pairs_with(&mesh, false));
+        }
+    }
+
     // An independent oracle: the intersection of two triangles by exact
     // rational clipping (no orientation predicate), and the rule of the
     // module docs stated on that set.
@@ -943,4 +1066,3 @@ mod tests {
         }
     }
 }
-

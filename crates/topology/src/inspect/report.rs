@@ -260,10 +260,7 @@ mod tests {
             )
         };
         let (v, f) = cube(0.0, 0);
-        let m = PolygonMesh::new(
-            v.clone(),
-            f.iter().map(|l| Facet::from_loop(l)).collect(),
-        );
+        let m = PolygonMesh::new(v.clone(), f.iter().map(|l| Facet::from_loop(l)).collect());
         let r = check_mesh(&m);
         assert!(r.is_valid(), "{r:?}");
         assert_eq!(r.two_manifold, Some(true));
@@ -306,13 +303,7 @@ mod tests {
             vec![vec![a, c, b], vec![a, b, d], vec![b, c, d], vec![a, d, c]]
         };
         let loops: Vec<Vec<u32>> = t(0, 1, 2, 3).into_iter().chain(t(0, 4, 5, 6)).collect();
-        let m = PolygonMesh::new(
-            v,
-            loops
-                .iter()
-                .map(|l| Facet::from_loop(l))
-                .collect(),
-        );
+        let m = PolygonMesh::new(v, loops.iter().map(|l| Facet::from_loop(l)).collect());
         let r = check_mesh(&m);
         assert!(r.is_valid());
         assert_eq!(r.non_manifold_edges, Some(0));
