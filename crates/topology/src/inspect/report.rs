@@ -349,4 +349,48 @@ mod tests {
         assert!(bad.self_intersections().is_err());
         assert!(!bad.check().is_valid());
     }
+
+    use proptest::prelude::*;
+
+    fn coordinate() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            60 => (-4i32..=4).prop_map(f64::from),
+            1 => Just(f64::NAN),
+            1 => Just(f64::MAX),
+            1 => Just(f64::MAX / 4.0),
+            1 => Just(-f64::from_bits(1)),
+            1 => any::<f64>(),
+        ]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(300))]
+
+        /// Garbage meshes (dangling indices, NaN and huge coordinates,
+        /// repeated and zero-length half-edges) are reported, never a
+        /// panic, and the report agrees with the methods.
+        #[test]
+        fn garbage_meshes_are_reported_not_panicked_on(
+            v in proptest::collection::vec(proptest::array::uniform3(coordinate()), 0..8),
+            loops in proptest::collection::vec(proptest::collection::vec(0u32..10, 0..6), 0..8),
+            close in any::<bool>(),
+        ) {
+            let mut facets: Vec<Facet> = loops.iter().map(|l| Facet::from_loop(l)).collect();
+            if close {
+                // Each loop doubled back: closed, often degenerate.
+                facets.extend(loops.iter().map(|l| {
+                    let r: Vec<u32> = l.iter().rev().copied().collect();
+                    Facet::from_loop(&r)
+                }));
+            }
+            let m = PolygonMesh::new(v, facets);
+            let r = check_mesh(&m);
+            prop_assert_eq!(r.is_valid(), m.self_intersections().is_ok());
+            if let Ok(pairs) = m.self_intersections() {
+                prop_assert_eq!(r.self_intersecting_facet_pairs, Some(pairs.len()));
+                prop_assert!(pairs.iter().all(|p| p[0] < p[1]));
+            }
+            prop_assert_eq!(r.two_manifold, m.manifold_report().ok().map(|x| x.is_two_manifold()));
+        }
+    }
 }
