@@ -4,10 +4,10 @@
 use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
 use crate::level3::{level3 as level3_fast, level3_brute, Level3Data, Winding};
 use crate::mesh::Flat;
-use crate::triangulate::triangulate_facet;
 use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
 use std::collections::HashMap;
+use topology::triangulate_facet;
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
 
 /// The result of the polygon-mesh variant.

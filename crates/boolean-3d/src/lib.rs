@@ -57,7 +57,6 @@ mod construct;
 mod error;
 mod level3;
 mod mesh;
-mod triangulate;
 
 pub use api::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
@@ -67,5 +66,5 @@ pub use composite::CompositeEdge3;
 pub use construct::{CompositeKind, CompositeRecord, FacetSource};
 pub use error::Boolean3Error;
 pub use level3::{EdgeFacetHit, Level3Data};
+pub use topology::{triangulate_facet, triangulate_mesh};
 pub use topology::{BooleanOp, Operand};
-pub use triangulate::{triangulate_facet, triangulate_mesh};

@@ -14,7 +14,11 @@
 //! - [`lex_cmp`]: the lexicographic point order of section 7.1.2;
 //! - the error-bound constants of chapter 8 ([`UNIT_ROUNDOFF`],
 //!   [`Y_AT_X_ERROR_FACTOR`], [`INTERSECTION_ERROR_FACTOR`]) and
-//!   [`validate_coordinate`] for the coordinate range of section 8.5.
+//!   [`validate_coordinate`] for the coordinate range of section 8.5;
+//! - [`orient2d`] and [`orient3d`]: the one exact orientation-predicate
+//!   source of the workspace (adaptive fast path, exact integer fallback
+//!   outside its provably exact range), used by shape inspection, never by
+//!   the Booleans.
 //!
 //! # Example
 //!
@@ -35,6 +39,7 @@
 
 mod bounds;
 mod error;
+mod exact;
 mod interpolate;
 mod order;
 mod pair;
@@ -45,6 +50,7 @@ pub use bounds::{
     MAX_COORDINATE, UNIT_ROUNDOFF, Y_AT_X_ERROR_FACTOR,
 };
 pub use error::ArithError;
+pub use exact::{orient2d, orient3d, FAST_MAX, FAST_MIN};
 pub use interpolate::interpolate;
 pub use order::{from_total_order_key, lex_cmp, lex_less, total_order_key};
 pub use pair::interpolate_pair;

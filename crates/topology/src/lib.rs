@@ -9,6 +9,16 @@
 //! - [`TriangleMesh`]: a polyhedral shape of triangular facets.
 //! - [`BooleanOp`] and [`Operand`]: the one operation type (eq. 4.11-4.13,
 //!   4.20) and operand name that every Boolean of the workspace takes.
+//! - [`triangulate_facet`] and [`triangulate_mesh`]: the triangulation of
+//!   facets by internal edges (section 4.8).
+//! - Inspection: [`check_mesh`] ([`MeshCheckReport`]: 2-manifoldness,
+//!   exact self-intersecting facet pairs, signed volume, bounding box),
+//!   also as methods (`mesh.check()`, `mesh.signed_volume()`,
+//!   `mesh.bounding_box()`, `mesh.self_intersections()`,
+//!   `mesh.manifold_report()`), and [`check_polygon_set`]
+//!   ([`CheckReport`]: exact crossing edge pairs), on the exact predicates
+//!   of `robust_arith`. With the feature `serde` the reports are
+//!   `serde::Serialize`.
 //!
 //! Each structure has `check_topology()`, which returns a [`TopologyError`]
 //! naming the violated constraint and the entity, and
@@ -38,17 +48,21 @@
 #![warn(missing_docs)]
 
 mod error;
+mod inspect;
 mod mesh;
 mod op;
 mod polygon_set;
 mod triangle_mesh;
+mod triangulate;
 
 pub use error::TopologyError;
+pub use inspect::*;
 pub use mesh::{Facet, HalfEdge, PolygonMesh};
 pub use op::{BooleanOp, Operand};
 pub use polygon_set::{Edge2, PolygonSet2};
 pub use robust_arith::{Point2, Point3};
 pub use triangle_mesh::TriangleMesh;
+pub use triangulate::{triangulate_facet, triangulate_mesh};
 
 /// Checks every coordinate of every point (shared by the three structures).
 fn validate_points<const N: usize>(points: &[[f64; N]]) -> Result<(), TopologyError> {

@@ -26,8 +26,13 @@
 //!   [`from_geo`]. Rings are read by role by default (outer rings enclose
 //!   positively, holes negatively, as GIS data intends) or exactly as
 //!   written with [`RingOrientation::AsWritten`].
-//! - [`check_polygon_set`]: topological validity, coordinate validity and
-//!   geometric-validity hints (exact count of crossing edge pairs).
+//! - Inspection (from the `topology` crate, on the exact predicates
+//!   [`orient2d`] and [`orient3d`]): [`check_polygon_set`] (topological
+//!   validity, coordinate validity, exact count of crossing edge pairs),
+//!   [`check_mesh`] (2-manifoldness, exact self-intersecting facet pairs,
+//!   signed volume, bounding box), also as methods of the shapes
+//!   (`mesh.check()`, `mesh.signed_volume()`, `mesh.bounding_box()`,
+//!   `mesh.self_intersections()`, `mesh.manifold_report()`).
 //! - [`UmbraError`]: every error names the file and the problem on one
 //!   line.
 //! - Output encoded in memory before anything is written:
@@ -62,16 +67,12 @@
 #![warn(missing_docs)]
 
 #[cfg(feature = "io")]
-mod check;
-#[cfg(feature = "io")]
 mod encode;
 mod error;
 #[cfg(feature = "io")]
 mod io;
-mod mesh_check;
 mod model;
 mod ops;
-mod predicates;
 mod report;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
@@ -79,25 +80,25 @@ pub use boolean_3d::{
     boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
 };
 #[cfg(feature = "io")]
-pub use check::{check_polygon_set, CheckReport};
-#[cfg(feature = "io")]
 pub use encode::{encode_mesh, encode_polygon_set, EncodedPolygons};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
-pub use mesh_check::{check_mesh, mesh_signed_volume, MeshCheckReport};
 pub use model::*;
 pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 pub use report::{
     fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
     SimplifyReport, SweepReport, Timings,
 };
-pub use robust_arith::{validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE};
+pub use robust_arith::{
+    orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,
+};
 pub use simplify_2d::{
     boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
     SimplifyError, SweepStats,
 };
 pub use topology::{
-    BooleanOp, Edge2, Facet, HalfEdge, Operand, PolygonMesh, PolygonSet2, TopologyError,
-    TriangleMesh,
+    check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,
+    CheckReport, Edge2, EdgeUse, Facet, HalfEdge, ManifoldReport, MeshCheckReport, Operand,
+    PolygonMesh, PolygonSet2, RingIndex, RingSide, TopologyError, TriangleMesh,
 };

@@ -17,7 +17,7 @@ pub use geojson::{
     write_geojson_file, write_geojson_string,
 };
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
-pub use rings::{layout_polygons, ring_signed_area, PolygonLayout, Polygons, RingOrientation};
+pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};
 pub use wkt::{
     parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
     write_wkt_string, ReadOptions,

@@ -9,10 +9,9 @@
 //! (RFC 7946: interior on the left, outer rings counter-clockwise, holes
 //! clockwise, which is the dissertation's convention of section 4.2).
 
-use crate::predicates::{RingIndex, RingSide};
 use crate::UmbraError;
 use robust_arith::{validate_coordinate, Point2};
-use topology::PolygonSet2;
+use topology::{ring_signed_area, PolygonSet2, RingIndex, RingSide};
 
 /// How the direction of a ring is decided when reading, and how loops are
 /// grouped when writing.
@@ -35,23 +34,6 @@ pub enum RingOrientation {
 /// Polygons as lists of rings, each ring a list of points without the
 /// closing duplicate (the last point joins back to the first).
 pub type Polygons = Vec<Vec<Vec<Point2>>>;
-
-/// The signed area of the closed ring (positive when counter-clockwise),
-/// by the shoelace formula relative to the first point (which keeps the
-/// cancellation small for rings far from the origin). An estimate in f64.
-pub fn ring_signed_area(ring: &[Point2]) -> f64 {
-    let Some(&o) = ring.first() else {
-        return 0.0;
-    };
-    let n = ring.len();
-    let mut twice = 0.0;
-    for i in 1..n.saturating_sub(1) {
-        let a = [ring[i][0] - o[0], ring[i][1] - o[1]];
-        let b = [ring[i + 1][0] - o[0], ring[i + 1][1] - o[1]];
-        twice += a[0] * b[1] - a[1] * b[0];
-    }
-    twice / 2.0
-}
 
 /// Removes the closing duplicate of a ring (a last point equal to the
 /// first), which is not a separate vertex.

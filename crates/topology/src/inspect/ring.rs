@@ -1,63 +1,36 @@
-//! Exact orientation predicate for the validity hints of `check` and for
-//! grouping holes into outer rings when writing files.
-//!
-//! A floating-point filter answers most calls; when it cannot certify the
-//! sign the determinant is evaluated exactly in rational arithmetic. These
-//! are not the dissertation's predicates (the Booleans never call them): they
-//! only describe shapes, they never decide topology.
+//! Point location in a closed ring, exact: the winding number of a ring
+//! around a point or whether the point lies on the ring (used to group
+//! holes into outer rings when polygon files are written), and the ring's
+//! signed area.
 
-use num_rational::BigRational;
-use num_traits::{Signed, Zero};
-use robust_arith::{Point2, UNIT_ROUNDOFF};
+use robust_arith::{orient2d, Point2};
 use std::cmp::Ordering;
 
-/// The relative error bound of the filter, `(3 + 16u) u` (the orientation
-/// filter of Shewchuk's `orient2d`, differences taken in floating point).
-const FILTER: f64 = (3.0 + 16.0 * UNIT_ROUNDOFF) * UNIT_ROUNDOFF;
-
-/// Below this magnitude of `|l| + |r|` products may have underflowed and the
-/// filter's relative bound no longer holds; the exact path decides.
-const UNDERFLOW_GUARD: f64 = 1.0e-280;
-
-/// The sign of the determinant `(a - c) x (b - c)`: `Greater` when `a, b, c`
-/// turn counter-clockwise, `Less` when clockwise, `Equal` when collinear.
-/// Exact for finite inputs; a non-finite input gives `Equal`.
-pub(crate) fn orient2d(a: Point2, b: Point2, c: Point2) -> Ordering {
-    let acx = a[0] - c[0];
-    let bcx = b[0] - c[0];
-    let acy = a[1] - c[1];
-    let bcy = b[1] - c[1];
-    let left = acx * bcy;
-    let right = acy * bcx;
-    let det = left - right;
-    let sum = left.abs() + right.abs();
-    if det.is_finite() && sum.is_finite() && sum > UNDERFLOW_GUARD && det.abs() > FILTER * sum {
-        return det.partial_cmp(&0.0).unwrap_or(Ordering::Equal);
-    }
-    orient2d_exact(a, b, c)
-}
-
-/// The exact sign of the orientation determinant in rational arithmetic.
-fn orient2d_exact(a: Point2, b: Point2, c: Point2) -> Ordering {
-    let r = |v: f64| BigRational::from_float(v);
-    let (Some(ax), Some(ay), Some(bx), Some(by), Some(cx), Some(cy)) =
-        (r(a[0]), r(a[1]), r(b[0]), r(b[1]), r(c[0]), r(c[1]))
-    else {
-        return Ordering::Equal;
+/// The signed area of a closed ring (last point joins the first; positive
+/// when counter-clockwise), by the shoelace sum relative to the first point
+/// (f64).
+///
+/// ```
+/// use topology::ring_signed_area;
+/// assert_eq!(ring_signed_area(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]), 2.0);
+/// ```
+pub fn ring_signed_area(ring: &[Point2]) -> f64 {
+    let Some(&o) = ring.first() else {
+        return 0.0;
     };
-    let det = (&ax - &cx) * (&by - &cy) - (&ay - &cy) * (&bx - &cx);
-    if det.is_zero() {
-        Ordering::Equal
-    } else if det.is_positive() {
-        Ordering::Greater
-    } else {
-        Ordering::Less
+    let n = ring.len();
+    let mut twice = 0.0;
+    for i in 1..n.saturating_sub(1) {
+        let a = [ring[i][0] - o[0], ring[i][1] - o[1]];
+        let b = [ring[i + 1][0] - o[0], ring[i + 1][1] - o[1]];
+        twice += a[0] * b[1] - a[1] * b[0];
     }
+    twice / 2.0
 }
 
 /// Where a point lies with respect to a closed ring.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum RingSide {
+pub enum RingSide {
     /// On an edge of the ring (exactly).
     Boundary,
     /// Off the ring, with the ring's winding number around the point.
@@ -67,9 +40,16 @@ pub(crate) enum RingSide {
 /// The winding number of the closed ring `ring` (last point joins the first)
 /// around `p`, or `Boundary` when `p` lies exactly on an edge. Sunday's
 /// crossing rule with the exact [`orient2d`].
-/// (The plain form is the oracle the tests hold [`RingIndex`] to.)
-#[cfg(test)]
-pub(crate) fn ring_side(ring: &[Point2], p: Point2) -> RingSide {
+/// `O(n)` per query; [`RingIndex`] answers the same faster for many
+/// queries on one ring.
+///
+/// ```
+/// use topology::{ring_side, RingSide};
+/// let sq = [[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]];
+/// assert_eq!(ring_side(&sq, [1.0, 1.0]), RingSide::Off(1));
+/// assert_eq!(ring_side(&sq, [2.0, 1.0]), RingSide::Boundary);
+/// ```
+pub fn ring_side(ring: &[Point2], p: Point2) -> RingSide {
     ring_side_of_edges(ring, 0..ring.len() as u32, p)
 }
 
@@ -102,7 +82,8 @@ fn ring_side_of_edges(ring: &[Point2], edges: impl Iterator<Item = u32>, p: Poin
 /// A point-location index over one ring: the ring's y-range cut into
 /// horizontal strips, each listing the edges whose closed y-range meets it,
 /// so a query visits only the edges near the point's y.
-pub(crate) struct RingIndex {
+#[derive(Clone, Debug)]
+pub struct RingIndex {
     /// The lower end of the first strip.
     y0: f64,
     /// The strip height.
@@ -113,7 +94,7 @@ pub(crate) struct RingIndex {
 
 impl RingIndex {
     /// Builds the index; about `sqrt(n)` strips (at most 1024).
-    pub(crate) fn new(ring: &[Point2]) -> RingIndex {
+    pub fn new(ring: &[Point2]) -> RingIndex {
         let n = ring.len();
         let (lo, hi) = ring
             .iter()
@@ -157,8 +138,10 @@ impl RingIndex {
         }
     }
 
-    /// [`ring_side`] of `p` with respect to `ring` (the ring indexed).
-    pub(crate) fn side(&self, ring: &[Point2], p: Point2) -> RingSide {
+    /// [`ring_side`] of `p` with respect to `ring` (the ring this index
+    /// was built from; another ring gives a meaningless answer, never a
+    /// panic).
+    pub fn side(&self, ring: &[Point2], p: Point2) -> RingSide {
         // An edge whose range ends exactly at a strip boundary may be filed
         // only in the neighbouring strip after rounding: visit the strips
         // either side of p too, skipping duplicates.
@@ -180,22 +163,6 @@ fn within_box(a: Point2, b: Point2, p: Point2) -> bool {
 #[cfg(test)]
 mod tests {
     use super::*;
-
-    #[test]
-    fn orientation_is_exact_near_degeneracy() {
-        // Points on the line y = x with tiny offsets the filter cannot see.
-        let a = [0.5, 0.5];
-        let b = [12.0, 12.0];
-        let c = [24.0, 24.0];
-        assert_eq!(orient2d(a, b, c), Ordering::Equal);
-        let c_up = [24.0, f64::from_bits(24.0f64.to_bits() + 1)];
-        assert_eq!(orient2d(a, b, c_up), Ordering::Greater);
-        let c_down = [24.0, f64::from_bits(24.0f64.to_bits() - 1)];
-        assert_eq!(orient2d(a, b, c_down), Ordering::Less);
-        // Huge coordinates overflow the filter; the exact path answers.
-        let h = f64::MAX / 4.0;
-        assert_eq!(orient2d([-h, -h], [h, -h], [h, h]), Ordering::Greater);
-    }
 
     #[test]
     fn ring_side_counts_winding() {

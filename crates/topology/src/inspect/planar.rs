@@ -1,4 +1,4 @@
-//! Shape checks for `umbra check`: topological validity (section 4.2),
+//! The inspection of a 2D polygon set: topological validity (section 4.2),
 //! coordinate validity (section 8.5) and geometric-validity hints.
 //!
 //! Geometric validity (no crossing edges, section 4.7) is not required by
@@ -6,14 +6,14 @@
 //! far a shape is from it. Pairs are found by a sort-by-x sweep over edge
 //! bounding boxes and decided by the exact orientation predicate.
 
-use crate::predicates::orient2d;
-use robust_arith::{lex_cmp, Point2};
-use serde::Serialize;
+use super::ring::ring_signed_area;
+use crate::PolygonSet2;
+use robust_arith::{lex_cmp, orient2d, Point2};
 use std::cmp::Ordering;
-use topology::PolygonSet2;
 
-/// What `umbra check` reports about a polygon set.
-#[derive(Clone, Debug, PartialEq, Serialize)]
+/// What the inspection of a polygon set reports ([`check_polygon_set`]).
+#[derive(Clone, Debug, PartialEq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
 pub struct CheckReport {
     /// Shape boundary closure holds and every index is in range.
     pub topologically_valid: bool,
@@ -66,7 +66,7 @@ impl CheckReport {
 /// field of the report).
 ///
 /// ```
-/// use umbra::{check_polygon_set, PolygonSet2};
+/// use topology::{check_polygon_set, PolygonSet2};
 /// let mut bowtie = PolygonSet2::new();
 /// bowtie.add_loop(&[[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]]);
 /// let r = check_polygon_set(&bowtie);
@@ -83,7 +83,7 @@ pub fn check_polygon_set(set: &PolygonSet2) -> CheckReport {
         for l in set.loops() {
             rings += 1;
             let pts: Vec<Point2> = l.iter().map(|&v| set.vertex(v)).collect();
-            let a = crate::io::ring_signed_area(&pts);
+            let a = ring_signed_area(&pts);
             if a > 0.0 {
                 ccw_rings += 1;
             } else if a < 0.0 {
@@ -92,7 +92,7 @@ pub fn check_polygon_set(set: &PolygonSet2) -> CheckReport {
         }
     }
     let in_range =
-        topology.is_ok() || !matches!(topology, Err(topology::TopologyError::DanglingIndex { .. }));
+        topology.is_ok() || !matches!(topology, Err(crate::TopologyError::DanglingIndex { .. }));
     let (crossing, overlapping) = if coordinates.is_ok() && in_range {
         let (c, o) = count_crossings(set);
         (Some(c), Some(o))
@@ -117,6 +117,13 @@ pub fn check_polygon_set(set: &PolygonSet2) -> CheckReport {
         bounding_box: if in_range { set.bounding_box() } else { None },
         crossing_edge_pairs: crossing,
         overlapping_edge_pairs: overlapping,
+    }
+}
+
+impl PolygonSet2 {
+    /// The inspection report of this set ([`check_polygon_set`]).
+    pub fn check(&self) -> CheckReport {
+        check_polygon_set(self)
     }
 }
 
@@ -257,7 +264,7 @@ mod tests {
         assert_eq!(r.crossing_edge_pairs, None);
         let dangling = PolygonSet2::from_parts(
             vec![[0.0, 0.0]],
-            vec![topology::Edge2 {
+            vec![crate::Edge2 {
                 start: 0,
                 end: 9,
                 mult: 1,

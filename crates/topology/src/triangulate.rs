@@ -1,5 +1,6 @@
-//! The triangle-mesh variant's triangulation of a retained facet (section
-//! 4.8): internal edges are added between vertices of the facet, so the
+//! The triangulation of a facet by internal edges (section 4.8), used by
+//! the triangle-mesh variant of the 3D Boolean and by shape inspection:
+//! internal edges are added between vertices of the facet, so the
 //! original half-edges plus both half-edges of every internal edge form the
 //! triangles. Topology holds whatever the geometry; the geometry is as good
 //! as ear clipping in the facet's dominant projection plane can make it.
@@ -43,8 +44,8 @@
 //!    (section 4.8: "minimises how far any geometrically invalid region is
 //!    extended").
 
+use crate::{HalfEdge, PolygonMesh, TriangleMesh};
 use robust_arith::Point3;
-use topology::{HalfEdge, PolygonMesh, TriangleMesh};
 
 type P2 = [f64; 2];
 
