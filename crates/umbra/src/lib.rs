@@ -66,6 +66,11 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+/// The guide's examples (`docs/guide.md`), run as doc tests.
+#[cfg(doctest)]
+#[doc = include_str!("../../../docs/guide.md")]
+pub struct GuideDoctests;
+
 #[cfg(feature = "io")]
 mod encode;
 mod error;
