@@ -287,7 +287,7 @@ pub(crate) fn parse_ply_with_origins(
     let header: Header = Parser::<Skip>::new()
         .read_header(&mut reader)
         .map_err(|e| malformed(file, format!("header: {}", one_line(&e))))?;
-    let header_lines = reader.line();
+    let header_lines = bytes[..end].iter().filter(|&&b| b == b'\n').count();
     // The crate's header reader stops right after `end_header`.
     let data = &bytes[end..];
     let encoding = header.encoding;
@@ -400,7 +400,12 @@ pub(crate) fn parse_ply_with_origins(
                 Place::Record(r) => format!("{} record {r}", shorten(&e.name)),
             };
             let fail = |err: &dyn std::fmt::Display| {
-                malformed(file, format!("{where_}: {}", one_line(err)))
+                let text = one_line(err);
+                if text.contains("failed to fill whole buffer") {
+                    malformed(file, format!("{where_}: truncated: the data ends inside it"))
+                } else {
+                    malformed(file, format!("{where_}: {text}"))
+                }
             };
             macro_rules! read {
                 ($parser:expr) => {
@@ -627,13 +632,14 @@ mod tests {
                 b"ply\nformat binary_little_endian 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nend_header\n\0\0".to_vec(),
                 "4000000000 'vertex' element(s) of at least 12 byte(s) each, more than the 2 byte(s)",
             ),
-            (format!("{head}0 0 0\n1 0 0\n").into_bytes(), "line 12: "),
-            (format!("{head}0 0 0\n1 0 0\n0 1 0\n").into_bytes(), "truncated: expected 1 'face'"),
+            (format!("{head}0 0 0\n1 0 0\n").into_bytes(), "3 'vertex' element(s) of at least 6 byte(s) each, more than the 12"),
+            (format!("{head}0 0 0\n1 0 0\n{}", "\n".repeat(20)).into_bytes(), "truncated: expected 3 'vertex' element(s), found 2"),
+            (format!("{head}0 0 0\n1 0 0\n0 1 0\n\n\n").into_bytes(), "truncated: expected 1 'face'"),
             (format!("{head}0 0 0\n1 0 0\n0 1 0\n3 0 1 -2\n").into_bytes(), "line 13: negative vertex index -2"),
             (format!("{head}0 0 0\n1 0 0\n0 1 0\n2 0 1\n").into_bytes(), "line 13: a face needs at least 3"),
             (format!("{head}0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n9 9 9\n").into_bytes(), "line 14: unexpected data"),
             (format!("{head}0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n").into_bytes(), "line 11: "),
-            (format!("{head}0 0 0\n1 \u{e9} 0\n").into_bytes().iter().map(|&b| if b == 0xc3 { 0xff } else { b }).collect(), "not UTF-8"),
+            (format!("{head}0 0 0\n1 \u{e9} 0\n0 1 0\n3 0 1 2\n").into_bytes().iter().map(|&b| if b == 0xc3 { 0xff } else { b }).collect(), "not UTF-8"),
             (
                 b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n".to_vec(),
                 "no 'z' property",
@@ -648,7 +654,7 @@ mod tests {
         let mut b = big_endian();
         b.truncate(b.len() - 20);
         let e = parse_ply(&b, "t.ply").unwrap_err().to_string();
-        assert!(e.contains("at least"), "{e}");
+        assert!(e.contains("face record 2: truncated: the data ends inside it"), "{e}");
     }
 
     #[test]

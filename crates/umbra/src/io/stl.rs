@@ -573,7 +573,7 @@ mod tests {
             (b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 1e400\n".to_vec(), "line 4: '1e400' overflows f64"),
             (b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0\nendloop".to_vec(), "line 5: 'endloop' is not a number"),
             (b"solid x\nfacet normal 0 0 1\nouter loop\nvertex 0 0 0\nvertex 0 0 0\nvertex 0 0 0\nvertex 0 0 0\n".to_vec(), "line 7: a facet with more than 3 vertices"),
-            (b"solid x\nfacet normal 0 0 1\n".to_vec(), "at the end: truncated: expected 'outer'"),
+            (b"solid x\nfacet normal 0 0 1\n".to_vec(), "line 2: truncated: expected 'outer'"),
             (b"solid x\n\xff\n".to_vec(), "line 2: not UTF-8"),
             (b"solid x\n\x01\n".to_vec(), "line 2: binary data (control byte 0x01)"),
             (b"solid x\nendsolid\ngarbage".to_vec(), "line 3: expected 'solid'"),
