@@ -262,7 +262,12 @@ pub fn write_mesh_with(
         FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
         FileKind::ThreeMf => mesh_to_3mf(mesh),
         FileKind::Glb => mesh_to_glb(mesh),
-        _ => return Err(wrong_dimension(path, "3D (.obj, .off, .stl, .ply, .3mf, .glb)")),
+        _ => {
+            return Err(wrong_dimension(
+                path,
+                "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+            ))
+        }
     }
     .map_err(|e| rename(e, path))?;
     write_bytes(path, &bytes)

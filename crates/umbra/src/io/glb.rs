@@ -60,7 +60,8 @@ pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
     if !tris.triangles.is_empty() {
         doc["scenes"][0]["nodes"] = json!([0]);
         doc["nodes"] = json!([{"mesh": 0}]);
-        doc["meshes"] = json!([{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}]);
+        doc["meshes"] =
+            json!([{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1, "mode": 4}]}]);
         doc["buffers"] = json!([{"byteLength": bin.len()}]);
         doc["bufferViews"] = json!([
             {"buffer": 0, "byteOffset": 0, "byteLength": positions_len, "target": VERTEX_TARGET},
@@ -74,8 +75,8 @@ pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
     } else {
         bin.clear();
     }
-    let mut json_bytes = serde_json::to_vec(&doc)
-        .map_err(|e| UmbraError::Internal(format!("glTF JSON: {e}")))?;
+    let mut json_bytes =
+        serde_json::to_vec(&doc).map_err(|e| UmbraError::Internal(format!("glTF JSON: {e}")))?;
     while json_bytes.len() % 4 != 0 {
         json_bytes.push(b' ');
     }

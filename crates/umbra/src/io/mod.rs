@@ -19,6 +19,7 @@ mod svg;
 mod text;
 mod threemf;
 mod wkt;
+mod wkt_diagnose;
 
 pub use files::{
     read_mesh, read_polygon_set, write_mesh, write_mesh_with, write_polygon_set, FileKind,

@@ -126,7 +126,11 @@ fn is_index_list(name: &str) -> bool {
 }
 
 impl Face {
-    fn set_signed(&mut self, name: &str, values: impl IntoIterator<Item = i64>) -> PropertyAccessResult {
+    fn set_signed(
+        &mut self,
+        name: &str,
+        values: impl IntoIterator<Item = i64>,
+    ) -> PropertyAccessResult {
         if !is_index_list(name) {
             return PropertyAccessResult::Ignored;
         }
@@ -316,7 +320,10 @@ pub(crate) fn parse_ply_with_origins(
             match v.properties.get(axis).map(|p| &p.data_type) {
                 Some(PropertyType::Scalar(_)) => {}
                 Some(PropertyType::List(..)) => {
-                    return Err(malformed(file, format!("header: vertex property '{axis}' is a list")))
+                    return Err(malformed(
+                        file,
+                        format!("header: vertex property '{axis}' is a list"),
+                    ))
                 }
                 None => {
                     return Err(malformed(
@@ -348,13 +355,15 @@ pub(crate) fn parse_ply_with_origins(
     let mut cursor = Cursor::new(data);
     // ASCII: one element per non-empty line.
     let text = if ascii {
-        Some(super::text::decode(data, file, FORMAT).map_err(|e| match e {
-            UmbraError::Malformed { message, .. } => malformed(
-                file,
-                format!("after the header (line {}): {message}", header_lines),
-            ),
-            other => other,
-        })?)
+        Some(
+            super::text::decode(data, file, FORMAT).map_err(|e| match e {
+                UmbraError::Malformed { message, .. } => malformed(
+                    file,
+                    format!("after the header (line {}): {message}", header_lines),
+                ),
+                other => other,
+            })?,
+        )
     } else {
         None
     };
@@ -402,7 +411,10 @@ pub(crate) fn parse_ply_with_origins(
             let fail = |err: &dyn std::fmt::Display| {
                 let text = one_line(err);
                 if text.contains("failed to fill whole buffer") {
-                    malformed(file, format!("{where_}: truncated: the data ends inside it"))
+                    malformed(
+                        file,
+                        format!("{where_}: truncated: the data ends inside it"),
+                    )
                 } else {
                     malformed(file, format!("{where_}: {text}"))
                 }
@@ -428,14 +440,20 @@ pub(crate) fn parse_ply_with_origins(
             if is_vertex {
                 let v = read!(vertex_parser);
                 if !v.seen.iter().all(|&s| s) {
-                    return Err(malformed(file, format!("{where_}: a vertex without x, y and z")));
+                    return Err(malformed(
+                        file,
+                        format!("{where_}: a vertex without x, y and z"),
+                    ));
                 }
                 vertices.push(v.p);
                 origins.vertex_places.push(place_no);
             } else if is_face {
                 let f = read!(face_parser);
                 if let Some(n) = f.negative {
-                    return Err(malformed(file, format!("{where_}: negative vertex index {n}")));
+                    return Err(malformed(
+                        file,
+                        format!("{where_}: negative vertex index {n}"),
+                    ));
                 }
                 if f.indices.len() < 3 {
                     return Err(malformed(
@@ -617,7 +635,10 @@ mod tests {
     #[test]
     fn big_endian_with_extra_properties() {
         let m = read_ply_bytes(&big_endian(), "be.ply", MeshReadOptions::default(), true).unwrap();
-        assert_eq!(m.vertices, vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.5]]);
+        assert_eq!(
+            m.vertices,
+            vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.5]]
+        );
         assert_eq!(m.facets.len(), 2);
     }
 
@@ -654,7 +675,10 @@ mod tests {
         let mut b = big_endian();
         b.truncate(b.len() - 20);
         let e = parse_ply(&b, "t.ply").unwrap_err().to_string();
-        assert!(e.contains("face record 2: truncated: the data ends inside it"), "{e}");
+        assert!(
+            e.contains("face record 2: truncated: the data ends inside it"),
+            "{e}"
+        );
     }
 
     #[test]

@@ -326,9 +326,8 @@ fn parse_ascii(bytes: &[u8], file: &str) -> Result<(TriangleMesh, Origins), Umbr
             match tokens.next() {
                 Some(t) if t.eq_ignore_ascii_case("endloop") => {}
                 Some(t) if t.eq_ignore_ascii_case("vertex") => {
-                    return Err(tokens.error(
-                        "a facet with more than 3 vertices (STL facets are triangles)",
-                    ))
+                    return Err(tokens
+                        .error("a facet with more than 3 vertices (STL facets are triangles)"))
                 }
                 Some(t) => {
                     return Err(tokens.error(format!("expected 'endloop', found '{}'", shorten(t))))
@@ -375,7 +374,11 @@ fn normal(a: Point3, b: Point3, c: Point3) -> [f32; 3] {
     ];
     let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
     if len > 0.0 && len.is_finite() {
-        [(n[0] / len) as f32, (n[1] / len) as f32, (n[2] / len) as f32]
+        [
+            (n[0] / len) as f32,
+            (n[1] / len) as f32,
+            (n[2] / len) as f32,
+        ]
     } else {
         [0.0; 3]
     }
@@ -545,8 +548,16 @@ mod tests {
         let e = read_stl_bytes(&bytes, "open.stl", MeshReadOptions::default(), true)
             .unwrap_err()
             .to_string();
-        assert!(e.starts_with("open.stl: invalid shape: shape boundary closure violated: the edge from vertex"), "{e}");
-        assert!(e.contains("(record ") && e.contains("(1.0, ") || e.contains("(0.0, "), "{e}");
+        assert!(
+            e.starts_with(
+                "open.stl: invalid shape: shape boundary closure violated: the edge from vertex"
+            ),
+            "{e}"
+        );
+        assert!(
+            e.contains("(record ") && e.contains("(1.0, ") || e.contains("(0.0, "),
+            "{e}"
+        );
     }
 
     #[test]
@@ -593,14 +604,22 @@ mod tests {
         let e = read_stl_bytes(&bytes, "n.stl", MeshReadOptions::default(), true)
             .unwrap_err()
             .to_string();
-        assert!(e.contains("(record 3): y coordinate NaN is not finite"), "{e}");
+        assert!(
+            e.contains("(record 3): y coordinate NaN is not finite"),
+            "{e}"
+        );
     }
 
     #[test]
     fn unwritable_coordinates_are_refused() {
         let mut c = cube();
         c.vertices[3][2] = 1e300;
-        let e = mesh_to_stl(&c.to_polygon_mesh(), false).unwrap_err().to_string();
-        assert!(e.contains("cannot write STL") && e.contains("z = 1e300"), "{e}");
+        let e = mesh_to_stl(&c.to_polygon_mesh(), false)
+            .unwrap_err()
+            .to_string();
+        assert!(
+            e.contains("cannot write STL") && e.contains("z = 1e300"),
+            "{e}"
+        );
     }
 }

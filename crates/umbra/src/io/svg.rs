@@ -53,7 +53,9 @@ pub fn polygon_set_to_svg(set: &PolygonSet2) -> Result<(String, usize), UmbraErr
         }
         push_f64(&mut s, v);
     }
-    s.push_str("\">\n  <path fill=\"#4a7ab5\" fill-rule=\"nonzero\" stroke=\"#1d3557\" stroke-width=\"");
+    s.push_str(
+        "\">\n  <path fill=\"#4a7ab5\" fill-rule=\"nonzero\" stroke=\"#1d3557\" stroke-width=\"",
+    );
     push_f64(&mut s, margin / 10.0);
     s.push_str("\" stroke-linejoin=\"round\" d=\"");
     for ring in layout.polygons.iter().flatten() {

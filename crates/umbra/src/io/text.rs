@@ -134,7 +134,9 @@ mod tests {
         assert!(parse_number("-Infinity").unwrap().is_infinite());
         assert!(parse_number("NaN").unwrap().is_nan());
         assert_eq!(parse_number("1e-400").unwrap(), 0.0);
-        assert!(parse_number("x").unwrap_err().contains("'x' is not a number"));
+        assert!(parse_number("x")
+            .unwrap_err()
+            .contains("'x' is not a number"));
     }
 
     #[test]
@@ -147,13 +149,23 @@ mod tests {
             e,
             "f.obj: malformed OBJ: line 2: not UTF-8 text (invalid byte 0xe9 at offset 6)"
         );
-        let e = decode(b"\xff\xfev\x00", "f", "OFF").unwrap_err().to_string();
+        let e = decode(b"\xff\xfev\x00", "f", "OFF")
+            .unwrap_err()
+            .to_string();
         assert!(e.contains("UTF-16"), "{e}");
     }
 
     #[test]
     fn numbers_round_trip_bit_for_bit() {
-        for v in [0.1, -0.0, 1.0 / 3.0, 1e-300, 5e-324, 1e300, 123456789012345680.0] {
+        for v in [
+            0.1,
+            -0.0,
+            1.0 / 3.0,
+            1e-300,
+            5e-324,
+            1e300,
+            123456789012345680.0,
+        ] {
             let mut s = String::new();
             push_f64(&mut s, v);
             assert_eq!(s.parse::<f64>().unwrap().to_bits(), v.to_bits(), "{s}");

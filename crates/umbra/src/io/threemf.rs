@@ -98,7 +98,12 @@ mod tests {
     #[test]
     fn package_holds_the_model() {
         let mesh = PolygonMesh::new(
-            vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.1, 0.1, 1e-300]],
+            vec![
+                [0.0, 0.0, 0.0],
+                [1.0, 0.0, 0.0],
+                [0.0, 1.0, 0.0],
+                [0.1, 0.1, 1e-300],
+            ],
             vec![
                 Facet::from_loop(&[0, 2, 1]),
                 Facet::from_loop(&[0, 1, 3]),
@@ -108,9 +113,15 @@ mod tests {
         );
         let bytes = mesh_to_3mf(&mesh).unwrap();
         let mut archive = zip::ZipArchive::new(Cursor::new(bytes)).unwrap();
-        let mut names: Vec<String> = archive.file_names().map(|n| n.unwrap().to_string()).collect();
+        let mut names: Vec<String> = archive
+            .file_names()
+            .map(|n| n.unwrap().to_string())
+            .collect();
         names.sort();
-        assert_eq!(names, ["3D/3dmodel.model", "[Content_Types].xml", "_rels/.rels"]);
+        assert_eq!(
+            names,
+            ["3D/3dmodel.model", "[Content_Types].xml", "_rels/.rels"]
+        );
         let mut model = String::new();
         archive
             .by_name("3D/3dmodel.model")
@@ -119,8 +130,14 @@ mod tests {
             .unwrap();
         assert_eq!(model.matches("<vertex ").count(), 4);
         assert_eq!(model.matches("<triangle ").count(), 4);
-        assert!(model.contains("<vertex x=\"0.1\" y=\"0.1\" z=\"1e-300\"/>"), "{model}");
-        assert!(model.contains("<triangle v1=\"0\" v2=\"2\" v3=\"1\"/>"), "{model}");
+        assert!(
+            model.contains("<vertex x=\"0.1\" y=\"0.1\" z=\"1e-300\"/>"),
+            "{model}"
+        );
+        assert!(
+            model.contains("<triangle v1=\"0\" v2=\"2\" v3=\"1\"/>"),
+            "{model}"
+        );
     }
 
     #[test]
