@@ -408,13 +408,27 @@ pub(crate) fn to_f32(
 }
 
 /// The STL bytes of a mesh, binary or (`ascii`) text (see the module docs).
-/// Fails on a coordinate that binary STL cannot hold, on a NaN or infinite
-/// coordinate, and on more than `u32::MAX` triangles.
+/// Fails on a NaN or infinite coordinate, on a coordinate beyond the `f32`
+/// range in binary STL, and on more than `u32::MAX` triangles in binary
+/// STL.
 pub fn mesh_to_stl(mesh: &PolygonMesh, ascii: bool) -> Result<Vec<u8>, UmbraError> {
     let tris = triangles(mesh);
     for (v, p) in tris.vertices.iter().enumerate() {
         for (axis, &c) in p.iter().enumerate() {
-            to_f32(c, v, axis, FORMAT)?;
+            if ascii {
+                if !c.is_finite() {
+                    return Err(UmbraError::Unwritable {
+                        file: "<output>".to_string(),
+                        format: FORMAT,
+                        message: format!(
+                            "vertex {v}: {} = {c} is not finite",
+                            ["x", "y", "z"][axis]
+                        ),
+                    });
+                }
+            } else {
+                to_f32(c, v, axis, FORMAT)?;
+            }
         }
     }
     if ascii {
