@@ -77,10 +77,10 @@ pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
     }
     let mut json_bytes =
         serde_json::to_vec(&doc).map_err(|e| UmbraError::Internal(format!("glTF JSON: {e}")))?;
-    while json_bytes.len() % 4 != 0 {
+    while !json_bytes.len().is_multiple_of(4) {
         json_bytes.push(b' ');
     }
-    while bin.len() % 4 != 0 {
+    while !bin.len().is_multiple_of(4) {
         bin.push(0);
     }
     let bin_chunk = if bin.is_empty() { 0 } else { 8 + bin.len() };
