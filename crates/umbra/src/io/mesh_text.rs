@@ -400,7 +400,7 @@ pub fn mesh_to_obj(mesh: &PolygonMesh) -> String {
     for f in &faces {
         s.push('f');
         for v in f {
-            let _ = write!(s, " {}", v + 1);
+            let _ = write!(s, " {}", u64::from(*v) + 1);
         }
         s.push('\n');
     }
@@ -516,6 +516,13 @@ mod tests {
                 "{text:?}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn the_largest_reference_is_written_back_without_overflow() {
+        let m = parse_obj("v 0 0 0\nf 1 1 4294967296\n", "w.obj").unwrap();
+        assert_eq!(m.facets[0].half_edges[1].end, u32::MAX);
+        assert!(mesh_to_obj(&m).contains("f 1 1 4294967296\n"));
     }
 
     #[test]
