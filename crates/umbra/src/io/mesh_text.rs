@@ -520,9 +520,9 @@ mod tests {
 
     #[test]
     fn the_largest_reference_is_written_back_without_overflow() {
-        let m = parse_obj("v 0 0 0\nf 1 1 4294967296\n", "w.obj").unwrap();
+        let m = parse_obj("v 0 0 0\nv 1 0 0\nf 1 2 4294967296\n", "w.obj").unwrap();
         assert_eq!(m.facets[0].half_edges[1].end, u32::MAX);
-        assert!(mesh_to_obj(&m).contains("f 1 1 4294967296\n"));
+        assert!(mesh_to_obj(&m).contains("f 1 2 4294967296\n"));
     }
 
     #[test]
