@@ -36,10 +36,12 @@ struct Lexer<'a> {
 impl<'a> Lexer<'a> {
     fn peek(&self) -> (Tok<'a>, usize) {
         let bytes = self.text.as_bytes();
-        let mut i = self.at;
-        while i < bytes.len() && (bytes[i] as char).is_ascii_whitespace() {
-            i += 1;
-        }
+        // Skip white space as `char::is_whitespace` sees it (the words
+        // below end at the same characters, so every token is non-empty
+        // and the lexer always advances).
+        let i = self.text[self.at..]
+            .find(|c: char| !c.is_whitespace())
+            .map_or(self.text.len(), |k| self.at + k);
         if i >= bytes.len() {
             return (Tok::End, i);
         }
@@ -331,6 +333,20 @@ mod tests {
             "POLYGON ((0 0, NaN 0, inf 1, 0 0))",
         ] {
             assert_eq!(diagnose(good), None, "{good}");
+        }
+    }
+
+    #[test]
+    fn unicode_white_space_ends_the_text_scan() {
+        // Found by the read_wkt fuzz target: a no-break space (U+00A0)
+        // once stopped the lexer from advancing.
+        for text in [
+            "POLYGON\u{a0}((0 0, 1 0, 1 1, 0 0))",
+            "\u{2003}",
+            "1\u{85}2",
+        ] {
+            let _ = diagnose(text);
+            assert_eq!(find_overflow(text), None, "{text:?}");
         }
     }
 
