@@ -495,6 +495,11 @@ pub(crate) fn parse_ply_with_origins(
             ));
         }
     }
+    if vertices.is_empty() && facets.is_empty() {
+        return Err(UmbraError::Empty {
+            file: file.to_string(),
+        });
+    }
     Ok((PolygonMesh::new(vertices, facets), origins))
 }
 

@@ -120,11 +120,23 @@ pub fn parse_stl(bytes: &[u8], file: &str) -> Result<TriangleMesh, UmbraError> {
     Ok(mesh)
 }
 
-/// [`parse_stl`] with the record or line of every triangle and vertex.
+/// [`parse_stl`] with the record or line of every triangle and vertex; a
+/// file without triangles is [`UmbraError::Empty`].
 pub(crate) fn parse_stl_with_origins(
     bytes: &[u8],
     file: &str,
 ) -> Result<(TriangleMesh, Origins), UmbraError> {
+    let (mesh, origins) = parse_stl_any(bytes, file)?;
+    if mesh.triangles.is_empty() {
+        return Err(UmbraError::Empty {
+            file: file.to_string(),
+        });
+    }
+    Ok((mesh, origins))
+}
+
+/// Binary or ASCII by the rules of the module docs.
+fn parse_stl_any(bytes: &[u8], file: &str) -> Result<(TriangleMesh, Origins), UmbraError> {
     if bytes.iter().all(u8::is_ascii_whitespace) {
         return Err(UmbraError::Empty {
             file: file.to_string(),
@@ -606,6 +618,16 @@ mod tests {
         for (bytes, want) in cases {
             let e = parse_stl(&bytes, "h.stl").unwrap_err().to_string();
             assert!(e.starts_with("h.stl: ") && e.contains(want), "{want}: {e}");
+        }
+    }
+
+    #[test]
+    fn no_triangles_is_empty() {
+        let mut b = vec![b' '; 84];
+        b[80..84].copy_from_slice(&0u32.to_le_bytes());
+        for bytes in [b, b"solid x\nendsolid x\n".to_vec()] {
+            let e = parse_stl(&bytes, "e.stl").unwrap_err().to_string();
+            assert_eq!(e, "e.stl: the file is empty (no geometry)");
         }
     }
 
