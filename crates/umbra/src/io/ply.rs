@@ -23,7 +23,7 @@
 
 use super::mesh_text::{faces, MeshReadOptions};
 use super::origin::{finish, Origins};
-use super::text::{push_f64, shorten};
+use super::text::{is_infinity_literal, overflow_message, push_f64, shorten};
 use crate::UmbraError;
 use ply_rs_bw::parser::{Parser, Reader};
 use ply_rs_bw::ply::{
@@ -433,6 +433,17 @@ pub(crate) fn parse_ply_with_origins(
                     .map_err(|err| fail(&err))?
                 };
             }
+            // A literal too large for f64 would be read as infinity.
+            if let Place::Line(_, line) = place {
+                if let Some(t) = line.split_ascii_whitespace().find(|t| {
+                    t.parse::<f64>().is_ok_and(f64::is_infinite) && !is_infinity_literal(t)
+                }) {
+                    return Err(malformed(
+                        file,
+                        format!("{where_}: {}", overflow_message(t)),
+                    ));
+                }
+            }
             let place_no = match place {
                 Place::Line(n, _) => n as u32,
                 Place::Record(r) => r as u32,
@@ -665,6 +676,7 @@ mod tests {
             (format!("{head}0 0 0\n1 0 0\n0 1 0\n2 0 1\n").into_bytes(), "line 13: a face needs at least 3"),
             (format!("{head}0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n9 9 9\n").into_bytes(), "line 14: unexpected data"),
             (format!("{head}0 0 0\n1 x 0\n0 1 0\n3 0 1 2\n").into_bytes(), "line 11: "),
+            (format!("{head}0 0 0\n1 1e400 0\n0 1 0\n3 0 1 2\n").into_bytes(), "line 11: '1e400' overflows f64"),
             (format!("{head}0 0 0\n1 \u{e9} 0\n0 1 0\n3 0 1 2\n").into_bytes().iter().map(|&b| if b == 0xc3 { 0xff } else { b }).collect(), "not UTF-8"),
             (
                 b"ply\nformat ascii 1.0\nelement vertex 1\nproperty float x\nproperty float y\nend_header\n0 0\n".to_vec(),
