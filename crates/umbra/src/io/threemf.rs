@@ -31,6 +31,18 @@ const RELS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 /// The model part's XML text (see the module docs).
 pub(crate) fn model_xml(mesh: &PolygonMesh) -> Result<String, UmbraError> {
     let tris = boolean_3d::triangulate_mesh(mesh);
+    if !tris
+        .triangles
+        .iter()
+        .any(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+    {
+        return Err(UmbraError::Unwritable {
+            file: "<output>".to_string(),
+            format: FORMAT,
+            message: "a 3MF mesh object needs at least one triangle of three distinct vertices"
+                .to_string(),
+        });
+    }
     let mut s = String::with_capacity(128 + 60 * tris.vertices.len() + 50 * tris.triangles.len());
     s.push_str("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<model unit=\"millimeter\" xml:lang=\"en-US\" xmlns=\"http://schemas.microsoft.com/3dmanufacturing/core/2015/02\">\n <metadata name=\"Application\">umbra</metadata>\n <resources>\n  <object id=\"1\" type=\"model\">\n   <mesh>\n    <vertices>\n");
     for (v, p) in tris.vertices.iter().enumerate() {
@@ -65,7 +77,8 @@ pub(crate) fn model_xml(mesh: &PolygonMesh) -> Result<String, UmbraError> {
 }
 
 /// The 3MF package (zip bytes) of a mesh. Fails on a NaN or infinite
-/// coordinate.
+/// coordinate and on a mesh without a proper triangle (the specification
+/// wants at least one).
 pub fn mesh_to_3mf(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
     let model = model_xml(mesh)?;
     let zip_error = |e: &dyn std::fmt::Display| UmbraError::Unwritable {
@@ -141,8 +154,15 @@ mod tests {
     }
 
     #[test]
-    fn non_finite_is_refused() {
-        let mesh = PolygonMesh::new(vec![[f64::NAN, 0.0, 0.0]], vec![]);
+    fn empty_and_non_finite_are_refused() {
+        let e = mesh_to_3mf(&PolygonMesh::default())
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("at least one triangle"), "{e}");
+        let mesh = PolygonMesh::new(
+            vec![[f64::NAN, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+            vec![Facet::from_loop(&[0, 1, 2])],
+        );
         let e = mesh_to_3mf(&mesh).unwrap_err().to_string();
         assert!(e.contains("cannot write 3MF: vertex 0: x = NaN"), "{e}");
     }
