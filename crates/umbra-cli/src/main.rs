@@ -9,7 +9,8 @@
 //! ```
 //!
 //! The file extension decides the dimension: `.wkt` and `.geojson` are 2D
-//! polygon sets, `.obj` and `.off` are 3D meshes. 2D Booleans run the basic
+//! polygon sets (`.svg` written), `.obj`, `.off`, `.stl` and `.ply` are 3D
+//! meshes (`.3mf` and `.glb` written). 2D Booleans run the basic
 //! Boolean of chapter 4 by default and through simplification (chapter 6,
 //! which also resolves self-intersecting input and offers `xor`) with
 //! `--via simplify`; 3D Booleans run the polygon-mesh variant, or the
@@ -40,7 +41,7 @@ use std::process::ExitCode;
 use umbra::UmbraError;
 
 /// Topologically robust Boolean operations on polygon sets and polyhedra
-/// (plain f64 arithmetic). `.wkt`/`.geojson` files are 2D, `.obj`/`.off` 3D.
+/// (plain f64 arithmetic). `.wkt`/`.geojson` files are 2D, `.obj`/`.off`/`.stl`/`.ply` 3D.
 #[derive(Parser, Debug)]
 #[command(name = "umbra", version, propagate_version = true)]
 struct Cli {

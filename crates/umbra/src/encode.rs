@@ -5,9 +5,11 @@
 //! back-and-forth spikes, so the written rings may differ from
 //! [`PolygonSet2::loops`]).
 
+use crate::io::rename_output;
 use crate::report::SetCounts;
 use crate::{
-    layout_polygons, mesh_to_obj, mesh_to_off, polygons_to_geojson, polygons_to_wkt, FileKind,
+    layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_obj, mesh_to_off, mesh_to_ply, mesh_to_stl,
+    polygon_set_to_svg, polygons_to_geojson, polygons_to_wkt, FileKind, MeshWriteOptions,
     RingOrientation, UmbraError,
 };
 use topology::{PolygonMesh, PolygonSet2};
@@ -48,8 +50,9 @@ fn wrong_dimension(file: &str, want: &str) -> UmbraError {
     }
 }
 
-/// Encodes `set` as `kind` (WKT or GeoJSON) with the ring layout of
-/// `orientation`, exactly as [`crate::write_polygon_set`] writes it;
+/// Encodes `set` as `kind` (WKT, GeoJSON or SVG) with the ring layout of
+/// `orientation` (SVG is always laid out by role: a picture fills by
+/// winding number), exactly as [`crate::write_polygon_set`] writes it;
 /// errors name `file`.
 ///
 /// ```
@@ -68,14 +71,30 @@ pub fn encode_polygon_set(
     orientation: RingOrientation,
     file: &str,
 ) -> Result<EncodedPolygons, UmbraError> {
+    const WANT: &str = "2D (.wkt, .geojson, .svg)";
     if kind.is_mesh() {
-        return Err(wrong_dimension(file, "2D (.wkt, .geojson)"));
+        return Err(wrong_dimension(file, WANT));
     }
+    let orientation = if kind == FileKind::Svg {
+        RingOrientation::ByRole
+    } else {
+        orientation
+    };
     let layout = layout_polygons(set, orientation, file)?;
     let text = match kind {
         FileKind::Wkt => polygons_to_wkt(&layout.polygons),
         FileKind::GeoJson => polygons_to_geojson(&layout.polygons),
-        FileKind::Obj | FileKind::Off => return Err(wrong_dimension(file, "2D (.wkt, .geojson)")),
+        FileKind::Svg => {
+            polygon_set_to_svg(set)
+                .map_err(|e| rename_output(e, file))?
+                .0
+        }
+        FileKind::Obj
+        | FileKind::Off
+        | FileKind::Stl
+        | FileKind::Ply
+        | FileKind::ThreeMf
+        | FileKind::Glb => return Err(wrong_dimension(file, WANT)),
     };
     let rings = layout.polygons.iter().map(Vec::len).sum();
     let points = layout.polygons.iter().flatten().map(Vec::len).sum();
@@ -88,12 +107,33 @@ pub fn encode_polygon_set(
     })
 }
 
-/// Encodes `mesh` as `kind` (OBJ or OFF) exactly as [`crate::write_mesh`]
-/// writes it; errors name `file`.
+/// Encodes `mesh` as `kind` exactly as [`crate::write_mesh`] writes it
+/// (STL and PLY in binary); errors name `file`.
 pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec<u8>, UmbraError> {
-    match kind {
+    encode_mesh_with(kind, mesh, MeshWriteOptions::default(), file)
+}
+
+/// Encodes `mesh` as `kind` (OBJ, OFF, STL, PLY, 3MF or binary glTF)
+/// exactly as [`crate::write_mesh_with`] writes it; errors name `file`.
+pub fn encode_mesh_with(
+    kind: FileKind,
+    mesh: &PolygonMesh,
+    options: MeshWriteOptions,
+    file: &str,
+) -> Result<Vec<u8>, UmbraError> {
+    let bytes = match kind {
         FileKind::Obj => Ok(mesh_to_obj(mesh).into_bytes()),
         FileKind::Off => Ok(mesh_to_off(mesh).into_bytes()),
-        FileKind::Wkt | FileKind::GeoJson => Err(wrong_dimension(file, "3D (.obj, .off)")),
-    }
+        FileKind::Stl => mesh_to_stl(mesh, options.text),
+        FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
+        FileKind::ThreeMf => mesh_to_3mf(mesh),
+        FileKind::Glb => mesh_to_glb(mesh),
+        FileKind::Wkt | FileKind::GeoJson | FileKind::Svg => {
+            return Err(wrong_dimension(
+                file,
+                "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+            ))
+        }
+    };
+    bytes.map_err(|e| rename_output(e, file))
 }

@@ -103,6 +103,29 @@ pub enum UmbraError {
         /// The error of the 3D Boolean.
         source: Boolean3Error,
     },
+    /// A mesh read from a file violates a constraint of section 4.2 or has
+    /// a bad coordinate; the message says where in the file (1-based face
+    /// and vertex numbers in the file's own numbering, with the line or
+    /// record) and, for an open edge, the positions of its two vertices.
+    InvalidMesh {
+        /// The file.
+        file: String,
+        /// What is wrong and where, one line.
+        message: String,
+        /// The violated constraint as the topology check reports it
+        /// (0-based indices of the mesh in memory).
+        source: TopologyError,
+    },
+    /// A shape cannot be written in the requested format (a coordinate
+    /// beyond the format's `f32` range, say).
+    Unwritable {
+        /// The file (or `<output>`).
+        file: String,
+        /// The format.
+        format: &'static str,
+        /// Why, one line.
+        message: String,
+    },
     /// An invariant of the facade failed: this is a bug, please report it.
     Internal(String),
 }
@@ -159,6 +182,14 @@ impl fmt::Display for UmbraError {
                     format!("{file}: {source}")
                 }
             }
+            UmbraError::InvalidMesh { file, message, .. } => {
+                format!("{file}: invalid shape: {message}")
+            }
+            UmbraError::Unwritable {
+                file,
+                format,
+                message,
+            } => format!("{file}: cannot write {format}: {message}"),
             UmbraError::Internal(msg) => {
                 format!("internal error (this is a bug, please report it): {msg}")
             }
@@ -174,6 +205,7 @@ impl std::error::Error for UmbraError {
             UmbraError::Io { source, .. } => Some(source),
             UmbraError::BadCoordinate { source, .. } => Some(source),
             UmbraError::InvalidShape { source, .. } => Some(source),
+            UmbraError::InvalidMesh { source, .. } => Some(source),
             UmbraError::Boolean { source, .. } => Some(source),
             UmbraError::Simplify { source, .. } => Some(source),
             UmbraError::Boolean3 { source, .. } => Some(source),

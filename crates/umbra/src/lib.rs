@@ -85,7 +85,7 @@ pub use boolean_3d::{
     boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
 };
 #[cfg(feature = "io")]
-pub use encode::{encode_mesh, encode_polygon_set, EncodedPolygons};
+pub use encode::{encode_mesh, encode_mesh_with, encode_polygon_set, EncodedPolygons};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;

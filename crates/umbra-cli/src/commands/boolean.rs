@@ -18,7 +18,7 @@ use umbra::{
 };
 
 /// Union, intersection, difference or (2D only) xor of two files
-/// of the same dimension (.wkt/.geojson or .obj/.off).
+/// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply).
 #[derive(clap::Args, Debug)]
 pub struct BooleanArgs {
     /// The operation.
@@ -92,7 +92,7 @@ impl BooleanArgs {
         let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
         if meshes != 0 && meshes != 3 {
             return Err(usage(
-                "A, B and the output must all be 2D files (.wkt, .geojson) or all 3D files (.obj, .off)",
+                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply; .3mf, .glb output)",
             ));
         }
         self.out
@@ -113,7 +113,7 @@ impl BooleanArgs {
             self.run_3d(op, kinds[2])
         } else {
             if self.triangulate {
-                return Err(usage("--triangulate is for 3D files (.obj, .off) only"));
+                return Err(usage("--triangulate is for 3D files only"));
             }
             let via = match self.via {
                 ViaArg::Basic => Via::Basic,

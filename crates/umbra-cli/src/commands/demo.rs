@@ -31,7 +31,11 @@ pub struct DemoArgs {
 }
 
 /// The files written: name and format.
-const MESHES: [(&str, FileKind); 1] = [("plant.obj", FileKind::Obj)];
+const MESHES: [(&str, FileKind); 3] = [
+    ("plant.stl", FileKind::Stl),
+    ("plant.3mf", FileKind::ThreeMf),
+    ("plant.obj", FileKind::Obj),
+];
 
 impl DemoArgs {
     /// Builds, evaluates, checks and writes the model.

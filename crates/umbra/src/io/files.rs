@@ -1,39 +1,76 @@
 //! File types by extension and the format-independent read/write entry
 //! points (the command-line tool goes through these). The extension decides
-//! the dimension: `.wkt` and `.geojson` are 2D polygon sets,
-//! `.obj` and `.off` are 3D meshes.
+//! the format and the dimension: `.wkt` and `.geojson` are 2D polygon sets
+//! (read and written), `.svg` is a 2D picture (written only); `.obj`,
+//! `.off`, `.stl` and `.ply` are 3D meshes (read and written), `.3mf` and
+//! `.glb` are 3D meshes written only.
 
 use super::geojson::{read_geojson_file, write_geojson_file};
+use super::glb::mesh_to_glb;
 use super::mesh_text::{read_mesh_text, write_mesh_file, MeshReadOptions};
+use super::ply::{mesh_to_ply, read_ply_bytes};
+use super::stl::{mesh_to_stl, read_stl_bytes};
+use super::svg::polygon_set_to_svg;
+use super::text::{decode, read_bytes, write_bytes};
+use super::threemf::mesh_to_3mf;
 use crate::{read_wkt_file, write_wkt_file, ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
 
 /// A supported file format, decided by the file extension.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Hash)]
+#[non_exhaustive]
 pub enum FileKind {
-    /// Well-known text (`.wkt`): 2D polygon sets.
+    /// Well-known text (`.wkt`): 2D polygon sets, read and written.
     Wkt,
-    /// GeoJSON (`.geojson`, RFC 7946): 2D polygon sets.
+    /// GeoJSON (`.geojson`, RFC 7946): 2D polygon sets, read and written.
     GeoJson,
-    /// Wavefront OBJ (`.obj`): 3D polygon meshes.
+    /// Scalable vector graphics (`.svg`): 2D polygon sets, written only.
+    Svg,
+    /// Wavefront OBJ (`.obj`): 3D polygon meshes, read and written.
     Obj,
-    /// Object File Format (`.off`): 3D polygon meshes.
+    /// Object File Format (`.off`): 3D polygon meshes, read and written.
     Off,
+    /// Stereolithography (`.stl`), binary or ASCII: 3D triangle meshes,
+    /// read (welded) and written.
+    Stl,
+    /// Polygon file format (`.ply`), ASCII or binary: 3D polygon meshes,
+    /// read and written.
+    Ply,
+    /// 3D Manufacturing Format (`.3mf`): 3D triangle meshes, written only.
+    ThreeMf,
+    /// Binary glTF 2.0 (`.glb`): 3D triangle meshes, written only.
+    Glb,
 }
 
-const SUPPORTED: &str = "supported: .wkt .geojson (2D), .obj .off (3D)";
+const SUPPORTED: &str = "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply (3D), .3mf .glb (3D, write only)";
 
 impl FileKind {
+    /// Every kind, in the order of the list of supported extensions.
+    pub const ALL: [FileKind; 9] = [
+        FileKind::Wkt,
+        FileKind::GeoJson,
+        FileKind::Svg,
+        FileKind::Obj,
+        FileKind::Off,
+        FileKind::Stl,
+        FileKind::Ply,
+        FileKind::ThreeMf,
+        FileKind::Glb,
+    ];
+
     /// The format of `path` by its extension (case-insensitive), or
-    /// [`UmbraError::UnsupportedFileType`] naming the file.
+    /// [`UmbraError::UnsupportedFileType`] naming the file and listing
+    /// every supported extension.
     ///
     /// ```
     /// use std::path::Path;
     /// use umbra::FileKind;
     /// assert_eq!(FileKind::from_path(Path::new("shape.WKT")).unwrap(), FileKind::Wkt);
-    /// assert!(FileKind::from_path(Path::new("part.off")).unwrap().is_mesh());
-    /// assert!(FileKind::from_path(Path::new("shape.txt")).is_err());
+    /// assert!(FileKind::from_path(Path::new("part.stl")).unwrap().is_mesh());
+    /// assert!(!FileKind::from_path(Path::new("part.glb")).unwrap().can_read());
+    /// let e = FileKind::from_path(Path::new("shape.txt")).unwrap_err().to_string();
+    /// assert!(e.contains(".3mf"), "{e}");
     /// ```
     pub fn from_path(path: &Path) -> Result<FileKind, UmbraError> {
         let file = path.display().to_string();
@@ -41,41 +78,75 @@ impl FileKind {
             .extension()
             .and_then(|e| e.to_str())
             .map(str::to_ascii_lowercase);
-        let detail = match ext.as_deref() {
-            Some("wkt") => return Ok(FileKind::Wkt),
-            Some("geojson") => return Ok(FileKind::GeoJson),
-            Some("obj") => return Ok(FileKind::Obj),
-            Some("off") => return Ok(FileKind::Off),
-            Some(e @ ("stl" | "ply" | "svg" | "png")) => {
-                format!("'.{e}' is not supported yet ({SUPPORTED})")
-            }
+        if let Some(kind) = FileKind::ALL
+            .into_iter()
+            .find(|k| Some(k.extension()) == ext.as_deref())
+        {
+            return Ok(kind);
+        }
+        let detail = match ext {
             Some(e) => format!("unknown extension '.{e}' ({SUPPORTED})"),
             None => format!("no file extension ({SUPPORTED})"),
         };
         Err(UmbraError::UnsupportedFileType { file, detail })
     }
 
+    /// The extension, without the dot (`"3mf"`).
+    pub fn extension(self) -> &'static str {
+        match self {
+            FileKind::Wkt => "wkt",
+            FileKind::GeoJson => "geojson",
+            FileKind::Svg => "svg",
+            FileKind::Obj => "obj",
+            FileKind::Off => "off",
+            FileKind::Stl => "stl",
+            FileKind::Ply => "ply",
+            FileKind::ThreeMf => "3mf",
+            FileKind::Glb => "glb",
+        }
+    }
+
+    /// The format's name for messages (`"STL"`).
+    pub fn name(self) -> &'static str {
+        match self {
+            FileKind::Wkt => "WKT",
+            FileKind::GeoJson => "GeoJSON",
+            FileKind::Svg => "SVG",
+            FileKind::Obj => "OBJ",
+            FileKind::Off => "OFF",
+            FileKind::Stl => "STL",
+            FileKind::Ply => "PLY",
+            FileKind::ThreeMf => "3MF",
+            FileKind::Glb => "glTF",
+        }
+    }
+
     /// `true` for the 3D mesh formats.
     pub fn is_mesh(self) -> bool {
-        matches!(self, FileKind::Obj | FileKind::Off)
+        matches!(
+            self,
+            FileKind::Obj
+                | FileKind::Off
+                | FileKind::Stl
+                | FileKind::Ply
+                | FileKind::ThreeMf
+                | FileKind::Glb
+        )
+    }
+
+    /// `true` if files of this kind can be read (all but `.svg`, `.3mf`
+    /// and `.glb`).
+    pub fn can_read(self) -> bool {
+        !matches!(self, FileKind::Svg | FileKind::ThreeMf | FileKind::Glb)
     }
 }
 
-/// Reads a file as UTF-8 text, naming the file on failure.
-pub(crate) fn read_text(path: &Path) -> Result<String, UmbraError> {
-    let file = path.display().to_string();
-    let bytes = std::fs::read(path).map_err(|source| UmbraError::Io {
-        file: file.clone(),
-        action: "read",
-        source,
-    })?;
-    String::from_utf8(bytes).map_err(|e| UmbraError::Parse {
-        file,
-        message: format!(
-            "not UTF-8 text (invalid byte at offset {})",
-            e.utf8_error().valid_up_to()
-        ),
-    })
+/// Reads a file as UTF-8 text (a leading byte-order mark dropped), naming
+/// the file and `format` on failure.
+pub(crate) fn read_text(path: &Path, format: &'static str) -> Result<String, UmbraError> {
+    let bytes = read_bytes(path)?;
+    let text = decode(&bytes, &path.display().to_string(), format)?;
+    Ok(text.to_string())
 }
 
 /// The error for a file of the wrong dimension.
@@ -86,19 +157,32 @@ fn wrong_dimension(path: &Path, want: &str) -> UmbraError {
     }
 }
 
+/// The error for reading a kind that is written only.
+fn write_only(path: &Path, kind: FileKind) -> UmbraError {
+    UmbraError::UnsupportedFileType {
+        file: path.display().to_string(),
+        detail: format!(
+            "'.{}' ({}) can be written but not read ({SUPPORTED})",
+            kind.extension(),
+            kind.name()
+        ),
+    }
+}
+
 /// Reads a 2D polygon set from a file whose format is decided by its
 /// extension.
 pub fn read_polygon_set(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
     match FileKind::from_path(path)? {
         FileKind::Wkt => read_wkt_file(path, options),
         FileKind::GeoJson => read_geojson_file(path, options),
-        FileKind::Obj | FileKind::Off => Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
+        FileKind::Svg => Err(write_only(path, FileKind::Svg)),
+        _ => Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
     }
 }
 
 /// Writes a 2D polygon set to a file whose format is decided by its
-/// extension. Returns the number of orphan holes of the by-role layout
-/// (see [`crate::PolygonLayout::orphan_holes`]).
+/// extension (`.wkt`, `.geojson`, `.svg`). Returns the number of orphan
+/// holes of the by-role layout (see [`crate::PolygonLayout::orphan_holes`]).
 pub fn write_polygon_set(
     path: &Path,
     set: &PolygonSet2,
@@ -107,14 +191,22 @@ pub fn write_polygon_set(
     match FileKind::from_path(path)? {
         FileKind::Wkt => write_wkt_file(path, set, orientation),
         FileKind::GeoJson => write_geojson_file(path, set, orientation),
-        FileKind::Obj | FileKind::Off => Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
+        FileKind::Svg => {
+            let (text, orphans) = polygon_set_to_svg(set).map_err(|e| rename(e, path))?;
+            write_bytes(path, text.as_bytes())?;
+            Ok(orphans)
+        }
+        _ => Err(wrong_dimension(path, "2D (.wkt, .geojson, .svg)")),
     }
 }
 
-/// Reads a 3D polygon mesh from an OBJ or OFF file (by extension):
-/// coordinates validated if `options` asks, and the closure constraints of
-/// section 4.2 checked when `check` is `true` (the first violation is
-/// returned as [`UmbraError::InvalidShape`] naming the file).
+/// Reads a 3D polygon mesh from an OBJ, OFF, STL or PLY file (by
+/// extension): coordinates validated if `options` asks, and the closure
+/// constraints of section 4.2 checked when `check` is `true` (the first
+/// violation is returned as [`UmbraError::InvalidMesh`] naming the file,
+/// the face or vertex with its line or record, and for an open edge the
+/// positions of its two vertices). STL triangles are welded by exact
+/// position (see [`crate::parse_stl`]).
 pub fn read_mesh(
     path: &Path,
     options: MeshReadOptions,
@@ -122,24 +214,82 @@ pub fn read_mesh(
 ) -> Result<PolygonMesh, UmbraError> {
     let kind = FileKind::from_path(path)?;
     if !kind.is_mesh() {
-        return Err(wrong_dimension(path, "3D (.obj, .off)"));
+        return Err(wrong_dimension(path, "3D (.obj, .off, .stl, .ply)"));
     }
-    let text = read_text(path)?;
-    read_mesh_text(
-        &text,
-        &path.display().to_string(),
-        kind == FileKind::Off,
-        options,
-        check,
-    )
+    if !kind.can_read() {
+        return Err(write_only(path, kind));
+    }
+    let file = path.display().to_string();
+    let bytes = read_bytes(path)?;
+    match kind {
+        FileKind::Stl => read_stl_bytes(&bytes, &file, options, check),
+        FileKind::Ply => read_ply_bytes(&bytes, &file, options, check),
+        _ => {
+            let text = decode(&bytes, &file, kind.name())?;
+            read_mesh_text(text, &file, kind == FileKind::Off, options, check)
+        }
+    }
 }
 
-/// Writes a 3D polygon mesh as OBJ or OFF (by extension). Facets with holes
-/// are written as their triangulation (section 4.8).
+/// Options for writing mesh files.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+pub struct MeshWriteOptions {
+    /// Write STL and PLY as text (ASCII) instead of binary (the default).
+    /// Other formats have one encoding.
+    pub text: bool,
+}
+
+/// Writes a 3D polygon mesh to a file whose format is decided by its
+/// extension, STL and PLY in binary (see [`write_mesh_with`]).
 pub fn write_mesh(path: &Path, mesh: &PolygonMesh) -> Result<(), UmbraError> {
-    match FileKind::from_path(path)? {
-        FileKind::Obj => write_mesh_file(path, mesh, false),
-        FileKind::Off => write_mesh_file(path, mesh, true),
-        _ => Err(wrong_dimension(path, "3D (.obj, .off)")),
+    write_mesh_with(path, mesh, MeshWriteOptions::default())
+}
+
+/// Writes a 3D polygon mesh as OBJ, OFF, STL, PLY, 3MF or binary glTF (by
+/// extension). Facets with holes are written as their triangulation
+/// (section 4.8); STL, 3MF and glTF hold triangles only, so every facet is
+/// triangulated there. STL (binary) and glTF store `f32` coordinates,
+/// rounded to nearest; the other formats keep every `f64` bit for bit.
+pub fn write_mesh_with(
+    path: &Path,
+    mesh: &PolygonMesh,
+    options: MeshWriteOptions,
+) -> Result<(), UmbraError> {
+    let bytes = match FileKind::from_path(path)? {
+        FileKind::Obj => return write_mesh_file(path, mesh, false),
+        FileKind::Off => return write_mesh_file(path, mesh, true),
+        FileKind::Stl => mesh_to_stl(mesh, options.text),
+        FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
+        FileKind::ThreeMf => mesh_to_3mf(mesh),
+        FileKind::Glb => mesh_to_glb(mesh),
+        _ => {
+            return Err(wrong_dimension(
+                path,
+                "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+            ))
+        }
+    }
+    .map_err(|e| rename(e, path))?;
+    write_bytes(path, &bytes)
+}
+
+/// An error of a writer about `<output>`, renamed to the file.
+fn rename(e: UmbraError, path: &Path) -> UmbraError {
+    rename_output(e, &path.display().to_string())
+}
+
+/// An error of a writer about `<output>`, renamed to `file`.
+pub(crate) fn rename_output(e: UmbraError, file: &str) -> UmbraError {
+    let file = file.to_string();
+    match e {
+        UmbraError::Unwritable {
+            format, message, ..
+        } => UmbraError::Unwritable {
+            file,
+            format,
+            message,
+        },
+        UmbraError::InvalidShape { source, .. } => UmbraError::InvalidShape { file, source },
+        other => other,
     }
 }

@@ -64,7 +64,7 @@ pub fn read_geojson_str(text: &str, options: ReadOptions) -> Result<PolygonSet2,
 /// Reads a GeoJSON file into a polygon set; errors name the file.
 pub fn read_geojson_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
     let file = path.display().to_string();
-    let text = super::files::read_text(path)?;
+    let text = super::files::read_text(path, FORMAT)?;
     parse_set(&text, &file, options)
 }
 

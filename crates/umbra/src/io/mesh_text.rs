@@ -7,18 +7,23 @@
 //! ignored. OFF: the `OFF` header (or `COFF`/`NOFF`/`CNOFF`), optional `#`
 //! comments, the counts line, the vertices and the faces (`k i1 .. ik`,
 //! 0-based, any trailing colour values ignored). Text with a control
-//! character other than whitespace is rejected as binary data.
+//! character other than whitespace is rejected as binary data; a leading
+//! UTF-8 byte-order mark is dropped. A literal too large for `f64`
+//! (`1e400`) is an error naming it, not an infinity.
 //!
 //! A reader only parses: indices out of range are left in the mesh so that
 //! [`topology::PolygonMesh::check_topology`] names them (dangling index,
-//! facet or shape boundary closure, section 4.2). Coordinates are
-//! validated on request ([`MeshReadOptions`]).
+//! facet or shape boundary closure, section 4.2) in the file's terms: faces
+//! counted from 1 with their line, vertices in the file's numbering.
+//! Coordinates are validated on request ([`MeshReadOptions`]).
 //!
 //! Writers print coordinates in the shortest form that reads back to the
 //! same `f64`. OBJ and OFF faces have no holes, so a facet with several
 //! loops is written as its triangulation by internal edges only (section
 //! 4.8), which keeps the mesh closed.
 
+use super::origin::{finish, Origins};
+use super::text::{parse_number, shorten, strip_bom};
 use crate::UmbraError;
 use boolean_3d::triangulate_facet;
 use robust_arith::Point3;
@@ -69,22 +74,7 @@ fn parse_f64(
     format: &'static str,
     line: usize,
 ) -> Result<f64, UmbraError> {
-    token.parse::<f64>().map_err(|_| {
-        malformed(
-            file,
-            format,
-            line,
-            format!("'{}' is not a number", shorten(token)),
-        )
-    })
-}
-
-fn shorten(s: &str) -> String {
-    if s.chars().count() > 24 {
-        format!("{}...", s.chars().take(24).collect::<String>())
-    } else {
-        s.to_string()
-    }
+    parse_number(token).map_err(|message| malformed(file, format, line, message))
 }
 
 /// Rejects text holding an ASCII control character other than whitespace
@@ -116,8 +106,18 @@ fn reject_binary(text: &str, file: &str, format: &'static str) -> Result<(), Umb
 
 /// Parses OBJ text into a polygon mesh (unchecked; see the module docs).
 pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
+    parse_obj_with_origins(text, file).map(|(mesh, _)| mesh)
+}
+
+/// [`parse_obj`] with the line of every vertex and face.
+pub(crate) fn parse_obj_with_origins(
+    text: &str,
+    file: &str,
+) -> Result<(PolygonMesh, Origins), UmbraError> {
     const F: &str = "OBJ";
+    let text = strip_bom(text);
     reject_binary(text, file, F)?;
+    let mut origins = Origins::new(1, "face", "line");
     let mut vertices: Vec<Point3> = Vec::new();
     let mut facets: Vec<Facet> = Vec::new();
     let mut loop_: Vec<u32> = Vec::new();
@@ -142,6 +142,7 @@ pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
                     return Err(malformed(file, F, line_no, "too many vertices"));
                 }
                 vertices.push(p);
+                origins.vertex_places.push(line_no as u32);
             }
             Some("f") => {
                 loop_.clear();
@@ -192,6 +193,7 @@ pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
                     return Err(malformed(file, F, line_no, "too many faces"));
                 }
                 facets.push(Facet::from_loop(&loop_));
+                origins.face_places.push(line_no as u32);
             }
             _ => {}
         }
@@ -201,13 +203,23 @@ pub fn parse_obj(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
             file: file.to_string(),
         });
     }
-    Ok(PolygonMesh::new(vertices, facets))
+    Ok((PolygonMesh::new(vertices, facets), origins))
 }
 
 /// Parses OFF text into a polygon mesh (unchecked; see the module docs).
 pub fn parse_off(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
+    parse_off_with_origins(text, file).map(|(mesh, _)| mesh)
+}
+
+/// [`parse_off`] with the line of every vertex and face.
+pub(crate) fn parse_off_with_origins(
+    text: &str,
+    file: &str,
+) -> Result<(PolygonMesh, Origins), UmbraError> {
     const F: &str = "OFF";
+    let text = strip_bom(text);
     reject_binary(text, file, F)?;
+    let mut origins = Origins::new(0, "face", "line");
     // Tokens with their line numbers, comments removed.
     let mut lines = text
         .lines()
@@ -265,8 +277,9 @@ pub fn parse_off(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
         Ok(n)
     };
     let (nv, nf) = (count(counts[0])?, count(counts[1])?);
-    // Capacity bounded by the text size: every entry needs a line.
-    let mut vertices = Vec::with_capacity(nv.min(text.len() / 2 + 1));
+    // Capacity bounded by the text size: a vertex line takes at least 6
+    // bytes (`0 0 0\n`), a face line at least 8 (`3 0 1 2\n`).
+    let mut vertices = Vec::with_capacity(nv.min(text.len() / 6 + 1));
     for k in 0..nv {
         let (n, l) = lines.next().ok_or_else(|| {
             malformed(
@@ -285,8 +298,9 @@ pub fn parse_off(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
             *slot = parse_f64(t, file, F, n)?;
         }
         vertices.push(p);
+        origins.vertex_places.push(n as u32);
     }
-    let mut facets = Vec::with_capacity(nf.min(text.len() / 2 + 1));
+    let mut facets = Vec::with_capacity(nf.min(text.len() / 8 + 1));
     let mut loop_ = Vec::new();
     for k in 0..nf {
         let (n, l) = lines.next().ok_or_else(|| {
@@ -326,8 +340,9 @@ pub fn parse_off(text: &str, file: &str) -> Result<PolygonMesh, UmbraError> {
             loop_.push(v);
         }
         facets.push(Facet::from_loop(&loop_));
+        origins.face_places.push(n as u32);
     }
-    Ok(PolygonMesh::new(vertices, facets))
+    Ok((PolygonMesh::new(vertices, facets), origins))
 }
 
 /// Reads an OBJ or OFF file (by extension) into a polygon mesh: parsed,
@@ -341,27 +356,17 @@ pub(crate) fn read_mesh_text(
     options: MeshReadOptions,
     check: bool,
 ) -> Result<PolygonMesh, UmbraError> {
-    let mesh = if off {
-        parse_off(text, file)?
+    let (mesh, origins) = if off {
+        parse_off_with_origins(text, file)?
     } else {
-        parse_obj(text, file)?
+        parse_obj_with_origins(text, file)?
     };
-    let invalid = |source| UmbraError::InvalidShape {
-        file: file.to_string(),
-        source,
-    };
-    if options.validate_coordinates {
-        mesh.validate_coordinates().map_err(invalid)?;
-    }
-    if check {
-        mesh.check_topology().map_err(invalid)?;
-    }
-    Ok(mesh)
+    finish(mesh, &origins, file, options, check)
 }
 
 /// The faces to write: each facet's single loop, or the triangles of a
 /// facet with several loops (section 4.8).
-fn faces(mesh: &PolygonMesh) -> Vec<Vec<u32>> {
+pub(crate) fn faces(mesh: &PolygonMesh) -> Vec<Vec<u32>> {
     let mut out = Vec::with_capacity(mesh.facets.len());
     let mut tris = Vec::new();
     let mut hes = Vec::new();
@@ -395,7 +400,7 @@ pub fn mesh_to_obj(mesh: &PolygonMesh) -> String {
     for f in &faces {
         s.push('f');
         for v in f {
-            let _ = write!(s, " {}", v + 1);
+            let _ = write!(s, " {}", u64::from(*v) + 1);
         }
         s.push('\n');
     }
@@ -511,6 +516,13 @@ mod tests {
                 "{text:?}: {e}"
             );
         }
+    }
+
+    #[test]
+    fn the_largest_reference_is_written_back_without_overflow() {
+        let m = parse_obj("v 0 0 0\nv 1 0 0\nf 1 2 4294967296\n", "w.obj").unwrap();
+        assert_eq!(m.facets[0].half_edges[1].end, u32::MAX);
+        assert!(mesh_to_obj(&m).contains("f 1 2 4294967296\n"));
     }
 
     #[test]

@@ -1,23 +1,43 @@
 //! File input and output (feature `io`): 2D polygon sets as WKT and
-//! GeoJSON, 3D meshes as OBJ and OFF, `geo-types` conversions, and the
-//! dispatch by file extension ([`FileKind`]). Every reader names the file
-//! and the problem in its error; a reader never panics.
+//! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL and
+//! PLY (read and write), 3MF and binary glTF (write); `geo-types`
+//! conversions; and the dispatch by file extension ([`FileKind`]). Every
+//! reader names the file, the line or record, and the problem in its
+//! error; a reader never panics, and no count in a file makes it reserve
+//! more memory than the file's size can justify.
 
 mod files;
 mod geo;
 mod geojson;
+mod glb;
 mod mesh_text;
+mod origin;
+mod ply;
 mod rings;
+mod stl;
+mod svg;
+mod text;
+mod threemf;
 mod wkt;
+mod wkt_diagnose;
 
-pub use files::{read_mesh, read_polygon_set, write_mesh, write_polygon_set, FileKind};
+pub(crate) use files::rename_output;
+pub use files::{
+    read_mesh, read_polygon_set, write_mesh, write_mesh_with, write_polygon_set, FileKind,
+    MeshWriteOptions,
+};
 pub use geo::{from_geo, to_geo};
 pub use geojson::{
     parse_geojson_polygons, polygons_to_geojson, read_geojson_file, read_geojson_str,
     write_geojson_file, write_geojson_string,
 };
+pub use glb::mesh_to_glb;
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
+pub use ply::{mesh_to_ply, parse_ply};
 pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};
+pub use stl::{mesh_to_stl, parse_stl};
+pub use svg::polygon_set_to_svg;
+pub use threemf::mesh_to_3mf;
 pub use wkt::{
     parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
     write_wkt_string, ReadOptions,

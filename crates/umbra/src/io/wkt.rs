@@ -7,6 +7,8 @@
 //! write followed by a read gives the same `f64` values bit for bit.
 
 use super::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
+use super::text::strip_bom;
+use super::wkt_diagnose::{diagnose, find_overflow};
 use crate::{RingOrientation, UmbraError};
 use robust_arith::Point2;
 use std::fmt::Write as _;
@@ -71,29 +73,29 @@ pub fn read_wkt_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, U
         action: "read",
         source,
     })?;
-    let text = std::str::from_utf8(&bytes).map_err(|e| UmbraError::Parse {
-        file: file.clone(),
-        message: format!(
-            "not UTF-8 text (invalid byte at offset {})",
-            e.valid_up_to()
-        ),
-    })?;
+    let text = super::text::decode(&bytes, &file, "WKT")?;
     parse_wkt(text, &file, options)
 }
 
 /// Reads WKT text into polygons of open rings (no closing duplicates),
 /// without building a set; `file` names the source in errors.
 pub fn parse_wkt_polygons(text: &str, file: &str) -> Result<Polygons, UmbraError> {
-    let text = text.strip_prefix('\u{feff}').unwrap_or(text);
+    let text = strip_bom(text);
     if text.trim().is_empty() {
         return Err(UmbraError::Empty {
             file: file.to_string(),
         });
     }
     prescan(text, file)?;
+    if let Some(message) = find_overflow(text) {
+        return Err(UmbraError::Parse {
+            file: file.to_string(),
+            message,
+        });
+    }
     let geometry = Wkt::<f64>::from_str(text).map_err(|msg| UmbraError::Parse {
         file: file.to_string(),
-        message: explain_parse_error(text, msg),
+        message: diagnose(text).unwrap_or_else(|| explain_parse_error(text, msg)),
     })?;
     let mut polygons = Polygons::new();
     collect_polygons(&geometry, file, "", &mut polygons)?;
@@ -170,7 +172,7 @@ fn prescan(text: &str, file: &str) -> Result<(), UmbraError> {
 }
 
 /// `line L, column C` of byte offset `i` (1-based).
-fn position(text: &str, i: usize) -> String {
+pub(crate) fn position(text: &str, i: usize) -> String {
     let before = text.get(..i).unwrap_or(text);
     let line = before.matches('\n').count() + 1;
     let column = before.rsplit('\n').next().map_or(0, |l| l.chars().count()) + 1;
@@ -444,13 +446,20 @@ mod tests {
             ("POLYGON ((0 0, NaN 0, 1 1, 0 0))", "'NaN' is not a finite"),
             ("POLYGON ((0 0, inf 0, 1 1, 0 0))", "'inf' is not a finite"),
             ("POLYGON ((0 0, -inf 0, 1 1, 0 0))", "not finite"),
-            ("POLYGON ((0 0, 1e309 0, 1 1, 0 0))", "not finite"),
+            (
+                "POLYGON ((0 0, 1e309 0, 1 1, 0 0))",
+                "'1e309' overflows f64 (beyond ±1.8e308, so not finite) at line 1, column 16",
+            ),
+            (
+                "POLYGON ((0 0, 1 0, 1 x, 0 0))",
+                "'x' at line 1, column 23 is not a number",
+            ),
             (
                 "POLYGON ((0 0, 1 1e308, 1 1, 0 0))",
                 "polygon 1, ring 1, point 2: y coordinate 1e308 exceeds",
             ),
             ("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))", "only 2D"),
-            ("POLYGON ((0 0, 1 0, 1 x, 0 0))", "malformed"),
+            ("POLYGON ((0 0, 1 0, 1 x, 0 0))", "malformed WKT"),
             ("hello", "expected a geometry"),
             ("POLYGON EMPTY trailing words here", "expected a geometry"),
         ];
