@@ -4,34 +4,10 @@
 //! huge counts, NaN, bad indices, a byte-order mark, non-UTF-8 text, an
 //! open soup): exit 1 and one line naming the file, never a panic.
 
+mod common;
+
+use common::{stderr, temp_dir, umbra};
 use std::path::{Path, PathBuf};
-use std::process::{Command, Output};
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-static COUNTER: AtomicUsize = AtomicUsize::new(0);
-
-fn temp_dir(tag: &str) -> PathBuf {
-    let n = COUNTER.fetch_add(1, Ordering::SeqCst);
-    let dir = std::env::temp_dir().join(format!("umbra-fmt-{}-{n}-{tag}", std::process::id()));
-    let _ = std::fs::remove_dir_all(&dir);
-    std::fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn umbra<I, S>(args: I) -> Output
-where
-    I: IntoIterator<Item = S>,
-    S: AsRef<std::ffi::OsStr>,
-{
-    Command::new(env!("CARGO_BIN_EXE_umbra"))
-        .args(args)
-        .output()
-        .unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
-}
 
 /// An ASCII STL of the axis-aligned box `[lo, hi]`, outward triangles.
 fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {

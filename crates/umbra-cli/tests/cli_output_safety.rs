@@ -5,31 +5,12 @@
 //! count the rings and points the output file actually holds (read back by
 //! an independent reader here).
 
+mod common;
+
+use common::{examples, stderr, temp_dir, write};
 use std::fs;
 use std::path::{Path, PathBuf};
 use std::process::{Command, Output, Stdio};
-use std::sync::atomic::{AtomicUsize, Ordering};
-
-static COUNTER: AtomicUsize = AtomicUsize::new(0);
-
-/// A fresh, empty temporary directory unique to this process and call.
-fn temp_dir(tag: &str) -> PathBuf {
-    let n = COUNTER.fetch_add(1, Ordering::SeqCst);
-    let dir = std::env::temp_dir().join(format!("umbra-safety-{}-{n}-{tag}", std::process::id()));
-    let _ = fs::remove_dir_all(&dir);
-    fs::create_dir_all(&dir).unwrap();
-    dir
-}
-
-fn write(dir: &Path, name: &str, text: &str) -> PathBuf {
-    let p = dir.join(name);
-    fs::write(&p, text).unwrap();
-    p
-}
-
-fn examples() -> PathBuf {
-    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
 
 fn umbra(args: &[&Path]) -> Output {
     Command::new(env!("CARGO_BIN_EXE_umbra"))
@@ -59,10 +40,6 @@ fn umbra_closed_pipe(args: &[&Path]) -> Output {
         .unwrap();
     drop(child.stdout.take());
     child.wait_with_output().unwrap()
-}
-
-fn stderr(o: &Output) -> String {
-    String::from_utf8_lossy(&o.stderr).into_owned()
 }
 
 fn p(s: &str) -> &Path {
