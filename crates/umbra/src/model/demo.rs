@@ -5,7 +5,7 @@
 //!
 //! Parts that join overlap by a small positive amount (a column stands
 //! 1 cm deep in its base plate, a pipe end sinks into the vessel it
-//! feeds, a pipe runs 2 cm into its elbow) and no two parts share a face,
+//! feeds, a pipe runs 1 cm into its elbow) and no two parts share a face,
 //! an edge or a tangent: until the smoothing pass exists the basic
 //! Boolean resolves such coincidences by symbolic perturbation, which is
 //! topologically valid but leaves zero-thickness sheets and slivers.
@@ -140,10 +140,10 @@ fn half_turned(node: CsgNode, segments: u32) -> CsgNode {
 }
 
 /// A quarter torus (tube radius `r`, bend radius `rb`) joining the
-/// direction `d1` into `d2` at the corner `c`; its ends lie in the planes
-/// through `c - d1 rb` normal to `d1` and through `c + d2 rb` normal to
-/// `d2`. The torus is turned by half a segment about its axis so that
-/// those planes cut its facets rather than hold its meridian edges.
+/// direction `d1` into `d2` at the corner `c`. Its ends lie `cut` past the
+/// planes through `c - d1 rb` normal to `d1` and through `c + d2 rb`
+/// normal to `d2` (where the torus has meridian edges), so that they cut
+/// the torus's facets rather than hold its edges.
 fn elbow_quarter(
     r: f64,
     rb: f64,
@@ -152,12 +152,15 @@ fn elbow_quarter(
     c: DVec3,
     res: Res,
     margin: f64,
+    cut: f64,
 ) -> CsgNode {
     let e = rb + r + margin;
-    let quadrant =
-        CsgNode::cuboid([e, e, 2.0 * (r + margin)], false).translated([0.0, 0.0, -(r + margin)]);
-    let around = 4 * (res.pipe / 2).max(3);
-    let ring = half_turned(CsgNode::torus(rb, r, [around, res.pipe]), around);
+    let quadrant = CsgNode::cuboid([e + cut, e + cut, 2.0 * (r + margin)], false).translated([
+        -cut,
+        -cut,
+        -(r + margin),
+    ]);
+    let ring = CsgNode::torus(rb, r, [4 * (res.pipe / 2).max(3), res.pipe]);
     let q = CsgNode::intersection(vec![ring, quadrant]);
     let x = d1;
     let y = -d2;
@@ -172,7 +175,7 @@ fn elbow_quarter(
 const ELBOW: f64 = 1.12;
 
 /// How far a straight runs into its elbow.
-const SOCKET: f64 = 0.02;
+const SOCKET: f64 = 0.01;
 
 /// A hollow pipe along the axis-aligned polyline `points` (each corner a
 /// right angle, each straight at least `2 rb` long between corners), with
@@ -231,8 +234,8 @@ fn pipe_run(points: &[DVec3], r: f64, rb: f64, res: Res) -> CsgNode {
         if i + 2 < n {
             let d2 = dir(i + 1);
             let c = points[i + 1];
-            outer.push(elbow_quarter(ELBOW * r, rb, d, d2, c, res, 0.01));
-            bores.push(elbow_quarter(ELBOW * ri, rb, d, d2, c, res, 0.01));
+            outer.push(elbow_quarter(ELBOW * r, rb, d, d2, c, res, 0.01, 0.004));
+            bores.push(elbow_quarter(ELBOW * ri, rb, d, d2, c, res, 0.01, 0.004));
         }
     }
     CsgNode::difference(vec![CsgNode::union(outer), CsgNode::union(bores)])
@@ -347,10 +350,10 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
         );
         z += 1.5;
     }
-    // Manway on the -x side at mid height: a stub (10 cm deep in the
+    // Manway on the -x side below the first ring: a stub (10 cm deep in the
     // shell) and a blind flange (the stub 1 cm deep in it) with twelve bolt
     // heads (1 cm deep in it).
-    let mz = z0 + 0.9;
+    let mz = z0 + 0.7;
     let stub = along(
         half_turned(CsgNode::cylinder(0.3, 0.44, res.pipe, false), res.pipe),
         -DVec3::X,
@@ -446,6 +449,11 @@ fn pump(x: f64, y: f64, res: Res) -> CsgNode {
 /// # Ok::<(), umbra::ModelError>(())
 /// ```
 pub fn demo_plant(detail: DemoDetail) -> CsgNode {
+    CsgNode::union(plant_parts(detail))
+}
+
+/// The parts of the plant (the children of its root union).
+fn plant_parts(detail: DemoDetail) -> Vec<CsgNode> {
     let res = detail.res();
     let platform = CsgNode::difference(vec![
         block(v(5.8, 0.0, 5.9), v(8.2, 2.4, 6.0)),
@@ -508,12 +516,30 @@ pub fn demo_plant(detail: DemoDetail) -> CsgNode {
     for run in &runs {
         parts.push(pipe_run(run, r, rb, res));
     }
-    CsgNode::union(parts)
+    parts
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    #[ignore]
+    fn probe_parts() {
+        for detail in [DemoDetail::Coarse, DemoDetail::Full] {
+            let parts = plant_parts(detail);
+            for (i, p) in parts.iter().enumerate() {
+                for triangulate in [false, true] {
+                    let out = crate::evaluate_csg(p, crate::CsgOptions { triangulate }).unwrap();
+                    let r = crate::check_mesh(&out.mesh);
+                    eprintln!(
+                        "PART {detail:?} {i} tri={triangulate}: nm {:?} self {:?}",
+                        r.non_manifold_edges, r.self_intersecting_facet_pairs
+                    );
+                }
+            }
+        }
+    }
 
     #[test]
     fn every_axis_rotation_has_exact_angles() {
