@@ -118,7 +118,9 @@ fn along(node: CsgNode, d: DVec3, at: DVec3) -> CsgNode {
 /// the pipe run).
 fn flange(r: f64, d: DVec3, at: DVec3, res: Res) -> CsgNode {
     let t = 0.3 * r;
-    let disc = half_turned(CsgNode::cylinder(2.2 * r, t, res.pipe, true), res.pipe);
+    // Not turned like the pipe: the pipe's edges then pierce the disc's
+    // faces away from the diagonals through its corners.
+    let disc = CsgNode::cylinder(2.2 * r, t, res.pipe, true);
     let mut parts = vec![disc];
     for k in 0..8 {
         let a = (f64::from(k) * 45.0 + 22.5).to_radians();
@@ -323,8 +325,11 @@ fn vertical_vessel(x: f64, y: f64, r: f64, z0: f64, z1: f64, res: Res) -> CsgNod
     ]);
     let rc = 1.6 * r;
     let depth = rc - (rc * rc - r * r).sqrt();
+    // The dish's sphere is turned by half a segment: it crosses the
+    // trimming cylinder and the skirt's inside, whose meridian edges would
+    // otherwise meet its own.
     let bottom = CsgNode::intersection(vec![
-        CsgNode::sphere(rc, s).translated([x, y, z0 - depth + rc]),
+        half_turned(CsgNode::sphere(rc, s), s).translated([x, y, z0 - depth + rc]),
         CsgNode::cylinder(r - 0.03, depth + 0.05, s, false).translated([
             x,
             y,
@@ -538,6 +543,54 @@ mod tests {
                     );
                 }
             }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn probe_run() {
+        let res = DemoDetail::Coarse.res();
+        let run = [v(11.8, -1.5, 1.3), v(11.8, -1.5, 0.6), v(11.8, 1.0, 0.6)];
+        let CsgNode { shape: crate::model::tree::CsgShape::Op { children, .. }, .. } = pipe_run(&run, 0.12, 0.4, res) else { panic!() };
+        let CsgNode { shape: crate::model::tree::CsgShape::Op { children: outer, .. }, .. } = children[0].clone() else { panic!() };
+        for i in 0..outer.len() {
+            let out = crate::evaluate_csg(&outer[i], crate::CsgOptions::default()).unwrap();
+            let r = crate::check_mesh(&out.mesh);
+            eprintln!("RUN outer {i}: self {:?}", r.self_intersecting_facet_pairs);
+            let p = CsgNode::difference(vec![outer[i].clone(), children[1].clone()]);
+            let out = crate::evaluate_csg(&p, crate::CsgOptions::default()).unwrap();
+            let r = crate::check_mesh(&out.mesh);
+            eprintln!("RUN outer {i} - bores: self {:?}", r.self_intersecting_facet_pairs);
+        }
+        for (k, c) in children.iter().enumerate() {
+            let out = crate::evaluate_csg(c, crate::CsgOptions::default()).unwrap();
+            let r = crate::check_mesh(&out.mesh);
+            eprintln!("RUN child {k}: self {:?}", r.self_intersecting_facet_pairs);
+        }
+        for i in 0..outer.len() {
+            for j in i + 1..outer.len() {
+                let p = CsgNode::union(vec![outer[i].clone(), outer[j].clone()]);
+                let out = crate::evaluate_csg(&p, crate::CsgOptions::default()).unwrap();
+                let r = crate::check_mesh(&out.mesh);
+                eprintln!("RUN pair {i} {j}: self {:?}", r.self_intersecting_facet_pairs);
+            }
+        }
+    }
+
+    #[test]
+    #[ignore]
+    fn probe_vessel() {
+        let res = DemoDetail::Full.res();
+        let CsgNode { shape: crate::model::tree::CsgShape::Op { children, .. }, .. } = vertical_vessel(2.5, 0.0, 1.0, 1.5, 5.0, res) else { panic!() };
+        let n = children.len();
+        for i in 1..n {
+            let p = CsgNode::union(vec![children[0].clone(), children[i].clone()]);
+            let out = crate::evaluate_csg(&p, crate::CsgOptions::default()).unwrap();
+            let r = crate::check_mesh(&out.mesh);
+            eprintln!("VESSEL shell+{i}: self {:?}", r.self_intersecting_facet_pairs);
+            let out = crate::evaluate_csg(&children[i], crate::CsgOptions::default()).unwrap();
+            let r = crate::check_mesh(&out.mesh);
+            eprintln!("VESSEL {i} alone: self {:?}", r.self_intersecting_facet_pairs);
         }
     }
 
