@@ -11,8 +11,9 @@
 //! topologically valid but leaves zero-thickness sheets and slivers.
 //! Coaxial round parts are nested (a head slightly inside its shell, an
 //! elbow slightly fatter than its pipe), and round parts whose edges would
-//! otherwise meet the edges of a neighbour exactly are turned by part of a
-//! segment about their axis.
+//! otherwise meet the edges of a neighbour exactly are turned by half a
+//! segment about their axis (or, for a pipe entering a head on its axis,
+//! moved off that axis).
 
 use super::transform::Transform;
 use super::tree::CsgNode;
@@ -174,8 +175,9 @@ const SOCKET: f64 = 0.01;
 /// A hollow pipe along the axis-aligned polyline `points` (each corner a
 /// right angle, each straight at least `2 rb` long between corners), with
 /// socket elbows (tori of bend radius `rb`, tube `1.12 r`), outer radius
-/// `r`, wall `0.2 r`, and bolted flanges 0.3 m from each end and in pairs
-/// (with a gasket gap) at the middle of long straights.
+/// `r`, wall `0.2 r`, and bolted flanges 0.3 m from each end (halfway
+/// along a shorter end straight) and in pairs (with a gasket gap) at the
+/// middle of long straights.
 fn pipe_run(points: &[DVec3], r: f64, rb: f64, res: Res) -> CsgNode {
     let ri = 0.8 * r;
     let n = points.len();
