@@ -118,8 +118,12 @@ fn the_bracket_example_has_its_polyhedral_volume() {
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
     assert!(out.report.topologically_valid);
     assert_eq!(out.report.booleans, 4);
+    // The plate [0, 80] x [0, 40] x [0, 6] and the upright [1, 7] x [1, 39] x
+    // [3, 56] (sunk 3 into the plate, so 50 of its height stands above it),
+    // minus two vertical holes through the plate and one horizontal hole
+    // through the upright's thickness of 6.
     let want =
-        80.0 * 40.0 * 6.0 + 6.0 * 40.0 * 50.0 - 2.0 * ngon(32, 4.0) * 6.0 - ngon(32, 5.0) * 6.0;
+        80.0 * 40.0 * 6.0 + 6.0 * 38.0 * 50.0 - 2.0 * ngon(32, 4.0) * 6.0 - ngon(32, 5.0) * 6.0;
     assert!(
         close(out.report.volume, want, 1e-12),
         "{} vs {want}",

@@ -1,0 +1,120 @@
+//! Clean solids from the shipped CSG examples and the demo scene: their
+//! parts overlap by a positive amount instead of touching or sharing
+//! faces, so the basic Boolean (which resolves coincidences by symbolic
+//! perturbation, leaving zero-thickness sheets and slivers) gives
+//! 2-manifold output without self-intersecting facet pairs, in the
+//! polygon variant and the triangle variant.
+
+use std::path::{Path, PathBuf};
+use std::time::Instant;
+use umbra::{check_mesh, demo_plant, evaluate_csg, read_csg_file, CsgNode, CsgOptions, DemoDetail};
+
+fn examples() -> PathBuf {
+    Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
+}
+
+/// Evaluates `tree` in both variants and asserts a valid, 2-manifold
+/// solid, without self-intersecting facet pairs in the polygon variant;
+/// returns the volumes (polygon, triangle) and the triangle variant's
+/// self-intersecting pairs (see `triangle_variant_rounding_reproducer`).
+fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
+    let mut volumes = [0.0; 2];
+    let mut tri_pairs = 0;
+    for (k, triangulate) in [false, true].into_iter().enumerate() {
+        let t = Instant::now();
+        let out = evaluate_csg(tree, CsgOptions { triangulate }).unwrap();
+        let r = check_mesh(&out.mesh);
+        eprintln!(
+            "{what} (triangulate {triangulate}): {:.1} s, {} facets, 2-manifold {:?}, self-intersecting pairs {:?}, volume {:?}",
+            t.elapsed().as_secs_f64(),
+            r.facets,
+            r.two_manifold,
+            r.self_intersecting_facet_pairs,
+            r.signed_volume,
+        );
+        assert!(r.is_valid(), "{what}: {:?}", r.topology_error);
+        assert!(out.report.topologically_valid, "{what}");
+        assert_eq!(out.mesh.check_topology(), Ok(()));
+        assert_eq!(r.non_manifold_edges, Some(0), "{what} ({triangulate})");
+        assert_eq!(r.non_manifold_vertices, Some(0), "{what} ({triangulate})");
+        assert_eq!(r.two_manifold, Some(true), "{what} ({triangulate})");
+        let pairs = r.self_intersecting_facet_pairs.unwrap();
+        if triangulate {
+            tri_pairs = pairs;
+        } else {
+            assert_eq!(pairs, 0, "{what}: self-intersecting facet pairs");
+        }
+        volumes[k] = r.signed_volume.unwrap();
+        assert!(volumes[k] > 0.0);
+        if triangulate {
+            assert!(out.mesh.facets.iter().all(|f| f.half_edges.len() == 3));
+        }
+    }
+    (volumes, tri_pairs)
+}
+
+#[test]
+fn every_shipped_example_is_a_clean_solid() {
+    let mut names = Vec::new();
+    for entry in std::fs::read_dir(examples()).unwrap() {
+        let path = entry.unwrap().path();
+        if path.extension().and_then(|e| e.to_str()) == Some("json") {
+            names.push(path);
+        }
+    }
+    names.sort();
+    assert!(names.len() >= 4, "examples/*.json missing");
+    for path in names {
+        let tree = read_csg_file(&path).unwrap();
+        let ([p, t], _) = assert_clean(&tree, &path.display().to_string());
+        assert!((p - t).abs() <= 1e-9 * p, "{}: {p} vs {t}", path.display());
+    }
+}
+
+#[test]
+fn the_demo_plant_is_a_clean_solid_at_both_details() {
+    // The full scene takes about a second at the test profile's opt-level.
+    for detail in [DemoDetail::Coarse, DemoDetail::Full] {
+        let tree = demo_plant(detail);
+        assert!(tree.boolean_count() >= 300);
+        let ([p, t], _) = assert_clean(&tree, &format!("{detail:?} demo"));
+        assert!(p > 30.0 && p < 60.0, "{p}");
+        assert!((p - t).abs() <= 1e-9 * p, "{detail:?}: {p} vs {t}");
+    }
+}
+
+/// The triangle variant (every leaf and result triangulated) still gives
+/// self-intersecting facet pairs on shapes in general position, where the
+/// polygon variant gives none: this box minus a small sphere sunk into its
+/// top face off centre (no shared faces, edges or vertices, no tangency)
+/// gives 3 pairs. The box's top face is triangulated along its diagonal
+/// `y = x`; that diagonal crosses a triangle of the sphere at a point the
+/// Boolean computes in f64 as `(0.18041049469791504, 0.18041049469791506,
+/// 1)`, an ulp off the diagonal, and splitting the diagonal there makes
+/// two coplanar triangles of the top face overlap in a sliver (a fold of
+/// an ulp, counted by the exact check) and a sphere triangle cross one of
+/// them. The polygon variant keeps the face as one facet with a hole. This
+/// is a defect of the inexact triangle variant, not of the model (the
+/// output is valid and 2-manifold, but not geometrically valid), left to
+/// the data-smoothing pass; the shipped examples and the demo show the
+/// same in their triangle variant (hence only 2-manifoldness is required
+/// of it above).
+#[test]
+#[ignore = "the triangle variant leaves folded slivers on cut faces"]
+fn triangle_variant_rounding_reproducer() {
+    let tree = umbra::parse_csg(
+        r#"{"op": "difference", "children": [
+            {"box": {"size": 2, "center": true}},
+            {"sphere": {"radius": 0.2, "segments": 16}, "translate": [0.03, 0.07, 1.05]}]}"#,
+    )
+    .unwrap();
+    let polygon = evaluate_csg(&tree, CsgOptions::default()).unwrap();
+    assert_eq!(
+        check_mesh(&polygon.mesh).self_intersecting_facet_pairs,
+        Some(0)
+    );
+    let triangles = evaluate_csg(&tree, CsgOptions { triangulate: true }).unwrap();
+    let r = check_mesh(&triangles.mesh);
+    assert_eq!(r.two_manifold, Some(true));
+    assert_eq!(r.self_intersecting_facet_pairs, Some(0));
+}
