@@ -31,6 +31,17 @@ pub struct OutputArgs {
     /// Write a JSON report (counts, validity, epsilon, timings) here.
     #[arg(long)]
     pub report: Option<PathBuf>,
+    /// STL and PLY output as text (ASCII; every f64 kept bit for bit)
+    /// instead of binary (STL binary stores f32).
+    #[arg(long)]
+    pub ascii: bool,
+}
+
+impl OutputArgs {
+    /// The mesh writer's options these arguments ask for.
+    pub fn mesh_options(&self) -> umbra::MeshWriteOptions {
+        umbra::MeshWriteOptions { text: self.ascii }
+    }
 }
 
 impl OutputArgs {

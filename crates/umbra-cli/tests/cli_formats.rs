@@ -6,7 +6,7 @@
 
 mod common;
 
-use common::{stderr, temp_dir, umbra};
+use common::{examples, json, stderr, temp_dir, umbra};
 use std::path::{Path, PathBuf};
 
 /// An ASCII STL of the axis-aligned box `[lo, hi]`, outward triangles.
@@ -182,4 +182,41 @@ fn an_obj_with_a_byte_order_mark_reads_like_one_without() {
     assert_eq!(ja["signed_volume"], jb["signed_volume"]);
     assert_eq!(ja["vertices"], 4);
     assert_eq!(jb["vertices"], 4);
+}
+
+#[test]
+fn ascii_stl_and_ply_keep_every_f64() {
+    let dir = temp_dir("ascii");
+    let script = examples().join("bracket.json");
+    for ext in ["stl", "ply"] {
+        let out = dir.join(format!("b.{ext}"));
+        let report = dir.join(format!("b-{ext}.json"));
+        let o = umbra([
+            "csg".as_ref(),
+            script.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+            "--report".as_ref(),
+            report.as_os_str(),
+            "--ascii".as_ref(),
+            "--quiet".as_ref(),
+        ]);
+        assert!(o.status.success(), "{ext}: {}", stderr(&o));
+        let text = std::fs::read_to_string(&out).unwrap();
+        assert!(text.starts_with(if ext == "stl" {
+            "solid"
+        } else {
+            "ply\nformat ascii"
+        }));
+        let want = json(&report)["volume"].as_f64().unwrap();
+        if ext == "stl" {
+            let got = stl_volume(&text);
+            assert!((got - want).abs() <= 1e-9 * want, "{got} vs {want}");
+        }
+        let c = umbra(["check".as_ref(), out.as_os_str(), "--json".as_ref()]);
+        assert!(c.status.success(), "{}", stderr(&c));
+        let j: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+        let got = j["signed_volume"].as_f64().unwrap();
+        assert!((got - want).abs() <= 1e-12 * want, "{ext}: {got} vs {want}");
+    }
 }

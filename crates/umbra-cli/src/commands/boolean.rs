@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_via_simplify, encode_mesh, encode_polygon_set, read_mesh,
+    boolean, boolean_solid, boolean_via_simplify, encode_mesh_with, encode_polygon_set, read_mesh,
     read_polygon_set, Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts,
     MeshReadOptions, MeshVariant, Operands, ReadOptions, SetCounts, Via,
 };
@@ -212,7 +212,7 @@ impl BooleanArgs {
         let out = boolean_solid(&a, &b, op, variant)
             .map_err(|e| errors::boolean3(e, [a_path, b_path]))?;
         let out_file = out_path.display().to_string();
-        let bytes = encode_mesh(out_kind, &out.mesh, &out_file)?;
+        let bytes = encode_mesh_with(out_kind, &out.mesh, self.out.mesh_options(), &out_file)?;
         let report = Boolean3Report::new(
             op,
             Operands {

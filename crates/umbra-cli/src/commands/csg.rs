@@ -9,7 +9,7 @@ use crate::stdout::outln;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
-use umbra::{encode_mesh, evaluate_csg_with_progress, read_csg_file, CsgOptions, FileKind};
+use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, CsgOptions, FileKind};
 
 /// The script form, shown by `umbra csg --help`.
 const SCRIPT_HELP: &str = "\
@@ -70,7 +70,7 @@ impl CsgArgs {
         bar.finish();
         let result = result?;
         let file = self.out.output.display().to_string();
-        let bytes = encode_mesh(kind, &result.mesh, &file)?;
+        let bytes = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
         self.out.write(&bytes, &result.report)?;
         if !self.quiet {
             let r = &result.report;
