@@ -1,0 +1,272 @@
+//! Pictures of 2D polygon sets: every pixel shaded by its winding number,
+//! computed per row from the crossings of the row through the pixel
+//! centres, each counted with its edge's multiplicity (+ upward, -
+//! downward, ray to the right); or the dissertation's figures: directed
+//! edges with one arrowhead per unit of multiplicity, vertices as dots.
+
+use super::camera::Frame;
+use super::canvas::Image;
+use super::options::{RenderError, RenderOptions, Style};
+use super::svg::Svg;
+use rayon::prelude::*;
+use std::collections::BTreeMap;
+use topology::PolygonSet2;
+
+/// The background (winding 0).
+const BACKGROUND: [u8; 3] = [255, 255, 255];
+/// Edges.
+const EDGE: [u8; 3] = [40, 40, 48];
+/// Vertices.
+const VERTEX: [u8; 3] = [15, 15, 20];
+/// At most this many arrowheads on one edge (multiplicities beyond are
+/// drawn with this many).
+const MAX_ARROWS: u32 = 12;
+
+/// The shade of winding number `w` (pale for the topology style): blues
+/// darkening with positive winding, oranges with negative, white for 0;
+/// windings beyond +-5 share the shade of +-5.
+pub(crate) fn winding_colour(w: i64, pale: bool) -> [u8; 3] {
+    if w == 0 {
+        return BACKGROUND;
+    }
+    let (light, dark) = if w > 0 {
+        ([200.0, 222.0, 247.0], [25.0, 55.0, 135.0])
+    } else {
+        ([250.0, 218.0, 185.0], [160.0, 65.0, 15.0])
+    };
+    let t = (w.unsigned_abs().min(5) - 1) as f64 / 4.0;
+    let mut c = [0, 1, 2].map(|k| light[k] + (dark[k] - light[k]) * t);
+    if pale {
+        c = c.map(|x| 255.0 - (255.0 - x) * 0.45);
+    }
+    c.map(|x| x.round() as u8)
+}
+
+/// A set prepared for drawing: its edges in plane coordinates with their
+/// multiplicity, and the frame.
+struct Plan {
+    edges: Vec<([f64; 2], [f64; 2], i64)>,
+    frame: Frame,
+    width: u32,
+    height: u32,
+    /// Half-width of edge strokes, pixels.
+    stroke: f64,
+}
+
+impl Plan {
+    fn new(set: &PolygonSet2, opts: &RenderOptions) -> Result<Plan, RenderError> {
+        opts.validate()?;
+        if opts.highlight {
+            return Err(RenderError::Unsupported(
+                "highlighting marks the problems of a 3D mesh; for a 2D set, `check` counts crossing edges",
+            ));
+        }
+        set.validate_coordinates()?;
+        let vs = set.vertices();
+        let edges: Vec<([f64; 2], [f64; 2], i64)> = set
+            .edges()
+            .iter()
+            .filter(|e| e.mult != 0)
+            .filter_map(|e| {
+                Some((
+                    *vs.get(e.start as usize)?,
+                    *vs.get(e.end as usize)?,
+                    i64::from(e.mult),
+                ))
+            })
+            .collect();
+        let [lo, hi] = set.bounding_box().unwrap_or([[0.0; 2]; 2]);
+        Ok(Plan {
+            edges,
+            frame: Frame::fit(lo, hi, opts.width, opts.height),
+            width: opts.width,
+            height: opts.height,
+            stroke: (f64::from(opts.width.min(opts.height)) / 300.0).max(1.0),
+        })
+    }
+
+    /// The winding number at the centre of every pixel of row `y`.
+    fn row(&self, y: u32, crossings: &mut Vec<(f64, i64)>, out: &mut Vec<i64>) {
+        let v = self.frame.row_v(y);
+        crossings.clear();
+        for &(a, b, m) in &self.edges {
+            if (a[1] <= v) != (b[1] <= v) {
+                let t = (v - a[1]) / (b[1] - a[1]);
+                let x = a[0] + t * (b[0] - a[0]);
+                crossings.push((self.frame.pixel_x(x), if b[1] > a[1] { m } else { -m }));
+            }
+        }
+        crossings.sort_by(|p, q| p.0.total_cmp(&q.0).then(p.1.cmp(&q.1)));
+        // The winding at x counts the crossings to its right.
+        let mut w: i64 = crossings.iter().map(|c| c.1).sum();
+        let mut next = 0;
+        out.clear();
+        for x in 0..self.width {
+            let xc = f64::from(x) + 0.5;
+            while next < crossings.len() && crossings[next].0 < xc {
+                w -= crossings[next].1;
+                next += 1;
+            }
+            out.push(w);
+        }
+    }
+
+    /// The pixel positions of an edge.
+    fn pixels(&self, a: [f64; 2], b: [f64; 2]) -> ([f64; 2], [f64; 2]) {
+        (self.frame.to_pixel(a), self.frame.to_pixel(b))
+    }
+
+    /// The arrowheads of an edge: one per unit of multiplicity (at most
+    /// [`MAX_ARROWS`]), evenly spaced, pointing along the edge for a
+    /// positive multiplicity.
+    fn arrows(&self, a: [f64; 2], b: [f64; 2], m: i64) -> Vec<[[f64; 2]; 3]> {
+        let (pa, pb) = self.pixels(a, b);
+        let (dx, dy) = (pb[0] - pa[0], pb[1] - pa[1]);
+        let len = (dx * dx + dy * dy).sqrt();
+        if !(len > 0.0 && len.is_finite()) {
+            return Vec::new();
+        }
+        let k = m.unsigned_abs().min(u64::from(MAX_ARROWS));
+        let sign = if m > 0 { 1.0 } else { -1.0 };
+        let (ux, uy) = (sign * dx / len, sign * dy / len);
+        let size = (4.0 * self.stroke + 5.0).min(len / (k as f64 + 1.0) * 0.9);
+        (1..=k)
+            .map(|i| {
+                let t = i as f64 / (k as f64 + 1.0);
+                let c = [pa[0] + dx * t, pa[1] + dy * t];
+                let tip = [c[0] + ux * size / 2.0, c[1] + uy * size / 2.0];
+                let back = [c[0] - ux * size / 2.0, c[1] - uy * size / 2.0];
+                let (px, py) = (-uy * size * 0.45, ux * size * 0.45);
+                [tip, [back[0] + px, back[1] + py], [back[0] - px, back[1] - py]]
+            })
+            .collect()
+    }
+
+    /// The vertices that edges use, in pixels, each once.
+    fn dots(&self) -> Vec<[f64; 2]> {
+        let mut seen = std::collections::BTreeSet::new();
+        let mut dots = Vec::new();
+        for &(a, b, _) in &self.edges {
+            for p in [a, b] {
+                if seen.insert((p[0].to_bits(), p[1].to_bits())) {
+                    dots.push(self.frame.to_pixel(p));
+                }
+            }
+        }
+        dots
+    }
+}
+
+/// A PNG-ready picture of a 2D polygon set: each pixel in the shade of its
+/// winding number ([`Style::Filled`], the edges drawn thin on top), or the
+/// edges with arrowheads and the vertices as dots over a pale shade
+/// ([`Style::Topology`]). The set's box is fitted into the frame with a
+/// margin at its true aspect ratio; `opts.view` is ignored (2D is seen
+/// from above) and `opts.highlight` refused.
+///
+/// ```
+/// use umbra::{render_polygons, PolygonSet2, RenderOptions};
+/// let mut s = PolygonSet2::new();
+/// s.add_loop(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]);
+/// let image = render_polygons(&s, &RenderOptions { width: 40, height: 40, ..Default::default() })?;
+/// // The centre lies inside (winding 1), the corner outside.
+/// assert_ne!(image.pixel(20, 20), image.pixel(0, 0));
+/// # Ok::<(), umbra::RenderError>(())
+/// ```
+pub fn render_polygons(set: &PolygonSet2, opts: &RenderOptions) -> Result<Image, RenderError> {
+    let plan = Plan::new(set, opts)?;
+    let pale = opts.style == Style::Topology;
+    let w = plan.width as usize;
+    let mut data = vec![0u8; w * plan.height as usize * 3];
+    data.par_chunks_mut(w * 3).enumerate().for_each_init(
+        || (Vec::new(), Vec::new()),
+        |(crossings, windings), (y, row)| {
+            plan.row(y as u32, crossings, windings);
+            for (x, &wn) in windings.iter().enumerate() {
+                row[x * 3..x * 3 + 3].copy_from_slice(&winding_colour(wn, pale));
+            }
+        },
+    );
+    let mut image = Image::from_rgb(plan.width, plan.height, data);
+    match opts.style {
+        Style::Filled => {
+            for &(a, b, _) in &plan.edges {
+                let (pa, pb) = plan.pixels(a, b);
+                image.stroke(pa, pb, 0.5 * plan.stroke, EDGE);
+            }
+        }
+        Style::Topology => {
+            for &(a, b, _) in &plan.edges {
+                let (pa, pb) = plan.pixels(a, b);
+                image.stroke(pa, pb, 0.6 * plan.stroke, EDGE);
+            }
+            for &(a, b, m) in &plan.edges {
+                for t in plan.arrows(a, b, m) {
+                    image.fill_convex(&t, EDGE);
+                }
+            }
+            for d in plan.dots() {
+                image.fill_disc(d, 2.2 * plan.stroke, VERTEX);
+            }
+        }
+    }
+    Ok(image)
+}
+
+/// An SVG picture of a 2D polygon set, the same as [`render_polygons`]:
+/// the winding shade as runs of equal winding merged into rectangles
+/// (the raster's exact cells at the picture's resolution), the edges,
+/// arrowheads and dots as vectors.
+pub fn render_polygons_svg(set: &PolygonSet2, opts: &RenderOptions) -> Result<String, RenderError> {
+    let plan = Plan::new(set, opts)?;
+    let pale = opts.style == Style::Topology;
+    let mut svg = Svg::new(plan.width, plan.height, BACKGROUND);
+    // Open rectangles: (x0, x1, winding) -> first row.
+    let mut open: BTreeMap<(u32, u32, i64), u32> = BTreeMap::new();
+    let (mut crossings, mut windings) = (Vec::new(), Vec::new());
+    for y in 0..=plan.height {
+        let mut runs = Vec::new();
+        if y < plan.height {
+            plan.row(y, &mut crossings, &mut windings);
+            let mut x0 = 0;
+            for x in 1..=windings.len() {
+                if x == windings.len() || windings[x] != windings[x0] {
+                    if windings[x0] != 0 {
+                        runs.push((x0 as u32, x as u32, windings[x0]));
+                    }
+                    x0 = x;
+                }
+            }
+        }
+        let closed: Vec<(u32, u32, i64)> = open
+            .keys()
+            .filter(|k| runs.binary_search(k).is_err())
+            .copied()
+            .collect();
+        for k in closed {
+            if let Some(first) = open.remove(&k) {
+                svg.rect(k.0, first, k.1 - k.0, y - first, winding_colour(k.2, pale));
+            }
+        }
+        for r in runs {
+            open.entry(r).or_insert(y);
+        }
+    }
+    let hw = plan.stroke;
+    for &(a, b, _) in &plan.edges {
+        let (pa, pb) = plan.pixels(a, b);
+        let width = if pale { 1.2 * hw } else { hw };
+        svg.line(pa, pb, EDGE, width);
+    }
+    if opts.style == Style::Topology {
+        for &(a, b, m) in &plan.edges {
+            for t in plan.arrows(a, b, m) {
+                svg.polygon(&t, EDGE);
+            }
+        }
+        for d in plan.dots() {
+            svg.circle(d, 2.2 * hw, VERTEX);
+        }
+    }
+    Ok(svg.finish())
+}
