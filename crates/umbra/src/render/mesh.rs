@@ -16,6 +16,7 @@ use super::canvas::Image;
 use super::options::{RenderError, RenderOptions, Style, HIGHLIGHT};
 use super::svg::{path_data, Svg};
 use rayon::prelude::*;
+use std::collections::BTreeMap;
 use topology::{triangulate_facet, Facet, PolygonMesh};
 
 /// The background.
@@ -167,8 +168,38 @@ impl Scene {
     }
 }
 
-/// What the mesh check finds, for highlighting.
+/// What the mesh check finds, for highlighting: for a topologically valid
+/// mesh its open and non-manifold edges and vertices and the facets of
+/// self-intersecting pairs; for one that is not, the edges whose
+/// half-edges do not balance (shape boundary closure, section 4.2).
 fn marks(mesh: &PolygonMesh) -> Result<Marks, RenderError> {
+    let n = mesh.vertices.len() as u32;
+    if mesh.check_topology().is_err() {
+        let mut balance: BTreeMap<[u32; 2], i64> = BTreeMap::new();
+        for h in mesh.facets.iter().flat_map(|f| &f.half_edges) {
+            if h.start >= n || h.end >= n {
+                return Err(RenderError::Unsupported(
+                    "cannot highlight a mesh whose facets refer to missing vertices",
+                ));
+            }
+            if h.start != h.end {
+                let (key, d) = if h.start < h.end {
+                    ([h.start, h.end], 1)
+                } else {
+                    ([h.end, h.start], -1)
+                };
+                *balance.entry(key).or_default() += d;
+            }
+        }
+        return Ok(Marks {
+            edges: balance
+                .into_iter()
+                .filter(|&(_, b)| b != 0)
+                .map(|(e, _)| e)
+                .collect(),
+            ..Marks::default()
+        });
+    }
     let manifold = mesh.manifold_report()?;
     let edges = manifold
         .open_edges
@@ -334,8 +365,9 @@ fn zbuffer(scene: &Scene, tris: &[[u32; 3]]) -> Vec<u32> {
 /// A PNG-ready picture of a mesh: facets shaded flat and hidden by a
 /// z-buffer, the camera fitted to the mesh for `opts.view`; with
 /// `opts.highlight`, what [`crate::check_mesh`] finds drawn on top in
-/// [`HIGHLIGHT`]. Facets need no particular topology unless highlighting
-/// (which needs a topologically valid mesh); coordinates must be finite.
+/// [`HIGHLIGHT`] (for a mesh that is not topologically valid, the edges
+/// whose half-edges do not balance). Coordinates must be finite; facets
+/// referring to missing vertices are skipped (refused when highlighting).
 ///
 /// ```
 /// use umbra::{render_mesh, Facet, PolygonMesh, RenderOptions};

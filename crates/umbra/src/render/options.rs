@@ -98,8 +98,7 @@ pub struct RenderOptions {
     pub height: u32,
     /// The style.
     pub style: Style,
-    /// 3D: mark what the mesh check finds in [`HIGHLIGHT`] (needs a
-    /// topologically valid mesh).
+    /// 3D: mark what the mesh check finds in [`HIGHLIGHT`].
     pub highlight: bool,
 }
 
@@ -153,8 +152,7 @@ pub enum RenderError {
         /// The limit broken.
         reason: &'static str,
     },
-    /// The shape has a bad coordinate or (for highlighting) is not
-    /// topologically valid.
+    /// The shape has a bad coordinate.
     InvalidShape(TopologyError),
     /// The options do not apply to the shape.
     Unsupported(&'static str),
