@@ -96,9 +96,9 @@ pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
 pub use model::*;
+pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 #[cfg(feature = "render")]
 pub use render::*;
-pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 pub use report::{
     fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
     SimplifyReport, SweepReport, Timings,

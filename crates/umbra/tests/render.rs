@@ -5,8 +5,8 @@
 //! size limits.
 
 use umbra::{
-    render_mesh, render_mesh_svg, render_polygons, render_polygons_svg, Facet, Image,
-    PolygonMesh, PolygonSet2, RenderError, RenderOptions, Style, View, HIGHLIGHT,
+    render_mesh, render_mesh_svg, render_polygons, render_polygons_svg, Facet, Image, PolygonMesh,
+    PolygonSet2, RenderError, RenderOptions, Style, View, HIGHLIGHT,
 };
 
 const WHITE: [u8; 3] = [255, 255, 255];
@@ -142,8 +142,11 @@ fn highlight_appears_exactly_when_the_check_finds_problems() {
     let mut two = cube.clone();
     let b = cuboid(1.0, 1.0, 1.0);
     let off = two.vertices.len() as u32;
-    two.vertices
-        .extend(b.vertices.iter().map(|p| [p[0] + 0.5, p[1] + 0.5, p[2] + 0.5]));
+    two.vertices.extend(
+        b.vertices
+            .iter()
+            .map(|p| [p[0] + 0.5, p[1] + 0.5, p[2] + 0.5]),
+    );
     two.facets.extend(b.facets.iter().map(|f| {
         let mut f = f.clone();
         for h in &mut f.half_edges {
@@ -158,7 +161,13 @@ fn highlight_appears_exactly_when_the_check_finds_problems() {
     assert!(n > 100 && svg, "{n}");
 
     // Without --highlight no pixel has the colour, whatever the mesh.
-    assert_eq!(count(&render_mesh(&open, &opts(View::Iso, 200, 150)).unwrap(), HIGHLIGHT), 0);
+    assert_eq!(
+        count(
+            &render_mesh(&open, &opts(View::Iso, 200, 150)).unwrap(),
+            HIGHLIGHT
+        ),
+        0
+    );
 }
 
 #[test]
@@ -172,20 +181,31 @@ fn highlight_marks_the_unbalanced_edges_of_an_invalid_mesh() {
     assert!(count(&render_mesh(&mesh, &o).unwrap(), HIGHLIGHT) > 100);
     // Facets referring to missing vertices: refused for highlighting.
     mesh.facets.push(Facet::from_loop(&[0, 1, 99]));
-    assert!(matches!(render_mesh(&mesh, &o), Err(RenderError::Unsupported(_))));
+    assert!(matches!(
+        render_mesh(&mesh, &o),
+        Err(RenderError::Unsupported(_))
+    ));
 }
 
 #[test]
 fn output_is_deterministic_across_runs_and_thread_counts() {
     let mesh = umbra::uv_sphere(1.0, 48, 24).unwrap();
     let o = opts(View::Iso, 320, 240);
-    let pool = |n| rayon::ThreadPoolBuilder::new().num_threads(n).build().unwrap();
+    let pool = |n| {
+        rayon::ThreadPoolBuilder::new()
+            .num_threads(n)
+            .build()
+            .unwrap()
+    };
     let one = pool(1).install(|| render_mesh(&mesh, &o).unwrap().to_png().unwrap());
     let two = pool(2).install(|| render_mesh(&mesh, &o).unwrap().to_png().unwrap());
     let again = render_mesh(&mesh, &o).unwrap().to_png().unwrap();
     assert_eq!(one, two);
     assert_eq!(one, again);
-    assert_eq!(render_mesh_svg(&mesh, &o).unwrap(), render_mesh_svg(&mesh, &o).unwrap());
+    assert_eq!(
+        render_mesh_svg(&mesh, &o).unwrap(),
+        render_mesh_svg(&mesh, &o).unwrap()
+    );
     let set = figure_eight();
     let p1 = pool(1).install(|| render_polygons(&set, &o).unwrap());
     let p2 = pool(2).install(|| render_polygons(&set, &o).unwrap());
@@ -200,9 +220,18 @@ fn sizes_are_honoured_and_hostile_sizes_refused_without_allocating() {
         assert_eq!((image.width(), image.height()), (w, h));
         assert_eq!(image.rgb().len(), (w * h * 3) as usize);
         let png = image.to_png().unwrap();
-        assert_eq!(&png[16..24], &[w.to_be_bytes(), h.to_be_bytes()].concat()[..]);
+        assert_eq!(
+            &png[16..24],
+            &[w.to_be_bytes(), h.to_be_bytes()].concat()[..]
+        );
     }
-    for (w, h) in [(0, 0), (0, 10), (100_000, 100_000), (16_384, 16_384), (u32::MAX, 1)] {
+    for (w, h) in [
+        (0, 0),
+        (0, 10),
+        (100_000, 100_000),
+        (16_384, 16_384),
+        (u32::MAX, 1),
+    ] {
         let e = render_mesh(&mesh, &opts(View::Iso, w, h)).unwrap_err();
         assert!(matches!(e, RenderError::BadSize { .. }), "{e}");
         assert!(e.to_string().contains(&format!("{w}x{h}")), "{e}");
@@ -227,8 +256,14 @@ fn bad_coordinates_and_bad_indices_are_errors_or_skipped_never_panics() {
     let image = render_mesh(&big, &opts(View::Front, 100, 100)).unwrap();
     assert!(covered(&image) > 0);
     // Empty shapes give an empty frame.
-    assert_eq!(covered(&render_mesh(&PolygonMesh::default(), &RenderOptions::default()).unwrap()), 0);
-    assert_eq!(covered(&render_polygons(&PolygonSet2::new(), &RenderOptions::default()).unwrap()), 0);
+    assert_eq!(
+        covered(&render_mesh(&PolygonMesh::default(), &RenderOptions::default()).unwrap()),
+        0
+    );
+    assert_eq!(
+        covered(&render_polygons(&PolygonSet2::new(), &RenderOptions::default()).unwrap()),
+        0
+    );
 }
 
 /// A figure eight: one loop crossing itself, winding +1 in one lobe and
@@ -297,7 +332,8 @@ fn cells_of_equal_winding_share_one_shade() {
             let near = set.edges().iter().any(|e| {
                 let (a, b) = set.edge_points(e);
                 let (dx, dy) = (b[0] - a[0], b[1] - a[1]);
-                let t = (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy)).clamp(0.0, 1.0);
+                let t = (((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / (dx * dx + dy * dy))
+                    .clamp(0.0, 1.0);
                 let (qx, qy) = (a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
                 (qx * qx + qy * qy).sqrt() * scale < 4.0
             });
@@ -306,7 +342,11 @@ fn cells_of_equal_winding_share_one_shade() {
             }
             let wn = winding(&set, p);
             let c = image.pixel(x, y).unwrap();
-            assert_eq!(*shade_of.entry(wn).or_insert(c), c, "winding {wn} at ({x}, {y})");
+            assert_eq!(
+                *shade_of.entry(wn).or_insert(c),
+                c,
+                "winding {wn} at ({x}, {y})"
+            );
             checked += 1;
         }
     }
@@ -362,7 +402,10 @@ fn topology_style_draws_one_arrowhead_per_unit_of_multiplicity() {
     let (d1, d2, d3) = (dark(1), dark(2), dark(3));
     assert!(d2 > d1 && d3 > d2, "{d1} {d2} {d3}");
     let (g1, g2) = (d2 - d1, d3 - d2);
-    assert!((g1 as f64 - g2 as f64).abs() <= 0.2 * g1 as f64, "{g1} {g2}");
+    assert!(
+        (g1 as f64 - g2 as f64).abs() <= 0.2 * g1 as f64,
+        "{g1} {g2}"
+    );
     // A huge multiplicity draws a bounded number of arrowheads, quickly.
     assert!(dark(i32::MAX) < 10 * d1);
 }
@@ -387,7 +430,8 @@ fn svg_is_well_formed_and_uses_numbers_only() {
             for a in n.attributes() {
                 let v = a.value();
                 assert!(
-                    v.chars().all(|c| c.is_ascii_alphanumeric() || " .,-#:/".contains(c)),
+                    v.chars()
+                        .all(|c| c.is_ascii_alphanumeric() || " .,-#:/".contains(c)),
                     "{}={v}",
                     a.name()
                 );
@@ -397,7 +441,10 @@ fn svg_is_well_formed_and_uses_numbers_only() {
     // The 3D SVG paints the six faces back to front: the three far ones
     // first.
     let xml = roxmltree::Document::parse(&docs[0]).unwrap();
-    assert_eq!(xml.descendants().filter(|n| n.has_tag_name("path")).count(), 6);
+    assert_eq!(
+        xml.descendants().filter(|n| n.has_tag_name("path")).count(),
+        6
+    );
     // The winding shades of the figure eight: both lobes in rectangles.
     assert!(docs[2].contains("<rect") && docs[2].matches("<rect").count() > 2);
 }

@@ -118,6 +118,8 @@ pub(crate) fn normaliser<'a>(points: impl Iterator<Item = &'a [f64; 3]>) -> ([f6
         return ([0.0; 3], 1.0);
     }
     let centre = [0, 1, 2].map(|k| lo[k] / 2.0 + hi[k] / 2.0);
-    let half = (0..3).map(|k| hi[k] / 2.0 - lo[k] / 2.0).fold(0.0, f64::max);
+    let half = (0..3)
+        .map(|k| hi[k] / 2.0 - lo[k] / 2.0)
+        .fold(0.0, f64::max);
     (centre, if half > 0.0 { half } else { 1.0 })
 }

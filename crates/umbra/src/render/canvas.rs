@@ -98,11 +98,18 @@ impl Image {
 
     /// Fills a convex polygon (either orientation).
     pub(crate) fn fill_convex(&mut self, points: &[[f64; 2]], colour: [u8; 3]) {
-        if points.len() < 3 || points.iter().any(|p| !p[0].is_finite() || !p[1].is_finite()) {
+        if points.len() < 3
+            || points
+                .iter()
+                .any(|p| !p[0].is_finite() || !p[1].is_finite())
+        {
             return;
         }
         let lo = points.iter().map(|p| p[1]).fold(f64::INFINITY, f64::min);
-        let hi = points.iter().map(|p| p[1]).fold(f64::NEG_INFINITY, f64::max);
+        let hi = points
+            .iter()
+            .map(|p| p[1])
+            .fold(f64::NEG_INFINITY, f64::max);
         for y in self.rows(lo, hi) {
             let yc = y as f64 + 0.5;
             let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);

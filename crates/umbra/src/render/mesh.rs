@@ -11,7 +11,7 @@
 //! index order and a pixel keeps the first nearest one, so the picture
 //! does not depend on the number of threads.
 
-use super::camera::{basis, dot, normalize, normaliser, Frame};
+use super::camera::{basis, dot, normaliser, normalize, Frame};
 use super::canvas::Image;
 use super::options::{RenderError, RenderOptions, Style, HIGHLIGHT};
 use super::svg::{path_data, Svg};
@@ -98,7 +98,8 @@ impl Scene {
                 [s[0], s[1], p[2]]
             })
             .collect();
-        let light = normalize([0, 1, 2].map(|k| -0.25 * right[k] + 0.45 * up[k] - 0.86 * forward[k]));
+        let light =
+            normalize([0, 1, 2].map(|k| -0.25 * right[k] + 0.45 * up[k] - 0.86 * forward[k]));
         let n = mesh.vertices.len();
         let mut colours: Vec<[u8; 3]> = mesh
             .facets
@@ -255,7 +256,10 @@ fn triangulate(
 ) {
     if let [a, b, c] = f.half_edges[..] {
         if a.end == b.start && b.end == c.start && c.end == a.start {
-            if [a.start, b.start, c.start].iter().all(|&v| (v as usize) < n) {
+            if [a.start, b.start, c.start]
+                .iter()
+                .all(|&v| (v as usize) < n)
+            {
                 out.push([a.start, b.start, c.start]);
             }
             return;

@@ -137,7 +137,11 @@ impl Plan {
                 let tip = [c[0] + ux * size / 2.0, c[1] + uy * size / 2.0];
                 let back = [c[0] - ux * size / 2.0, c[1] - uy * size / 2.0];
                 let (px, py) = (-uy * size * 0.45, ux * size * 0.45);
-                [tip, [back[0] + px, back[1] + py], [back[0] - px, back[1] - py]]
+                [
+                    tip,
+                    [back[0] + px, back[1] + py],
+                    [back[0] - px, back[1] - py],
+                ]
             })
             .collect()
     }
