@@ -101,10 +101,12 @@ impl Scene {
         let light =
             normalize([0, 1, 2].map(|k| -0.25 * right[k] + 0.45 * up[k] - 0.86 * forward[k]));
         let n = mesh.vertices.len();
-        let mut colours: Vec<[u8; 3]> = mesh
+        let flagged = &marks.facets;
+        let colours: Vec<[u8; 3]> = mesh
             .facets
             .par_iter()
-            .map(|f| {
+            .enumerate()
+            .map(|(i, f)| {
                 if f.half_edges
                     .iter()
                     .any(|h| h.start as usize >= n || h.end as usize >= n)
@@ -127,13 +129,16 @@ impl Scene {
                 } else {
                     (BACK, -1.0)
                 };
-                let shade = AMBIENT + (1.0 - AMBIENT) * (sign * dot(normal, light)).max(0.0);
+                let lit = (sign * dot(normal, light)).max(0.0);
+                let shade = AMBIENT + (1.0 - AMBIENT) * lit;
+                if flagged.binary_search(&(i as u32)).is_ok() {
+                    // A shade of the highlight, never the colour itself
+                    // (kept for the strokes on top).
+                    return HIGHLIGHT.map(|c| (f64::from(c) * (0.5 + 0.45 * lit)).round() as u8);
+                }
                 base.map(|c| (c * shade).round() as u8)
             })
             .collect();
-        for &f in &marks.facets {
-            colours[f as usize] = HIGHLIGHT;
-        }
         Ok(Scene {
             width: opts.width,
             height: opts.height,

@@ -117,7 +117,7 @@ impl Plan {
     }
 
     /// The arrowheads of an edge: one per unit of multiplicity (at most
-    /// [`MAX_ARROWS`]), evenly spaced, pointing along the edge for a
+    /// [`MAX_ARROWS`]), evenly spaced over 10% to 60% of its length, pointing along the edge for a
     /// positive multiplicity.
     fn arrows(&self, a: [f64; 2], b: [f64; 2], m: i64) -> Vec<[[f64; 2]; 3]> {
         let (pa, pb) = self.pixels(a, b);
@@ -129,10 +129,12 @@ impl Plan {
         let k = m.unsigned_abs().min(u64::from(MAX_ARROWS));
         let sign = if m > 0 { 1.0 } else { -1.0 };
         let (ux, uy) = (sign * dx / len, sign * dy / len);
-        let size = (4.0 * self.stroke + 5.0).min(len / (k as f64 + 1.0) * 0.9);
+        let size = (5.0 * self.stroke + 6.0).min(len * 0.5 / (k as f64 + 1.0) * 0.9);
         (1..=k)
             .map(|i| {
-                let t = i as f64 / (k as f64 + 1.0);
+                // Spread over the middle of the edge, off its midpoint
+                // (where a figure eight's edges cross).
+                let t = 0.1 + 0.5 * i as f64 / (k as f64 + 1.0);
                 let c = [pa[0] + dx * t, pa[1] + dy * t];
                 let tip = [c[0] + ux * size / 2.0, c[1] + uy * size / 2.0];
                 let back = [c[0] - ux * size / 2.0, c[1] - uy * size / 2.0];
