@@ -19,9 +19,6 @@ trap 'rm -rf "$tmp"' EXIT
 "$UMBRA" boolean union examples/a.wkt examples/b.wkt -o "$tmp/union.wkt" > /dev/null
 "$UMBRA" render "$tmp/union.wkt" -o "$out/union.png" --size 600x400
 
-# Two squares overlapping (winding 2 where both), shaded by winding number.
-"$UMBRA" render examples/double_cover.wkt -o "$out/double_cover.png" --size 600x400
-
 # A figure eight in the dissertation's style: directed edges, vertices.
 "$UMBRA" render examples/figure_eight.wkt -o "$out/figure_eight.png" --size 600x400 --style topology
 

@@ -85,7 +85,7 @@ impl Frame {
     }
 
     /// Pixel coordinates of a plane point.
-    pub(crate) fn to_pixel(&self, p: [f64; 2]) -> [f64; 2] {
+    pub(crate) fn to_pixel(self, p: [f64; 2]) -> [f64; 2] {
         [
             self.mid[0] + (p[0] - self.centre[0]) * self.scale,
             self.mid[1] - (p[1] - self.centre[1]) * self.scale,

@@ -73,7 +73,7 @@ impl Image {
     /// Fills the pixels in columns whose centres lie in `[x0, x1]` on row
     /// `y`.
     fn span(&mut self, y: i64, x0: f64, x1: f64, colour: [u8; 3]) {
-        if y < 0 || y >= i64::from(self.height) || !(x0 <= x1) {
+        if y < 0 || y >= i64::from(self.height) || x0.partial_cmp(&x1).is_none_or(|o| o.is_gt()) {
             return;
         }
         let first = (x0 - 0.5).ceil().max(0.0);
@@ -86,14 +86,16 @@ impl Image {
         }
     }
 
-    /// The rows whose centres lie in `[y0, y1]`, clipped to the picture.
-    fn rows(&self, y0: f64, y1: f64) -> std::ops::RangeInclusive<i64> {
+    /// The rows whose centres lie in `[y0, y1]`, clipped to the picture
+    /// (empty when none, or for NaN bounds).
+    fn rows(&self, y0: f64, y1: f64) -> std::ops::Range<i64> {
         let first = (y0 - 0.5).ceil().max(0.0);
         let last = (y1 - 0.5).floor().min(f64::from(self.height) - 1.0);
-        if !(first <= last) {
-            return 1..=0;
+        if first <= last {
+            first as i64..last as i64 + 1
+        } else {
+            0..0
         }
-        first as i64..=last as i64
     }
 
     /// Fills a convex polygon (either orientation).
