@@ -240,3 +240,12 @@ fn bad_options_and_hostile_sizes_are_usage_errors_and_write_nothing() {
     assert!(stderr(&o).contains("none.off"));
     assert!(!out.exists());
 }
+
+#[test]
+fn other_commands_point_a_png_output_to_render() {
+    let dir = temp_dir("png-elsewhere");
+    let a = write(&dir, "a.wkt", "POLYGON ((0 0, 1 0, 1 1, 0 0))");
+    let o = umbra(&["simplify", s(&a), "-o", s(&dir.join("out.png"))]);
+    assert_ne!(o.status.code(), Some(0));
+    assert!(stderr(&o).contains("umbra render"), "{}", stderr(&o));
+}
