@@ -448,3 +448,85 @@ fn svg_is_well_formed_and_uses_numbers_only() {
     // The winding shades of the figure eight: both lobes in rectangles.
     assert!(docs[2].contains("<rect") && docs[2].matches("<rect").count() > 2);
 }
+
+mod garbage {
+    //! Random and garbage shapes: a picture or an error, never a panic,
+    //! and the same picture twice.
+    use super::*;
+    use proptest::prelude::*;
+
+    fn coordinate() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            -10.0..10.0f64,
+            Just(0.0),
+            Just(f64::MAX / 4.0),
+            Just(-f64::MAX / 4.0),
+            Just(1e-300),
+            Just(f64::NAN),
+            Just(f64::INFINITY),
+        ]
+    }
+
+    fn size() -> impl Strategy<Value = (u32, u32)> {
+        prop_oneof![(1u32..64, 1u32..64), Just((0, 5)), Just((20_000, 3))]
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(96))]
+
+        #[test]
+        fn meshes_never_panic(
+            vertices in proptest::collection::vec([coordinate(), coordinate(), coordinate()], 0..12),
+            facets in proptest::collection::vec(proptest::collection::vec(0u32..14, 0..6), 0..8),
+            (width, height) in size(),
+            highlight in any::<bool>(),
+            view in prop_oneof![Just(View::Iso), Just(View::Front), Just(View::Top), Just(View::Side)],
+            topology in any::<bool>(),
+        ) {
+            let mesh = PolygonMesh::new(vertices, facets.iter().map(|l| Facet::from_loop(l)).collect());
+            let o = RenderOptions {
+                view,
+                width,
+                height,
+                style: if topology { Style::Topology } else { Style::Filled },
+                highlight,
+            };
+            let first = render_mesh(&mesh, &o);
+            prop_assert_eq!(format!("{first:?}"), format!("{:?}", render_mesh(&mesh, &o)));
+            if let Ok(image) = first {
+                prop_assert_eq!((image.width(), image.height()), (width, height));
+                prop_assert!(image.to_png().is_ok());
+            }
+            if let Ok(svg) = render_mesh_svg(&mesh, &o) {
+                prop_assert!(roxmltree::Document::parse(&svg).is_ok());
+            }
+        }
+
+        #[test]
+        fn polygon_sets_never_panic(
+            points in proptest::collection::vec([coordinate(), coordinate()], 0..10),
+            edges in proptest::collection::vec((0u32..12, 0u32..12, prop_oneof![-3i32..4, Just(i32::MAX), Just(i32::MIN)]), 0..12),
+            (width, height) in size(),
+            topology in any::<bool>(),
+        ) {
+            let mut set = PolygonSet2::new();
+            for p in &points {
+                set.add_vertex(*p);
+            }
+            for &(a, b, m) in &edges {
+                set.add_edge_mult(a, b, m);
+            }
+            let o = RenderOptions {
+                width,
+                height,
+                style: if topology { Style::Topology } else { Style::Filled },
+                ..RenderOptions::default()
+            };
+            let first = render_polygons(&set, &o);
+            prop_assert_eq!(format!("{first:?}"), format!("{:?}", render_polygons(&set, &o)));
+            if let Ok(svg) = render_polygons_svg(&set, &o) {
+                prop_assert!(roxmltree::Document::parse(&svg).is_ok());
+            }
+        }
+    }
+}

@@ -75,7 +75,18 @@ impl Plan {
                 ))
             })
             .collect();
-        let [lo, hi] = set.bounding_box().unwrap_or([[0.0; 2]; 2]);
+        // The box of the edges drawn (edges naming a missing vertex are
+        // left out, as above).
+        let (mut lo, mut hi) = ([f64::INFINITY; 2], [f64::NEG_INFINITY; 2]);
+        for p in edges.iter().flat_map(|e| [e.0, e.1]) {
+            for k in 0..2 {
+                lo[k] = lo[k].min(p[k]);
+                hi[k] = hi[k].max(p[k]);
+            }
+        }
+        if edges.is_empty() {
+            (lo, hi) = ([0.0; 2], [0.0; 2]);
+        }
         Ok(Plan {
             edges,
             frame: Frame::fit(lo, hi, opts.width, opts.height),
