@@ -4,6 +4,8 @@
 //! shades against an analytic winding, SVG well-formed, determinism,
 //! size limits.
 
+#![cfg(feature = "render")]
+
 use umbra::{
     render_mesh, render_mesh_svg, render_polygons, render_polygons_svg, Facet, Image, PolygonMesh,
     PolygonSet2, RenderError, RenderOptions, Style, View, HIGHLIGHT,
