@@ -170,6 +170,25 @@ fn polygon_files_render_filled_and_in_topology_style() {
 }
 
 #[test]
+fn keep_orientation_draws_the_rings_as_written() {
+    // A clockwise square: by role it is an outer ring (winding +1, blue);
+    // as written it winds -1 (orange).
+    let dir = temp_dir("orientation");
+    let input = write(&dir, "cw.wkt", "POLYGON ((0 0, 0 4, 4 4, 4 0, 0 0))");
+    let centre = |extra: &[&str]| {
+        let out = dir.join("out.png");
+        let mut args = vec!["render", s(&input), "-o", s(&out), "--size", "50x50"];
+        args.extend(extra);
+        let o = umbra(&args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        decode(&out).2[25 * 50 + 25]
+    };
+    let (by_role, as_written) = (centre(&[]), centre(&["--keep-orientation"]));
+    assert!(by_role[2] > by_role[0], "{by_role:?}");
+    assert!(as_written[0] > as_written[2], "{as_written:?}");
+}
+
+#[test]
 fn output_is_the_same_bytes_across_runs_and_thread_counts() {
     let dir = temp_dir("determinism");
     let input = write(&dir, "box.off", &box_off(true));

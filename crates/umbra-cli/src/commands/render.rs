@@ -36,6 +36,10 @@ pub struct RenderArgs {
     /// vertices, self-intersecting facets) in magenta.
     #[arg(long)]
     highlight: bool,
+    /// 2D: read every ring as written instead of by role (outer rings
+    /// anticlockwise, holes clockwise), to see a file's own directions.
+    #[arg(long)]
+    keep_orientation: bool,
 }
 
 /// `--view`.
@@ -134,7 +138,11 @@ impl RenderArgs {
                 Picture::Svg => render_mesh_svg(&mesh, &opts).map(String::into_bytes),
             }
         } else {
-            let set = read_polygon_set(&self.input, ReadOptions::default())?;
+            let options = ReadOptions {
+                orientation: super::orientation(self.keep_orientation),
+                ..ReadOptions::default()
+            };
+            let set = read_polygon_set(&self.input, options)?;
             match picture {
                 Picture::Png => render_polygons(&set, &opts).and_then(|i| i.to_png()),
                 Picture::Svg => render_polygons_svg(&set, &opts).map(String::into_bytes),
