@@ -158,6 +158,10 @@ fn the_demo_writes_a_valid_model_that_its_script_reproduces() {
     assert!((obj_volume(&obj) - volume).abs() <= 1e-9 * volume);
     let check = umbra(["check", obj.to_str().unwrap(), "--json"]);
     assert!(check.status.success(), "{}", stderr(&check));
+    // Its picture: an 800x600 PNG.
+    let png = std::fs::read(dir.join("plant.png")).unwrap();
+    assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));
+    assert_eq!(&png[16..24], &[0, 0, 3, 32, 0, 0, 2, 88]);
 
     // The script the demo wrote evaluates to the same mesh, bit for bit.
     let again = dir.join("again.obj");

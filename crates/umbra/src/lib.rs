@@ -33,6 +33,10 @@
 //!   signed volume, bounding box), also as methods of the shapes
 //!   (`mesh.check()`, `mesh.signed_volume()`, `mesh.bounding_box()`,
 //!   `mesh.self_intersections()`, `mesh.manifold_report()`).
+//! - Pictures (feature `render`, on by default): [`render_mesh`] and
+//!   [`render_polygons`] to an [`Image`] (PNG by [`Image::to_png`]),
+//!   [`render_mesh_svg`] and [`render_polygons_svg`] to SVG text, with
+//!   [`RenderOptions`] ([`View`], [`Style`], size, highlight).
 //! - [`UmbraError`]: every error names the file and the problem on one
 //!   line.
 //! - Output encoded in memory before anything is written:
@@ -78,6 +82,8 @@ mod error;
 mod io;
 mod model;
 mod ops;
+#[cfg(feature = "render")]
+mod render;
 mod report;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
@@ -91,6 +97,8 @@ pub use error::UmbraError;
 pub use io::*;
 pub use model::*;
 pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
+#[cfg(feature = "render")]
+pub use render::*;
 pub use report::{
     fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
     SimplifyReport, SweepReport, Timings,

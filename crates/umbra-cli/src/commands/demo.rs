@@ -1,7 +1,7 @@
 //! `umbra demo [-o DIR]`: no input needed. Builds a small process-plant
 //! model (vessels, pipes with flanges, a supporting frame) from built-in
 //! primitives through a chain of some hundreds of 3D Booleans, writes the
-//! mesh and its script, and prints a validity and timing summary.
+//! mesh, its script and a picture (`plant.png`, iso view), and prints a validity and timing summary.
 
 use super::millis_since;
 use crate::files::write_all;
@@ -11,8 +11,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    check_mesh, demo_plant, encode_mesh, evaluate_csg_with_progress, CsgOptions, DemoDetail,
-    FileKind,
+    check_mesh, demo_plant, encode_mesh, evaluate_csg_with_progress, render_mesh, CsgOptions,
+    DemoDetail, FileKind, RenderOptions,
 };
 
 /// Build the demo model (a process plant of some hundreds of Booleans),
@@ -70,6 +70,17 @@ impl DemoArgs {
             let bytes = encode_mesh(kind, &result.mesh, &path.display().to_string())?;
             files.push((path, bytes));
         }
+        let picture = render_mesh(
+            &result.mesh,
+            &RenderOptions {
+                width: 800,
+                height: 600,
+                ..RenderOptions::default()
+            },
+        )
+        .and_then(|image| image.to_png())
+        .map_err(|e| anyhow::anyhow!("{}: {e}", self.output.join("plant.png").display()))?;
+        files.push((self.output.join("plant.png"), picture));
         files.push((
             self.output.join("plant.json"),
             tree.to_json_string().into_bytes(),

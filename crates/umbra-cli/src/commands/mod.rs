@@ -37,6 +37,7 @@ commands! {
     Check => check::CheckArgs,
     Csg => csg::CsgArgs,
     Demo => demo::DemoArgs,
+    Render => render::RenderArgs,
 }
 
 /// The ring orientation of `--keep-orientation`.

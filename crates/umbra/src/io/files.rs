@@ -71,6 +71,8 @@ impl FileKind {
     /// assert!(!FileKind::from_path(Path::new("part.glb")).unwrap().can_read());
     /// let e = FileKind::from_path(Path::new("shape.txt")).unwrap_err().to_string();
     /// assert!(e.contains(".3mf"), "{e}");
+    /// let e = FileKind::from_path(Path::new("shape.png")).unwrap_err().to_string();
+    /// assert!(e.contains("umbra render"), "{e}");
     /// ```
     pub fn from_path(path: &Path) -> Result<FileKind, UmbraError> {
         let file = path.display().to_string();
@@ -85,6 +87,9 @@ impl FileKind {
             return Ok(kind);
         }
         let detail = match ext {
+            Some(e) if e == "png" => {
+                format!("'.png' is a picture: pictures are written by `umbra render` ({SUPPORTED})")
+            }
             Some(e) => format!("unknown extension '.{e}' ({SUPPORTED})"),
             None => format!("no file extension ({SUPPORTED})"),
         };
