@@ -1068,7 +1068,7 @@ umbra.workspace = true
             "docs/a.md",
             &format!("See [b](../README.md) and `docs/x.md`.\nRead {design} first.\n"),
         )?;
-        write(&root, "docs/b.md", "The text: ../shared/seed/x.\n")?;
+        write(&root, "docs/b.md", "The text: ../outside/x.\n")?;
         write(
             &root,
             "crates/x/src/lib.rs",
@@ -1097,7 +1097,7 @@ umbra.workspace = true
             "crates/x/src/lib.rs:2: names `thesis",
             "crates/x/src/lib.rs:4: points to the absolute path `/tmp/..`",
             "docs/a.md:2: names `DESIGN",
-            "docs/b.md:1: has the relative path `../shared/seed/x.`, which leads to nothing",
+            "docs/b.md:1: has the relative path `../outside/x.`, which leads to nothing",
         ];
         assert_eq!(problems.len(), expect.len(), "{problems:?}");
         for (p, e) in problems.iter().zip(expect) {

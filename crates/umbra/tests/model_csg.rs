@@ -7,8 +7,9 @@ use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use umbra::{
-    demo_plant, evaluate_csg, evaluate_csg_with_progress, mesh_volume, non_manifold_edge_count,
-    parse_csg, read_csg_file, CsgNode, CsgOptions, DemoDetail, PolygonMesh,
+    demo_plant, evaluate_csg, evaluate_csg_with_progress, mesh_signed_volume,
+    non_manifold_edge_count, parse_csg, read_csg_file, CsgNode, CsgOptions, DemoDetail,
+    PolygonMesh,
 };
 
 fn eval(script: &str) -> PolygonMesh {
@@ -42,7 +43,7 @@ const TWO_BOXES: &str = r#"{"op": "OP", "children": [
 fn box_booleans_are_exact() {
     for (op, want) in [("union", 15.0), ("intersection", 1.0), ("difference", 7.0)] {
         let m = eval(&TWO_BOXES.replace("OP", op));
-        assert_eq!(mesh_volume(&m), want, "{op}");
+        assert_eq!(mesh_signed_volume(&m), want, "{op}");
         assert_eq!(non_manifold_edge_count(&m), 0);
     }
     // A row of five overlapping unit-height bars (balanced 5-way union),
@@ -66,7 +67,7 @@ fn box_booleans_are_exact() {
     );
     // Union: [0, 6] x [0, 1] x [0, 1]; slab: z in [0.25, 0.75]: 6 * 0.5 = 3;
     // minus [0.5, 1.5] x [0, 0.5] x [0.25, 0.75] (0.25) and x in [4, 5] (0.5).
-    assert_eq!(mesh_volume(&eval(&script)), 3.0 - 0.25 - 0.5);
+    assert_eq!(mesh_signed_volume(&eval(&script)), 3.0 - 0.25 - 0.5);
 }
 
 #[test]
@@ -75,7 +76,7 @@ fn transforms_apply_to_subtrees_in_scale_rotate_translate_order() {
     let script = r#"{"op": "union", "scale": 2, "rotate": [0, 0, 90], "translate": [5, 0, 0],
         "children": [{"box": {"size": [1, 1, 1]}}, {"box": {"size": [1, 1, 1]}, "translate": [1, 0, 0]}]}"#;
     let m = eval(script);
-    assert_eq!(mesh_volume(&m), 16.0);
+    assert_eq!(mesh_signed_volume(&m), 16.0);
     // x extent [0, 4] rotated to y in [0, 4], then x shifted by 5.
     let xs: Vec<f64> = m.vertices.iter().map(|v| v[0]).collect();
     let ys: Vec<f64> = m.vertices.iter().map(|v| v[1]).collect();
@@ -83,7 +84,7 @@ fn transforms_apply_to_subtrees_in_scale_rotate_translate_order() {
     assert_eq!(ys.iter().cloned().fold(f64::NEG_INFINITY, f64::max), 4.0);
     // A mirror keeps the volume positive.
     let m = eval(r#"{"box": {"size": [1, 2, 3]}, "scale": [-1, 1, 1]}"#);
-    assert_eq!(mesh_volume(&m), 6.0);
+    assert_eq!(mesh_signed_volume(&m), 6.0);
 }
 
 #[test]
@@ -94,14 +95,18 @@ fn polygonal_primitives_through_csg_match_the_polyhedral_formula() {
             {"box": {"size": [4, 4, 2], "center": true}},
             {"cylinder": {"radius": 1, "height": 4, "segments": 20, "center": true}}]}"#,
     );
-    assert!(close(mesh_volume(&m), 32.0 - ngon(20, 1.0) * 2.0, 1e-12));
+    assert!(close(
+        mesh_signed_volume(&m),
+        32.0 - ngon(20, 1.0) * 2.0,
+        1e-12
+    ));
     // A cylinder cut to half height by a box: the polyhedral prism.
     let m = eval(
         r#"{"op": "intersection", "children": [
             {"cylinder": {"radius": 2, "height": 4, "segments": 12}},
             {"box": {"size": [10, 10, 1]}, "translate": [-5, -5, 1]}]}"#,
     );
-    assert!(close(mesh_volume(&m), ngon(12, 2.0), 1e-12));
+    assert!(close(mesh_signed_volume(&m), ngon(12, 2.0), 1e-12));
     // Two disjoint spheres: the sum of the frusta of their bands.
     let sphere = umbra::uv_sphere(1.0, 16, 8).unwrap();
     let m = eval(
@@ -109,7 +114,11 @@ fn polygonal_primitives_through_csg_match_the_polyhedral_formula() {
             {"sphere": {"radius": 1, "segments": 16}},
             {"sphere": {"radius": 1, "segments": 16}, "translate": [5, 0, 0]}]}"#,
     );
-    assert!(close(mesh_volume(&m), 2.0 * mesh_volume(&sphere), 1e-12));
+    assert!(close(
+        mesh_signed_volume(&m),
+        2.0 * mesh_signed_volume(&sphere),
+        1e-12
+    ));
 }
 
 #[test]

@@ -7,7 +7,7 @@
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use umbra::{
-    circle, cuboid, cylinder, extrude, icosphere, mesh_volume, non_manifold_edge_count,
+    circle, cuboid, cylinder, extrude, icosphere, mesh_signed_volume, non_manifold_edge_count,
     regular_polygon, torus, transform_mesh, uv_sphere, DMat4, DVec3, Edge2, ModelError,
     PolygonMesh, PolygonSet2, Transform,
 };
@@ -27,7 +27,7 @@ fn assert_solid(m: &PolygonMesh) {
         }
         assert!(n.length() > 0.0, "facet {i} is degenerate");
     }
-    assert!(mesh_volume(m) > 0.0, "not outward");
+    assert!(mesh_signed_volume(m) > 0.0, "not outward");
 }
 
 /// The signed volume by the divergence theorem over each facet's loops,
@@ -59,11 +59,11 @@ fn ngon(n: u32, r: f64) -> f64 {
 fn boxes_have_exact_volume() {
     let b = cuboid(DVec3::new(2.0, 3.0, 5.0), false).unwrap();
     assert_solid(&b);
-    assert_eq!(mesh_volume(&b), 30.0);
+    assert_eq!(mesh_signed_volume(&b), 30.0);
     assert_eq!(fan_volume(&b), 30.0);
     let c = cuboid(DVec3::new(2.0, 3.0, 5.0), true).unwrap();
     assert_solid(&c);
-    assert_eq!(mesh_volume(&c), 30.0);
+    assert_eq!(mesh_signed_volume(&c), 30.0);
     assert!(c
         .vertices
         .iter()
@@ -77,20 +77,24 @@ fn cylinders_and_cones_match_the_polyhedral_formula() {
             let c = cylinder(1.5, 1.5, 2.0, n, center).unwrap();
             assert_solid(&c);
             let want = ngon(n, 1.5) * 2.0;
-            assert!(close(mesh_volume(&c), want, 1e-12), "n {n}");
+            assert!(close(mesh_signed_volume(&c), want, 1e-12), "n {n}");
             assert!(close(fan_volume(&c), want, 1e-12));
             assert_eq!(c.vertices.len(), 2 * n as usize);
 
             let cone = cylinder(1.5, 0.0, 2.0, n, center).unwrap();
             assert_solid(&cone);
             assert_eq!(cone.vertices.len(), n as usize + 1, "apex is one vertex");
-            assert!(close(mesh_volume(&cone), ngon(n, 1.5) * 2.0 / 3.0, 1e-12));
+            assert!(close(
+                mesh_signed_volume(&cone),
+                ngon(n, 1.5) * 2.0 / 3.0,
+                1e-12
+            ));
 
             let frustum = cylinder(1.5, 0.5, 2.0, n, center).unwrap();
             assert_solid(&frustum);
             let (a0, a1) = (ngon(n, 1.5), ngon(n, 0.5));
             let want = 2.0 / 3.0 * (a0 + a1 + (a0 * a1).sqrt());
-            assert!(close(mesh_volume(&frustum), want, 1e-12));
+            assert!(close(mesh_signed_volume(&frustum), want, 1e-12));
         }
     }
 }
@@ -119,7 +123,7 @@ fn uv_spheres_match_the_frustum_sum_of_their_bands() {
             let (a0, a1) = (ngon(n, r0), ngon(n, r1));
             want += (z0 - z1) / 3.0 * (a0 + a1 + (a0 * a1).sqrt());
         }
-        assert!(close(mesh_volume(&s), want, 1e-12), "{n}x{m}");
+        assert!(close(mesh_signed_volume(&s), want, 1e-12), "{n}x{m}");
         assert!(close(fan_volume(&s), want, 1e-12));
         assert!(want < 4.0 / 3.0 * PI * r * r * r);
     }
@@ -133,15 +137,15 @@ fn icospheres_are_regular_at_level_zero_and_converge() {
     assert_eq!((ico.vertices.len(), ico.facets.len()), (12, 20));
     let a = 4.0 * r / (10.0 + 2.0 * 5f64.sqrt()).sqrt();
     let want = 5.0 / 12.0 * (3.0 + 5f64.sqrt()) * a * a * a;
-    assert!(close(mesh_volume(&ico), want, 1e-12));
+    assert!(close(mesh_signed_volume(&ico), want, 1e-12));
     let ball = 4.0 / 3.0 * PI * r * r * r;
-    let mut last = mesh_volume(&ico);
+    let mut last = mesh_signed_volume(&ico);
     for level in 1..=4 {
         let s = icosphere(r, level).unwrap();
         assert_solid(&s);
         assert_eq!(s.facets.len(), 20 * 4usize.pow(level));
         assert_eq!(s.vertices.len(), 10 * 4usize.pow(level) + 2);
-        let v = mesh_volume(&s);
+        let v = mesh_signed_volume(&s);
         assert!(v > last && v < ball, "level {level}");
         last = v;
     }
@@ -155,7 +159,7 @@ fn tori_match_pappus_for_the_polygonal_section() {
         assert_solid(&t);
         // Each of the n wedges holds sin(2 pi / n) * area * centroid radius.
         let want = f64::from(n) * (TAU / f64::from(n)).sin() * 5.0 * ngon(m, 1.5);
-        assert!(close(mesh_volume(&t), want, 1e-12), "{n}x{m}");
+        assert!(close(mesh_signed_volume(&t), want, 1e-12), "{n}x{m}");
         assert!(close(fan_volume(&t), want, 1e-12));
     }
 }
@@ -179,7 +183,7 @@ fn extrusions_of_sets_with_holes_and_multiplicities() {
     let m = extrude(&s, 2.5).unwrap();
     assert_solid(&m);
     assert_eq!(m.facets.len(), 8 + 2);
-    assert_eq!(mesh_volume(&m), 12.0 * 2.5);
+    assert_eq!(mesh_signed_volume(&m), 12.0 * 2.5);
     assert_eq!(fan_volume(&m), 12.0 * 2.5);
 
     // Two separate regions in one set, and a circle.
@@ -189,7 +193,7 @@ fn extrusions_of_sets_with_holes_and_multiplicities() {
     two.append(&far);
     let m = extrude(&two, 1.0).unwrap();
     assert_solid(&m);
-    assert!(close(mesh_volume(&m), ngon(5, 1.0) + 2.0, 1e-12));
+    assert!(close(mesh_signed_volume(&m), ngon(5, 1.0) + 2.0, 1e-12));
 
     // A square given as two triangles sharing the diagonal (cancels), with
     // a duplicated vertex and a zero-length edge: welded to the square.
@@ -211,7 +215,7 @@ fn extrusions_of_sets_with_holes_and_multiplicities() {
     let m = extrude(&set, 3.0).unwrap();
     assert_solid(&m);
     assert_eq!(m.facets.len(), 4 + 2);
-    assert_eq!(mesh_volume(&m), 3.0);
+    assert_eq!(mesh_signed_volume(&m), 3.0);
 
     // Multiplicity 2 (a doubly covered square): volume counted twice.
     let set = PolygonSet2::from_parts(
@@ -220,7 +224,7 @@ fn extrusions_of_sets_with_holes_and_multiplicities() {
     );
     let m = extrude(&set, 1.0).unwrap();
     assert_eq!(m.check_topology(), Ok(()));
-    assert_eq!(mesh_volume(&m), 2.0);
+    assert_eq!(mesh_signed_volume(&m), 2.0);
 }
 
 #[test]
@@ -318,7 +322,7 @@ fn transforms_flip_mirrors_and_refuse_singular_matrices() {
     let mirror = DMat4::from_scale(DVec3::new(-1.0, 1.0, 1.0));
     let m = transform_mesh(&b, &mirror).unwrap();
     assert_solid(&m);
-    assert_eq!(mesh_volume(&m), 6.0);
+    assert_eq!(mesh_signed_volume(&m), 6.0);
     let squash = DMat4::from_scale(DVec3::new(1.0, 0.0, 1.0));
     assert!(transform_mesh(&b, &squash)
         .unwrap_err()
@@ -341,7 +345,7 @@ fn transforms_flip_mirrors_and_refuse_singular_matrices() {
         ..Transform::default()
     };
     let r = transform_mesh(&b, &t.matrix()).unwrap();
-    assert_eq!(mesh_volume(&r), 6.0);
+    assert_eq!(mesh_signed_volume(&r), 6.0);
     assert!(r.vertices.iter().flatten().all(|c| c.fract() == 0.0));
 }
 
@@ -392,8 +396,8 @@ proptest! {
         let det = umbra::DMat3::from_mat4(m).determinant();
         let out = transform_mesh(&mesh, &m).unwrap();
         assert_solid(&out);
-        let want = mesh_volume(&mesh) * det.abs();
-        prop_assert!(close(mesh_volume(&out), want, 1e-9), "{} vs {}", mesh_volume(&out), want);
+        let want = mesh_signed_volume(&mesh) * det.abs();
+        prop_assert!(close(mesh_signed_volume(&out), want, 1e-9), "{} vs {}", mesh_signed_volume(&out), want);
     }
 
     #[test]

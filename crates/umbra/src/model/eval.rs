@@ -345,12 +345,6 @@ pub fn non_manifold_edge_count(mesh: &PolygonMesh) -> usize {
     count.values().filter(|&&c| c != (1, 1)).count()
 }
 
-/// The signed volume of a closed polygon mesh (its triangulation of
-/// section 4.8, divergence theorem).
-pub fn mesh_volume(mesh: &PolygonMesh) -> f64 {
-    triangulate_mesh(mesh).signed_volume()
-}
-
 /// Evaluates a CSG tree (see [`evaluate_csg_with_progress`]).
 pub fn evaluate_csg(root: &CsgNode, options: CsgOptions) -> Result<CsgResult, ModelError> {
     evaluate_csg_with_progress(root, options, None)
@@ -438,7 +432,7 @@ pub fn evaluate_csg_with_progress(
         topologically_valid: topology.is_ok(),
         topology_error: topology.err().map(|e| e.to_string()),
         non_manifold_edges: non_manifold_edge_count(&mesh),
-        volume: mesh_volume(&mesh),
+        volume: topology::mesh_signed_volume(&mesh),
         bounds,
         timings_ms: CsgTimings {
             total: start.elapsed().as_secs_f64() * 1e3,

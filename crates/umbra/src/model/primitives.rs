@@ -260,13 +260,13 @@ pub fn icosphere(radius: f64, level: u32) -> Result<PolygonMesh, ModelError> {
 /// `height`, from z = 0 or centred on the origin.
 ///
 /// ```
-/// use umbra::{cylinder, mesh_volume};
+/// use umbra::{cylinder, mesh_signed_volume};
 ///
 /// let c = cylinder(1.0, 1.0, 2.0, 6, false)?;
 /// assert!(c.check_topology().is_ok());
 /// // The hexagonal prism: (n / 2) r^2 sin(2 pi / n) h.
 /// let want = 3.0 * (std::f64::consts::TAU / 6.0).sin() * 2.0;
-/// assert!((mesh_volume(&c) - want).abs() < 1e-12);
+/// assert!((mesh_signed_volume(&c) - want).abs() < 1e-12);
 /// let cone = cylinder(1.0, 0.0, 2.0, 6, true)?;
 /// assert_eq!(cone.vertices.len(), 7);
 /// assert!(cylinder(1.0, 1.0, 2.0, 2, false).is_err());
