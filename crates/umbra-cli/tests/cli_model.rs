@@ -175,3 +175,30 @@ fn the_demo_writes_a_valid_model_that_its_script_reproduces() {
     assert!(o.status.success(), "{}", stderr(&o));
     assert_eq!(std::fs::read(&again).unwrap(), std::fs::read(&obj).unwrap());
 }
+
+#[test]
+fn a_destination_that_is_a_file_of_the_script_is_refused() {
+    let dir = temp_dir("leaf");
+    let mesh = dir.join("part.obj");
+    std::fs::copy(examples().join("cube.obj"), &mesh).unwrap();
+    let before = std::fs::read(&mesh).unwrap();
+    let script = dir.join("s.json");
+    std::fs::write(
+        &script,
+        r#"{"op": "union", "children": [{"file": "part.obj"}, {"box": {"size": [1, 1, 1]}, "translate": [0.5, 0.5, 0.5]}]}"#,
+    )
+    .unwrap();
+    let o = umbra([
+        "csg",
+        script.to_str().unwrap(),
+        "-o",
+        mesh.to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(2), "{}", stderr(&o));
+    assert!(
+        stderr(&o).contains("a file of the script"),
+        "{}",
+        stderr(&o)
+    );
+    assert_eq!(std::fs::read(&mesh).unwrap(), before);
+}

@@ -56,8 +56,13 @@ impl CsgArgs {
     /// Parses, evaluates, writes the mesh (and the report), prints a summary.
     pub fn run(self) -> anyhow::Result<ExitCode> {
         let kind = FileKind::from_path(&self.out.output)?;
-        self.out.refuse_overlaps(&[("the script", self.script.as_path())])?;
+        self.out
+            .refuse_overlaps(&[("the script", self.script.as_path())])?;
         let tree = read_csg_file(&self.script)?;
+        // The mesh files the script reads are inputs too.
+        let leaves: Vec<(&str, &std::path::Path)> =
+            tree.files().into_iter().map(|p| ("a file of the script", p)).collect();
+        self.out.refuse_overlaps(&leaves)?;
         let start = Instant::now();
         let bar = Progress::new(tree.boolean_count(), self.quiet);
         let result = evaluate_csg_with_progress(

@@ -664,6 +664,15 @@ impl CsgNode {
         }
     }
 
+    /// The mesh files the tree reads (its `file` leaves), in tree order.
+    pub fn files(&self) -> Vec<&Path> {
+        match &self.shape {
+            CsgShape::File(p) => vec![p.as_path()],
+            CsgShape::Op { children, .. } => children.iter().flat_map(CsgNode::files).collect(),
+            _ => Vec::new(),
+        }
+    }
+
     /// The number of Booleans the evaluation runs: `k - 1` for an
     /// operation with `k` children.
     pub fn boolean_count(&self) -> usize {
