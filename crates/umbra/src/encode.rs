@@ -5,7 +5,7 @@
 //! back-and-forth spikes, so the written rings may differ from
 //! [`PolygonSet2::loops`]).
 
-use crate::io::rename_output;
+use crate::io::{rename_output, wrong_dimension_of as wrong_dimension};
 use crate::report::SetCounts;
 use crate::{
     layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_obj, mesh_to_off, mesh_to_ply, mesh_to_stl,
@@ -40,13 +40,6 @@ impl EncodedPolygons {
             rings: self.rings,
             signed_area: self.signed_area,
         }
-    }
-}
-
-fn wrong_dimension(file: &str, want: &str) -> UmbraError {
-    UmbraError::UnsupportedFileType {
-        file: file.to_string(),
-        detail: format!("expected a {want} file here"),
     }
 }
 

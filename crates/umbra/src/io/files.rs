@@ -5,15 +5,12 @@
 //! `.off`, `.stl` and `.ply` are 3D meshes (read and written), `.3mf` and
 //! `.glb` are 3D meshes written only.
 
-use super::geojson::{read_geojson_file, write_geojson_file};
-use super::glb::mesh_to_glb;
-use super::mesh_text::{read_mesh_text, write_mesh_file, MeshReadOptions};
-use super::ply::{mesh_to_ply, read_ply_bytes};
-use super::stl::{mesh_to_stl, read_stl_bytes};
-use super::svg::polygon_set_to_svg;
+use super::geojson::read_geojson_file;
+use super::mesh_text::{read_mesh_text, MeshReadOptions};
+use super::ply::read_ply_bytes;
+use super::stl::read_stl_bytes;
 use super::text::{decode, read_bytes, write_bytes};
-use super::threemf::mesh_to_3mf;
-use crate::{read_wkt_file, write_wkt_file, ReadOptions, RingOrientation, UmbraError};
+use crate::{read_wkt_file, ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
 
@@ -156,8 +153,14 @@ pub(crate) fn read_text(path: &Path, format: &'static str) -> Result<String, Umb
 
 /// The error for a file of the wrong dimension.
 fn wrong_dimension(path: &Path, want: &str) -> UmbraError {
+    wrong_dimension_of(&path.display().to_string(), want)
+}
+
+/// The error for a file of the other dimension (or a picture) where `want`
+/// is expected, naming `file`.
+pub(crate) fn wrong_dimension_of(file: &str, want: &str) -> UmbraError {
     UmbraError::UnsupportedFileType {
-        file: path.display().to_string(),
+        file: file.to_string(),
         detail: format!("expected a {want} file here ({SUPPORTED})"),
     }
 }
@@ -193,16 +196,10 @@ pub fn write_polygon_set(
     set: &PolygonSet2,
     orientation: RingOrientation,
 ) -> Result<usize, UmbraError> {
-    match FileKind::from_path(path)? {
-        FileKind::Wkt => write_wkt_file(path, set, orientation),
-        FileKind::GeoJson => write_geojson_file(path, set, orientation),
-        FileKind::Svg => {
-            let (text, orphans) = polygon_set_to_svg(set).map_err(|e| rename(e, path))?;
-            write_bytes(path, text.as_bytes())?;
-            Ok(orphans)
-        }
-        _ => Err(wrong_dimension(path, "2D (.wkt, .geojson, .svg)")),
-    }
+    let kind = FileKind::from_path(path)?;
+    let encoded = crate::encode_polygon_set(kind, set, orientation, &path.display().to_string())?;
+    write_bytes(path, &encoded.bytes)?;
+    Ok(encoded.orphan_holes)
 }
 
 /// Reads a 3D polygon mesh from an OBJ, OFF, STL or PLY file (by
@@ -260,27 +257,9 @@ pub fn write_mesh_with(
     mesh: &PolygonMesh,
     options: MeshWriteOptions,
 ) -> Result<(), UmbraError> {
-    let bytes = match FileKind::from_path(path)? {
-        FileKind::Obj => return write_mesh_file(path, mesh, false),
-        FileKind::Off => return write_mesh_file(path, mesh, true),
-        FileKind::Stl => mesh_to_stl(mesh, options.text),
-        FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
-        FileKind::ThreeMf => mesh_to_3mf(mesh),
-        FileKind::Glb => mesh_to_glb(mesh),
-        _ => {
-            return Err(wrong_dimension(
-                path,
-                "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
-            ))
-        }
-    }
-    .map_err(|e| rename(e, path))?;
+    let kind = FileKind::from_path(path)?;
+    let bytes = crate::encode_mesh_with(kind, mesh, options, &path.display().to_string())?;
     write_bytes(path, &bytes)
-}
-
-/// An error of a writer about `<output>`, renamed to the file.
-fn rename(e: UmbraError, path: &Path) -> UmbraError {
-    rename_output(e, &path.display().to_string())
 }
 
 /// An error of a writer about `<output>`, renamed to `file`.

@@ -28,7 +28,6 @@ use crate::UmbraError;
 use boolean_3d::triangulate_facet;
 use robust_arith::Point3;
 use std::fmt::Write as _;
-use std::path::Path;
 use topology::{Facet, HalfEdge, PolygonMesh};
 
 /// Options for reading mesh files.
@@ -423,24 +422,6 @@ pub fn mesh_to_off(mesh: &PolygonMesh) -> String {
         s.push('\n');
     }
     s
-}
-
-/// Writes a mesh as OBJ or OFF (`off`), naming the file on failure.
-pub(crate) fn write_mesh_file(
-    path: &Path,
-    mesh: &PolygonMesh,
-    off: bool,
-) -> Result<(), UmbraError> {
-    let text = if off {
-        mesh_to_off(mesh)
-    } else {
-        mesh_to_obj(mesh)
-    };
-    std::fs::write(path, text).map_err(|source| UmbraError::Io {
-        file: path.display().to_string(),
-        action: "write",
-        source,
-    })
 }
 
 #[cfg(test)]

@@ -21,11 +21,11 @@ mod threemf;
 mod wkt;
 mod wkt_diagnose;
 
-pub(crate) use files::rename_output;
 pub use files::{
     read_mesh, read_polygon_set, write_mesh, write_mesh_with, write_polygon_set, FileKind,
     MeshWriteOptions,
 };
+pub(crate) use files::{rename_output, wrong_dimension_of};
 pub use geo::{from_geo, to_geo};
 pub use geojson::{
     parse_geojson_polygons, polygons_to_geojson, read_geojson_file, read_geojson_str,
