@@ -110,6 +110,7 @@ pub use simplify_2d::{
     boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
     SimplifyError, SweepStats,
 };
+pub use smooth::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
 pub use topology::{
     check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,
     CheckReport, Edge2, EdgeUse, Facet, HalfEdge, ManifoldReport, MeshCheckReport, Operand,

@@ -1,0 +1,175 @@
+//! Vertex adjustment of Appendix A on a spatial hash grid: vertices are
+//! taken in index order; a vertex within `delta` of an already accepted
+//! vertex is merged into the earliest such vertex (and takes its
+//! position), otherwise it is accepted. Never all pairs: each vertex looks
+//! only at the accepted vertices of the 3^N grid cells around it.
+
+use std::collections::HashMap;
+
+/// The outcome of [`merge_vertices`].
+#[derive(Clone, Debug, PartialEq, Eq)]
+pub struct VertexMerge {
+    /// For every input vertex, the accepted vertex it became (itself when
+    /// accepted). Always `representative[representative[i]] ==
+    /// representative[i]` and `representative[i] <= i`.
+    pub representative: Vec<u32>,
+    /// The number of vertices merged into another.
+    pub merged: u64,
+}
+
+/// The cell size for `tolerance` over points bounded by `max_abs`: at
+/// least `2 * tolerance`, and at least `max_abs * 2^-48`, so that cell
+/// coordinates stay below 2^49 and the rounding of `x / cell` never moves
+/// two points within `tolerance` more than one cell apart.
+fn cell_size(tolerance: f64, max_abs: f64) -> f64 {
+    let floor = max_abs * (1.0 / 281_474_976_710_656.0); // 2^-48
+    let s = (2.0 * tolerance).max(floor);
+    if s > 0.0 && s.is_finite() {
+        s
+    } else {
+        f64::MIN_POSITIVE
+    }
+}
+
+fn cell_of<const N: usize>(p: &[f64; N], size: f64) -> [i64; N] {
+    // `as` saturates, and every coordinate is below 2^49 cells by the
+    // choice of `size`, so no two distinct cells collide by saturation.
+    p.map(|x| (x / size).floor() as i64)
+}
+
+fn within<const N: usize>(a: &[f64; N], b: &[f64; N], tol_sq: f64) -> bool {
+    let mut d = 0.0;
+    for k in 0..N {
+        let t = a[k] - b[k];
+        d += t * t;
+    }
+    d <= tol_sq
+}
+
+/// Merges the points within `tolerance` of an earlier accepted point
+/// (Appendix A, "vertex adjustment"). With `tolerance == 0` only exactly
+/// coincident points merge (`-0.0 == 0.0`). Points must be finite (the
+/// callers validate coordinates first).
+///
+/// ```
+/// let pts = [[0.0, 0.0], [1e-7, 0.0], [1.0, 0.0], [1.0, 5e-7]];
+/// let m = smooth::merge_vertices(&pts, 1e-6);
+/// assert_eq!(m.representative, vec![0, 0, 2, 2]);
+/// assert_eq!(m.merged, 2);
+/// ```
+pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> VertexMerge {
+    let max_abs = points
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    let size = cell_size(tolerance, max_abs);
+    let tol_sq = tolerance * tolerance;
+    let mut cells: HashMap<[i64; N], Vec<u32>> = HashMap::new();
+    let mut representative = Vec::with_capacity(points.len());
+    let mut merged = 0;
+    for (i, p) in points.iter().enumerate() {
+        let c = cell_of(p, size);
+        let mut best: Option<u32> = None;
+        for offset in 0..3usize.pow(N as u32) {
+            let mut key = c;
+            let mut o = offset;
+            for k in key.iter_mut() {
+                *k = k.saturating_add((o % 3) as i64 - 1);
+                o /= 3;
+            }
+            if let Some(list) = cells.get(&key) {
+                for &j in list {
+                    if best.is_none_or(|b| j < b) && within(p, &points[j as usize], tol_sq) {
+                        best = Some(j);
+                    }
+                }
+            }
+        }
+        match best {
+            Some(j) => {
+                representative.push(j);
+                merged += 1;
+            }
+            None => {
+                let i = i as u32;
+                representative.push(i);
+                cells.entry(c).or_default().push(i);
+            }
+        }
+    }
+    VertexMerge {
+        representative,
+        merged,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// The definition of Appendix A evaluated over all pairs: the oracle.
+    fn merge_all_pairs<const N: usize>(points: &[[f64; N]], tol: f64) -> Vec<u32> {
+        let mut accepted: Vec<u32> = Vec::new();
+        let mut rep = Vec::new();
+        for (i, p) in points.iter().enumerate() {
+            match accepted
+                .iter()
+                .find(|&&j| within(p, &points[j as usize], tol * tol))
+            {
+                Some(&j) => rep.push(j),
+                None => {
+                    accepted.push(i as u32);
+                    rep.push(i as u32);
+                }
+            }
+        }
+        rep
+    }
+
+    #[test]
+    fn zero_tolerance_merges_exact_duplicates_only() {
+        let pts = [
+            [0.0, -0.0, 1.0],
+            [-0.0, 0.0, 1.0],
+            [0.0, 0.0, 1.0 + f64::EPSILON],
+        ];
+        let m = merge_vertices(&pts, 0.0);
+        assert_eq!(m.representative, vec![0, 0, 2]);
+        assert_eq!(m.merged, 1);
+    }
+
+    #[test]
+    fn chains_do_not_merge_transitively() {
+        // 0 is accepted; 1 is within tol of 0; 2 is within tol of 1 but
+        // not of 0 and 1 is not accepted, so 2 is accepted.
+        let pts = [[0.0], [0.9], [1.8]];
+        assert_eq!(merge_vertices(&pts, 1.0).representative, vec![0, 0, 2]);
+    }
+
+    #[test]
+    fn huge_coordinates_with_tiny_tolerance() {
+        let big = 1e300;
+        let pts = [[big, -big], [big, -big], [-big, big], [0.0, 0.0]];
+        let m = merge_vertices(&pts, 1e-300);
+        assert_eq!(m.representative, vec![0, 0, 2, 3]);
+    }
+
+    proptest! {
+        #[test]
+        fn grid_equals_all_pairs_definition(
+            pts in prop::collection::vec(prop::array::uniform3(-4i32..4), 0..60),
+            scale in prop::sample::select(vec![1e-9, 0.25, 1.0, 1e6, 1e150]),
+            tol in prop::sample::select(vec![0.0, 0.3, 0.5, 1.0, 1.5]),
+        ) {
+            let p: Vec<[f64; 3]> = pts
+                .iter()
+                .map(|q| q.map(|x| f64::from(x) * scale / 2.0))
+                .collect();
+            let m = merge_vertices(&p, tol * scale);
+            prop_assert_eq!(&m.representative, &merge_all_pairs(&p, tol * scale));
+            let merged = m.representative.iter().enumerate().filter(|(i, &r)| r as usize != *i).count();
+            prop_assert_eq!(m.merged, merged as u64);
+        }
+    }
+}
