@@ -8,6 +8,7 @@ use boolean_2d::BooleanError;
 use boolean_3d::Boolean3Error;
 use robust_arith::ArithError;
 use simplify_2d::SimplifyError;
+use smooth::SmoothError;
 use std::fmt;
 use topology::TopologyError;
 
@@ -103,6 +104,14 @@ pub enum UmbraError {
         /// The error of the 3D Boolean.
         source: Boolean3Error,
     },
+    /// Smoothing (Appendix A) failed; the shape is named by its file.
+    Smooth {
+        /// The file of the shape smoothed, or an empty string when it has
+        /// none (an operation's result).
+        file: String,
+        /// The error of smoothing.
+        source: SmoothError,
+    },
     /// A mesh read from a file violates a constraint of section 4.2 or has
     /// a bad coordinate; the message says where in the file (1-based face
     /// and vertex numbers in the file's own numbering, with the line or
@@ -182,6 +191,13 @@ impl fmt::Display for UmbraError {
                     format!("{file}: {source}")
                 }
             }
+            UmbraError::Smooth { file, source } => {
+                if file.is_empty() {
+                    format!("smooth: {source}")
+                } else {
+                    format!("{file}: {source}")
+                }
+            }
             UmbraError::InvalidMesh { file, message, .. } => {
                 format!("{file}: invalid shape: {message}")
             }
@@ -209,6 +225,7 @@ impl std::error::Error for UmbraError {
             UmbraError::Boolean { source, .. } => Some(source),
             UmbraError::Simplify { source, .. } => Some(source),
             UmbraError::Boolean3 { source, .. } => Some(source),
+            UmbraError::Smooth { source, .. } => Some(source),
             _ => None,
         }
     }

@@ -85,6 +85,7 @@ mod ops;
 #[cfg(feature = "render")]
 mod render;
 mod report;
+mod smoothing;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
 pub use boolean_3d::{
@@ -101,7 +102,7 @@ pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 pub use render::*;
 pub use report::{
     fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
-    SimplifyReport, SweepReport, Timings,
+    SimplifyReport, SmoothFileReport, SweepReport, Timings,
 };
 pub use robust_arith::{
     orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,
@@ -110,7 +111,13 @@ pub use simplify_2d::{
     boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
     SimplifyError, SweepStats,
 };
-pub use smooth::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
+pub use smooth::{
+    smooth_mesh, smooth_polygon_set, smooth_triangles, SmoothCounts, SmoothError, SmoothOptions,
+    SmoothReport, Smoothed,
+};
+pub use smoothing::{
+    default_mesh_tolerance, default_set_tolerance, smooth_solid, DEFAULT_RELATIVE_TOLERANCE,
+};
 pub use topology::{
     check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,
     CheckReport, Edge2, EdgeUse, Facet, HalfEdge, ManifoldReport, MeshCheckReport, Operand,

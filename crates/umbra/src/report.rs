@@ -11,6 +11,7 @@ use crate::ops::{SolidOutput, Via};
 use boolean_2d::{BooleanOutput, Timings as BooleanTimings};
 use serde::Serialize;
 use simplify_2d::{FillRule, Simplified, SweepStats};
+use smooth::{SmoothReport, Smoothed};
 use topology::{BooleanOp, PolygonMesh, PolygonSet2, TopologyError};
 
 /// One value per operand.
@@ -109,6 +110,9 @@ pub struct Timings {
     /// 3D triangle-mesh variant: triangulating the operands.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub triangulate_inputs: Option<f64>,
+    /// Smoothing of the result (Appendix A), when it ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<f64>,
 }
 
 impl Timings {
@@ -130,6 +134,7 @@ impl Timings {
             winding_numbers: Some(t.winding),
             construct: Some(t.construct),
             triangulate_inputs: None,
+            smooth: None,
         }
     }
 }
@@ -203,6 +208,8 @@ pub struct Boolean2Report {
     /// Through simplification: the sweep's counters.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub sweep: Option<SweepReport>,
+    /// What smoothing did, when the result was smoothed; `null` otherwise.
+    pub smoothing: Option<SmoothReport>,
     /// Milliseconds.
     pub timings_ms: Timings,
 }
@@ -231,6 +238,7 @@ impl Boolean2Report {
             epsilon: out.epsilon,
             k_max: None,
             sweep: None,
+            smoothing: None,
             timings_ms: Timings::with_phases(total_ms, &out.timings),
         }
     }
@@ -258,8 +266,29 @@ impl Boolean2Report {
             epsilon: out.epsilon,
             k_max: Some(out.k_max),
             sweep: Some(SweepReport::from(&out.stats)),
+            smoothing: None,
             timings_ms: Timings::total(total_ms),
         }
+    }
+
+    /// The report once the result was smoothed in `smooth_ms`: `output`
+    /// counts the smoothed set as written, validity is checked again, the
+    /// epsilon grows by smoothing's, and `total` includes smoothing.
+    pub fn smoothed(
+        mut self,
+        output: SetCounts,
+        smoothed: &Smoothed<PolygonSet2>,
+        smooth_ms: f64,
+    ) -> Self {
+        let (valid, error) = validity(smoothed.shape.check_topology());
+        self.output = output;
+        self.topologically_valid = valid;
+        self.topology_error = error;
+        self.epsilon += smoothed.report.epsilon;
+        self.smoothing = Some(smoothed.report.clone());
+        self.timings_ms.smooth = Some(smooth_ms);
+        self.timings_ms.total += smooth_ms;
+        self
     }
 }
 
@@ -349,6 +378,8 @@ pub struct Boolean3Report {
     pub topologically_valid: bool,
     /// The violated constraint, if any.
     pub topology_error: Option<String>,
+    /// What smoothing did, when the result was smoothed; `null` otherwise.
+    pub smoothing: Option<SmoothReport>,
     /// Milliseconds.
     pub timings_ms: Timings,
 }
@@ -375,9 +406,79 @@ impl Boolean3Report {
             intersections: out.intersections,
             topologically_valid,
             topology_error,
+            smoothing: None,
             timings_ms: Timings {
                 triangulate_inputs: out.triangulate_ms,
                 ..Timings::total(out.total_ms)
+            },
+        }
+    }
+
+    /// The report once the result was smoothed in `smooth_ms`: the output
+    /// counted again as `output_file`, validity checked again, `total`
+    /// includes smoothing.
+    pub fn smoothed(
+        mut self,
+        output_file: impl Into<String>,
+        smoothed: &Smoothed<PolygonMesh>,
+        smooth_ms: f64,
+    ) -> Self {
+        let (valid, error) = validity(smoothed.shape.check_topology());
+        self.output = MeshCounts::of_mesh(output_file, &smoothed.shape);
+        self.topologically_valid = valid;
+        self.topology_error = error;
+        self.smoothing = Some(smoothed.report.clone());
+        self.timings_ms.smooth = Some(smooth_ms);
+        self.timings_ms.total += smooth_ms;
+        self
+    }
+}
+
+/// The report of smoothing a file (`umbra smooth`): `C` is [`SetCounts`]
+/// or [`MeshCounts`].
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct SmoothFileReport<C> {
+    /// Always `smooth`.
+    pub operation: &'static str,
+    /// The input.
+    pub input: C,
+    /// The result as written.
+    pub output: C,
+    /// The result satisfies the closure constraints (always, unless a
+    /// bug or an invalid input, which is refused).
+    pub topologically_valid: bool,
+    /// The violated constraint, if any.
+    pub topology_error: Option<String>,
+    /// The epsilon smoothing adds (its distortion bound, and in 2D the
+    /// sweep's epsilon).
+    pub epsilon: f64,
+    /// What smoothing did.
+    pub smoothing: SmoothReport,
+    /// Milliseconds: `total` is smoothing alone.
+    pub timings_ms: Timings,
+}
+
+impl<C> SmoothFileReport<C> {
+    /// The report of `smoothed`, counted as `input` and `output`.
+    pub fn new<S>(
+        input: C,
+        output: C,
+        smoothed: &Smoothed<S>,
+        check: Result<(), TopologyError>,
+        total_ms: f64,
+    ) -> Self {
+        let (topologically_valid, topology_error) = validity(check);
+        SmoothFileReport {
+            operation: "smooth",
+            input,
+            output,
+            topologically_valid,
+            topology_error,
+            epsilon: smoothed.report.epsilon,
+            smoothing: smoothed.report.clone(),
+            timings_ms: Timings {
+                smooth: Some(total_ms),
+                ..Timings::total(total_ms)
             },
         }
     }

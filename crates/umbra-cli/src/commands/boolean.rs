@@ -3,7 +3,8 @@
 //! variant, or triangle-mesh variant with `--triangulate`), by the files'
 //! extensions.
 
-use super::{invalid_result, millis_since, orientation, warn_orphans};
+use super::smooth::summary;
+use super::{invalid_result, millis_since, orientation, tolerance_arg, warn_orphans};
 use crate::errors::{self, usage};
 use crate::files::OutputArgs;
 use crate::stdout::outln;
@@ -12,9 +13,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_via_simplify, encode_mesh_with, encode_polygon_set, read_mesh,
-    read_polygon_set, Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts,
-    MeshReadOptions, MeshVariant, Operands, ReadOptions, SetCounts, Via,
+    boolean, boolean_solid, boolean_via_simplify, default_mesh_tolerance, encode_mesh_with,
+    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid,
+    Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
+    Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
 };
 
 /// Union, intersection, difference or (2D only) xor of two files
@@ -45,6 +47,13 @@ pub struct BooleanArgs {
     /// internal edges first, and the output is triangles.
     #[arg(long)]
     triangulate: bool,
+    /// Smooth the result at this tolerance (Appendix A: merges what lies
+    /// closer, removes slivers, gaps and coincident opposing facets).
+    /// 3D results are smoothed by default at 1e-9 times the operands'
+    /// largest bounding-box extent; `--smooth 0` writes the basic
+    /// Boolean's raw output. 2D results are smoothed only when asked.
+    #[arg(long, value_name = "T", value_parser = tolerance_arg)]
+    smooth: Option<f64>,
 }
 
 /// The Boolean operations, as named on the command line.
@@ -154,7 +163,7 @@ impl BooleanArgs {
                     &out,
                     total,
                 );
-                (encoded, report)
+                self.smooth_2d(out.shape, encoded, report, out_kind)?
             }
             Via::Simplify => {
                 let result = boolean_via_simplify(&a, &b, op);
@@ -170,7 +179,7 @@ impl BooleanArgs {
                     &out,
                     total,
                 );
-                (encoded, report)
+                self.smooth_2d(out.shape, encoded, report, out_kind)?
             }
         };
         self.out.write(&encoded.bytes, &report)?;
@@ -180,8 +189,12 @@ impl BooleanArgs {
             (None, Some(k)) => format!("k_max {k}"),
             (None, None) => String::new(),
         };
+        let smoothing = report
+            .smoothing
+            .as_ref()
+            .map_or(String::new(), |r| format!(", {}", summary(r)));
         outln!(
-            "{}{}: {} vertices, {} rings, {detail}, epsilon {:e}, {:.3} ms -> {}",
+            "{}{}: {} vertices, {} rings, {detail}{smoothing}, epsilon {:e}, {:.3} ms -> {}",
             op.name(),
             if via == Via::Simplify {
                 " (via simplify)"
@@ -212,19 +225,39 @@ impl BooleanArgs {
         let out = boolean_solid(&a, &b, op, variant)
             .map_err(|e| errors::boolean3(e, [a_path, b_path]))?;
         let out_file = out_path.display().to_string();
-        let bytes = encode_mesh_with(out_kind, &out.mesh, self.out.mesh_options(), &out_file)?;
-        let report = Boolean3Report::new(
+        let mut report = Boolean3Report::new(
             op,
             Operands {
                 a: MeshCounts::of_mesh(a_path.display().to_string(), &a),
                 b: MeshCounts::of_mesh(b_path.display().to_string(), &b),
             },
-            out_file,
+            out_file.clone(),
             &out,
         );
+        let tol = self
+            .smooth
+            .unwrap_or_else(|| default_mesh_tolerance(&a).max(default_mesh_tolerance(&b)));
+        let mesh = if tol > 0.0 {
+            let start = Instant::now();
+            let smoothed = smooth_solid(&out.mesh, variant, &SmoothOptions::new(tol)).map_err(
+                |source| UmbraError::Smooth {
+                    file: String::new(),
+                    source,
+                },
+            )?;
+            report = report.smoothed(out_file.clone(), &smoothed, millis_since(start));
+            smoothed.shape
+        } else {
+            out.mesh
+        };
+        let bytes = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
         self.out.write(&bytes, &report)?;
+        let smoothing = report
+            .smoothing
+            .as_ref()
+            .map_or(String::new(), |r| format!(", {}", summary(r)));
         outln!(
-            "{} ({}): {} vertices, {} facets, {} edge-facet intersections, volume {}, {:.3} ms -> {}",
+            "{} ({}): {} vertices, {} facets, {} edge-facet intersections{smoothing}, volume {}, {:.3} ms -> {}",
             op.name(),
             report.variant,
             report.output.vertices,
@@ -238,5 +271,37 @@ impl BooleanArgs {
             return Err(invalid_result());
         }
         Ok(ExitCode::SUCCESS)
+    }
+
+    /// Smooths a 2D result when `--smooth T` (T > 0) asks for it: the
+    /// smoothed set encoded and the report updated; otherwise unchanged.
+    fn smooth_2d(
+        &self,
+        shape: PolygonSet2,
+        encoded: umbra::EncodedPolygons,
+        report: Boolean2Report,
+        out_kind: FileKind,
+    ) -> anyhow::Result<(umbra::EncodedPolygons, Boolean2Report)> {
+        let tol = match self.smooth {
+            Some(t) if t > 0.0 => t,
+            _ => return Ok((encoded, report)),
+        };
+        let start = Instant::now();
+        let smoothed = smooth_polygon_set(&shape, &SmoothOptions::new(tol)).map_err(|source| {
+            UmbraError::Smooth {
+                file: String::new(),
+                source,
+            }
+        })?;
+        let ms = millis_since(start);
+        let out_file = self.out.output.display().to_string();
+        let encoded = encode_polygon_set(
+            out_kind,
+            &smoothed.shape,
+            orientation(self.keep_orientation),
+            &out_file,
+        )?;
+        let report = report.smoothed(encoded.counts(&out_file), &smoothed, ms);
+        Ok((encoded, report))
     }
 }

@@ -2,7 +2,7 @@
 //! files and Booleans (the JSON form below) with the 3D Boolean, batched and
 //! in parallel, deterministic whatever the thread count.
 
-use super::millis_since;
+use super::{millis_since, smooth_result, tolerance_arg};
 use crate::files::OutputArgs;
 use crate::progress::Progress;
 use crate::stdout::outln;
@@ -50,6 +50,11 @@ pub struct CsgArgs {
     /// No progress bar and no summary on standard output.
     #[arg(long)]
     quiet: bool,
+    /// Smooth the result once, at the end, at this tolerance (Appendix
+    /// A). Default: 1e-9 times the result's largest bounding-box extent;
+    /// `--smooth 0` writes the Booleans' raw output.
+    #[arg(long, value_name = "T", value_parser = tolerance_arg)]
+    smooth: Option<f64>,
 }
 
 impl CsgArgs {
@@ -73,14 +78,18 @@ impl CsgArgs {
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();
-        let result = result?;
+        let result = smooth_result(result?, self.triangulate, self.smooth)?;
         let file = self.out.output.display().to_string();
         let bytes = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
         self.out.write(&bytes, &result.report)?;
         if !self.quiet {
             let r = &result.report;
+            let smoothing = r
+                .smoothing
+                .as_ref()
+                .map_or(String::new(), |s| format!("; {}", super::smooth::summary(s)));
             outln!(
-                "{file}: {} Booleans ({} variant) in {:.1} ms; {} vertices, {} facets; {}; volume {}",
+                "{file}: {} Booleans ({} variant) in {:.1} ms{smoothing}; {} vertices, {} facets; {}; volume {}",
                 r.booleans,
                 r.variant,
                 millis_since(start),

@@ -1,9 +1,10 @@
 //! `umbra demo [-o DIR]`: no input needed. Builds a small process-plant
 //! model (vessels, pipes with flanges, a supporting frame) from built-in
-//! primitives through a chain of some hundreds of 3D Booleans, writes the
+//! primitives through a chain of some hundreds of 3D Booleans, smooths
+//! the result once (Appendix A, the default tolerance), writes the
 //! mesh, its script and a picture (`plant.png`, iso view), and prints a validity and timing summary.
 
-use super::millis_since;
+use super::{millis_since, smooth_result};
 use crate::files::write_all;
 use crate::progress::Progress;
 use crate::stdout::outln;
@@ -51,7 +52,7 @@ impl DemoArgs {
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();
-        let result = result?;
+        let result = smooth_result(result?, self.triangulate, None)?;
         let eval_ms = millis_since(start);
         let check_start = Instant::now();
         let check = check_mesh(&result.mesh);
@@ -104,6 +105,9 @@ impl DemoArgs {
             r.threads
         )?;
         outln!("  evaluated in {eval_ms:.0} ms; checked in {check_ms:.0} ms")?;
+        if let Some(s) = &r.smoothing {
+            outln!("  {}", super::smooth::summary(s))?;
+        }
         outln!(
             "  result: {} vertices, {} facets, volume {:.3}",
             r.vertices,

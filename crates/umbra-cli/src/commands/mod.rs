@@ -38,6 +38,7 @@ commands! {
     Csg => csg::CsgArgs,
     Demo => demo::DemoArgs,
     Render => render::RenderArgs,
+    Smooth => smooth::SmoothArgs,
 }
 
 /// The ring orientation of `--keep-orientation`.
@@ -47,6 +48,52 @@ pub fn orientation(keep: bool) -> umbra::RingOrientation {
     } else {
         umbra::RingOrientation::ByRole
     }
+}
+
+/// Parses a smoothing tolerance (`--tol`, `--smooth`): a finite number
+/// >= 0 (a usage error otherwise).
+pub fn tolerance_arg(s: &str) -> Result<f64, String> {
+    let t: f64 = s
+        .trim()
+        .parse()
+        .map_err(|_| format!("'{s}' is not a number"))?;
+    if t.is_finite() && t >= 0.0 {
+        Ok(t)
+    } else {
+        Err(format!("the tolerance must be finite and >= 0, got '{s}'"))
+    }
+}
+
+/// Smooths a CSG result once, at the end (the dissertation found one pass
+/// at the end of a chain of Booleans cheaper than one per Boolean, section
+/// 5.2): at `tolerance`, or by default at
+/// [`umbra::DEFAULT_RELATIVE_TOLERANCE`] times the result's extent; a
+/// tolerance of 0 leaves the result raw.
+pub fn smooth_result(
+    result: umbra::CsgResult,
+    triangulate: bool,
+    tolerance: Option<f64>,
+) -> anyhow::Result<umbra::CsgResult> {
+    let tol = tolerance.unwrap_or_else(|| umbra::default_mesh_tolerance(&result.mesh));
+    if tol <= 0.0 {
+        return Ok(result);
+    }
+    let variant = if triangulate {
+        umbra::MeshVariant::TriangleMesh
+    } else {
+        umbra::MeshVariant::PolygonMesh
+    };
+    let start = std::time::Instant::now();
+    let smoothed = umbra::smooth_solid(&result.mesh, variant, &umbra::SmoothOptions::new(tol))
+        .map_err(|source| umbra::UmbraError::Smooth {
+            file: String::new(),
+            source,
+        })?;
+    let report = result.report.smoothed(&smoothed, millis_since(start));
+    Ok(umbra::CsgResult {
+        mesh: smoothed.shape,
+        report,
+    })
 }
 
 /// Milliseconds since `start`.

@@ -11,6 +11,7 @@ use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
 use glam::DVec3;
 use rayon::prelude::*;
 use serde::Serialize;
+use smooth::{SmoothReport, Smoothed};
 use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
@@ -76,17 +77,61 @@ pub struct CsgReport {
     pub volume: f64,
     /// The axis-aligned bounds `[min, max]`, if the output has a vertex.
     pub bounds: Option<[[f64; 3]; 2]>,
+    /// What smoothing did, when the result was smoothed
+    /// ([`CsgReport::smoothed`]); `null` otherwise.
+    pub smoothing: Option<SmoothReport>,
     /// Wall-clock milliseconds: `total` is the whole evaluation.
     pub timings_ms: CsgTimings,
     /// One entry per node, in tree order (pre-order).
     pub nodes: Vec<NodeReport>,
 }
 
+impl CsgReport {
+    /// The report once the result was smoothed in `smooth_ms`: the output
+    /// described again (counts, validity, manifoldness, volume, bounds),
+    /// the smoothing report kept, `total` including smoothing.
+    pub fn smoothed(mut self, smoothed: &Smoothed<PolygonMesh>, smooth_ms: f64) -> Self {
+        let mesh = &smoothed.shape;
+        let topology = mesh.check_topology();
+        self.vertices = mesh.vertices.len();
+        self.facets = mesh.facets.len();
+        self.half_edges = mesh.half_edge_count();
+        self.topologically_valid = topology.is_ok();
+        self.topology_error = topology.err().map(|e| e.to_string());
+        self.non_manifold_edges = non_manifold_edge_count(mesh);
+        self.volume = topology::mesh_signed_volume(mesh);
+        self.bounds = bounds_of(mesh);
+        self.smoothing = Some(smoothed.report.clone());
+        self.timings_ms.smooth = Some(smooth_ms);
+        self.timings_ms.total += smooth_ms;
+        self
+    }
+}
+
+/// The axis-aligned bounds `[min, max]` of the vertices, if any.
+fn bounds_of(mesh: &PolygonMesh) -> Option<[[f64; 3]; 2]> {
+    mesh.vertices.first().map(|&v0| {
+        let mut lo = v0;
+        let mut hi = v0;
+        for v in &mesh.vertices {
+            for k in 0..3 {
+                lo[k] = lo[k].min(v[k]);
+                hi[k] = hi[k].max(v[k]);
+            }
+        }
+        [lo, hi]
+    })
+}
+
 /// The timings of an evaluation, in milliseconds.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct CsgTimings {
-    /// The whole evaluation (parsing and file I/O excluded).
+    /// The whole evaluation (parsing and file I/O excluded), smoothing
+    /// included when it ran.
     pub total: f64,
+    /// Smoothing of the result, when it ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smooth: Option<f64>,
 }
 
 /// The result of an evaluation.
@@ -406,17 +451,7 @@ pub fn evaluate_csg_with_progress(
     let mut nodes = ctx.nodes.into_inner().unwrap_or_else(|e| e.into_inner());
     nodes.sort_by(|a, b| a.0.cmp(&b.0));
     let topology = mesh.check_topology();
-    let bounds = mesh.vertices.first().map(|&v0| {
-        let mut lo = v0;
-        let mut hi = v0;
-        for v in &mesh.vertices {
-            for k in 0..3 {
-                lo[k] = lo[k].min(v[k]);
-                hi[k] = hi[k].max(v[k]);
-            }
-        }
-        [lo, hi]
-    });
+    let bounds = bounds_of(&mesh);
     let report = CsgReport {
         variant: if options.triangulate {
             "triangle"
@@ -434,8 +469,10 @@ pub fn evaluate_csg_with_progress(
         non_manifold_edges: non_manifold_edge_count(&mesh),
         volume: topology::mesh_signed_volume(&mesh),
         bounds,
+        smoothing: None,
         timings_ms: CsgTimings {
             total: start.elapsed().as_secs_f64() * 1e3,
+            smooth: None,
         },
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };

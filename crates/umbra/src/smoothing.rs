@@ -1,0 +1,94 @@
+//! Smoothing in the facade (dissertation chapter 5 and Appendix A): the
+//! tolerance rule front ends use when the user gives none, and smoothing
+//! of a 3D result in the variant it came from (a triangle-variant result
+//! stays a triangle mesh). Smoothing stays an explicit call in the library:
+//! no Boolean of this crate smooths on its own.
+
+use crate::ops::{as_triangle_mesh, MeshVariant};
+use smooth::{smooth_mesh, smooth_triangles, SmoothError, SmoothOptions, Smoothed};
+use topology::{PolygonMesh, PolygonSet2};
+
+/// The default smoothing tolerance, relative to the largest extent of the
+/// shape's bounding box: `1e-9`.
+///
+/// Why this value: the basic Boolean computes each intersection vertex
+/// within about `12.4 u L` (section 8.2, `u = 2^-53`), that is about
+/// `1.4e-15` of the coordinates' size, and the slivers, folds and gaps that
+/// rounding and near-coincident input leave are of that size; `1e-9` is a
+/// million times larger, so they all go. It is also far below any intended
+/// feature: a nanometre on a one-metre part, a millimetre on a continent.
+/// Parts meant to touch within a modeller's tolerance (`1e-6` of a unit
+/// cube, say) need an explicit, larger tolerance.
+pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-9;
+
+fn extent<const N: usize>(points: impl Iterator<Item = [f64; N]>) -> f64 {
+    let mut lo = [f64::INFINITY; N];
+    let mut hi = [f64::NEG_INFINITY; N];
+    let mut any = false;
+    for p in points {
+        any = true;
+        for k in 0..N {
+            lo[k] = lo[k].min(p[k]);
+            hi[k] = hi[k].max(p[k]);
+        }
+    }
+    if !any {
+        return 0.0;
+    }
+    let e = (0..N).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+    if e.is_finite() {
+        e
+    } else {
+        0.0
+    }
+}
+
+/// [`DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of the mesh's
+/// bounding box (0 for an empty mesh or non-finite coordinates, which
+/// smoothing then refuses as input anyway).
+///
+/// ```
+/// use umbra::{default_mesh_tolerance, Facet, PolygonMesh};
+/// let m = PolygonMesh::new(vec![[0.0, 0.0, 0.0], [4.0, 1.0, 2.0], [1.0, 3.0, 0.0]],
+///                          vec![Facet::from_loop(&[0, 1, 2]), Facet::from_loop(&[0, 2, 1])]);
+/// assert_eq!(default_mesh_tolerance(&m), 4e-9);
+/// ```
+pub fn default_mesh_tolerance(mesh: &PolygonMesh) -> f64 {
+    DEFAULT_RELATIVE_TOLERANCE * extent(mesh.vertices.iter().copied())
+}
+
+/// [`DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of the set's
+/// bounding box.
+pub fn default_set_tolerance(set: &PolygonSet2) -> f64 {
+    DEFAULT_RELATIVE_TOLERANCE * extent(set.vertices().iter().copied())
+}
+
+/// Smooths a 3D result in its variant: a triangle mesh (every facet one
+/// loop of three half-edges) by [`smooth_triangles`], which re-triangulates
+/// what it changes, so the result stays triangles; anything else by
+/// [`smooth_mesh`]. `variant` says which the caller expects: asking for
+/// [`MeshVariant::TriangleMesh`] on a mesh with other facets smooths it
+/// as a polygon mesh and then triangulates it by internal edges.
+pub fn smooth_solid(
+    mesh: &PolygonMesh,
+    variant: MeshVariant,
+    options: &SmoothOptions,
+) -> Result<Smoothed<PolygonMesh>, SmoothError> {
+    match (variant, as_triangle_mesh(mesh)) {
+        (MeshVariant::TriangleMesh, Some(tri)) => {
+            let out = smooth_triangles(&tri, options)?;
+            Ok(Smoothed {
+                shape: out.shape.to_polygon_mesh(),
+                report: out.report,
+            })
+        }
+        (MeshVariant::TriangleMesh, None) => {
+            let out = smooth_mesh(mesh, options)?;
+            Ok(Smoothed {
+                shape: topology::triangulate_mesh(&out.shape).to_polygon_mesh(),
+                report: out.report,
+            })
+        }
+        (MeshVariant::PolygonMesh, _) => smooth_mesh(mesh, options),
+    }
+}

@@ -1,0 +1,216 @@
+//! Smoothing on real data nobody here made (test-support's `data/`):
+//! PyVista's threaded hex nut and sphere combined with moved copies of
+//! themselves, in both variants of the 3D Boolean, must come out with no
+//! self-intersecting facet pairs (by the exact test of `umbra check`)
+//! after smoothing at the default tolerance, since the inputs have none;
+//! the ant, whose legs pass through its body, must stay valid. Natural
+//! Earth's countries, whose neighbours share borders, must smooth into a
+//! valid set with no crossing or overlapping edges, the area moving by at
+//! most perimeter x tolerance.
+
+use std::path::Path;
+use test_support::data_path;
+use umbra::{
+    boolean, boolean_solid, check_mesh, check_polygon_set, default_mesh_tolerance, read_mesh,
+    read_polygon_set, smooth_polygon_set, smooth_solid, BooleanOp, MeshReadOptions, MeshVariant,
+    PolygonMesh, PolygonSet2, ReadOptions, SmoothOptions,
+};
+
+fn mesh(name: &str) -> PolygonMesh {
+    read_mesh(
+        &data_path(&format!("pyvista/{name}")),
+        MeshReadOptions::default(),
+        true,
+    )
+    .unwrap()
+}
+
+/// The mesh rotated by `deg` degrees about the z axis through its
+/// bounding-box centre, then moved by `shift`.
+fn moved(m: &PolygonMesh, deg: f64, shift: [f64; 3]) -> PolygonMesh {
+    let [lo, hi] = m.bounding_box().unwrap();
+    let c = [0.5 * (lo[0] + hi[0]), 0.5 * (lo[1] + hi[1])];
+    let (s, co) = deg.to_radians().sin_cos();
+    let vertices = m
+        .vertices
+        .iter()
+        .map(|p| {
+            let (x, y) = (p[0] - c[0], p[1] - c[1]);
+            [
+                c[0] + co * x - s * y + shift[0],
+                c[1] + s * x + co * y + shift[1],
+                p[2] + shift[2],
+            ]
+        })
+        .collect();
+    PolygonMesh::new(vertices, m.facets.clone())
+}
+
+fn surface_area(m: &PolygonMesh) -> f64 {
+    let tri = topology_free_triangles(m);
+    tri.iter()
+        .map(|[a, b, c]| {
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+            let n = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
+        })
+        .sum()
+}
+
+/// The triangles of a triangulation by internal edges, as positions.
+fn topology_free_triangles(m: &PolygonMesh) -> Vec<[[f64; 3]; 3]> {
+    let t = umbra::triangulate_mesh(m);
+    t.triangles
+        .iter()
+        .map(|tr| tr.map(|i| t.vertices[i as usize]))
+        .collect()
+}
+
+/// Runs `a op b` in `variant`, smooths at the default tolerance and
+/// returns (raw pairs, smoothed pairs); asserts validity, the variant's
+/// facet form and the volume bound.
+fn combine_and_smooth(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    variant: MeshVariant,
+) -> (usize, usize) {
+    let raw = boolean_solid(a, b, op, variant).unwrap().mesh;
+    let raw_check = check_mesh(&raw);
+    let tol = default_mesh_tolerance(a).max(default_mesh_tolerance(b));
+    let out = smooth_solid(&raw, variant, &SmoothOptions::new(tol)).unwrap();
+    let s = &out.shape;
+    s.check_topology().unwrap();
+    assert!(!out.report.budget_hit);
+    if variant == MeshVariant::TriangleMesh {
+        assert!(umbra::as_triangle_mesh(s).is_some(), "not triangles");
+    }
+    let check = check_mesh(s);
+    let dv = (check.signed_volume.unwrap() - raw_check.signed_volume.unwrap()).abs();
+    let bound = surface_area(&raw) * out.report.distortion_bound.max(tol) * 1.0001 + 1e-9;
+    assert!(dv <= bound, "volume moved {dv} > {bound}");
+    assert!(out.report.max_displacement <= out.report.distortion_bound);
+    (
+        raw_check.self_intersecting_facet_pairs.unwrap(),
+        check.self_intersecting_facet_pairs.unwrap(),
+    )
+}
+
+#[test]
+fn hex_nut_with_a_rotated_copy_has_no_self_intersections_after_smoothing() {
+    let nut = mesh("nut.ply");
+    assert_eq!(check_mesh(&nut).self_intersecting_facet_pairs, Some(0));
+    let mut report = Vec::new();
+    for (deg, shift) in [
+        (3.0, [0.0; 3]),
+        (0.5, [0.01, 0.0, 0.003]),
+        (7.0, [0.0, 0.0, 0.5]),
+    ] {
+        let other = moved(&nut, deg, shift);
+        assert_eq!(check_mesh(&other).self_intersecting_facet_pairs, Some(0));
+        for op in BooleanOp::BASIC {
+            for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
+                let (raw, smoothed) = combine_and_smooth(&nut, &other, op, variant);
+                report.push(format!("{deg} {op:?} {variant:?}: {raw} -> {smoothed}"));
+                assert_eq!(smoothed, 0, "{}", report.join("\n"));
+            }
+        }
+    }
+    eprintln!("{}", report.join("\n"));
+}
+
+#[test]
+fn sphere_with_moved_copies_has_no_self_intersections_after_smoothing() {
+    let sphere = mesh("sphere.ply");
+    for (deg, shift) in [(1.0, [10.0, 5.0, 0.0]), (0.0, [1e-7, 0.0, 0.0])] {
+        let other = moved(&sphere, deg, shift);
+        for op in BooleanOp::BASIC {
+            for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
+                let (_, smoothed) = combine_and_smooth(&sphere, &other, op, variant);
+                assert_eq!(smoothed, 0, "{op:?} {variant:?} shift {shift:?}");
+            }
+        }
+    }
+}
+
+#[test]
+fn self_intersecting_ant_stays_valid() {
+    let ant = mesh("ant.ply");
+    let other = moved(&ant, 2.0, [0.3, 0.1, 0.0]);
+    for op in BooleanOp::BASIC {
+        for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
+            combine_and_smooth(&ant, &other, op, variant);
+        }
+    }
+}
+
+#[test]
+fn open_airplane_is_refused_with_the_edge_named() {
+    let e = read_mesh(
+        &data_path("pyvista/airplane.ply"),
+        MeshReadOptions::default(),
+        true,
+    )
+    .unwrap_err()
+    .to_string();
+    assert!(e.contains("airplane.ply") && e.contains("closure"), "{e}");
+}
+
+fn countries() -> PolygonSet2 {
+    read_polygon_set(
+        Path::new(&data_path("naturalearth/countries.geojson")),
+        ReadOptions::default(),
+    )
+    .unwrap()
+}
+
+fn perimeter(s: &PolygonSet2) -> f64 {
+    s.edges()
+        .iter()
+        .map(|e| {
+            let (a, b) = s.edge_points(e);
+            f64::from(e.mult.unsigned_abs()) * (b[0] - a[0]).hypot(b[1] - a[1])
+        })
+        .sum()
+}
+
+#[test]
+fn world_map_smooths_into_a_clean_set() {
+    let world = countries();
+    // Every other country in each operand: the union meets along the
+    // shared borders, which the basic Boolean leaves as coincident edges.
+    let mut halves = [PolygonSet2::new(), PolygonSet2::new()];
+    for (i, ring) in world.loops().iter().enumerate() {
+        let pts: Vec<[f64; 2]> = ring.iter().map(|&v| world.vertex(v)).collect();
+        halves[i % 2].add_loop(&pts);
+    }
+    let united = boolean(&halves[0], &halves[1], BooleanOp::Union)
+        .unwrap()
+        .shape;
+    for tol in [1e-9, 1e-6] {
+        let out = smooth_polygon_set(&united, &SmoothOptions::new(tol)).unwrap();
+        let s = &out.shape;
+        s.check_topology().unwrap();
+        assert!(!out.report.budget_hit);
+        let check = check_polygon_set(s);
+        assert_eq!(check.crossing_edge_pairs, Some(0), "tol {tol}");
+        assert_eq!(check.overlapping_edge_pairs, Some(0), "tol {tol}");
+        let da = (s.signed_area() - united.signed_area()).abs();
+        assert!(
+            da <= perimeter(&united) * tol * 1.0001 + 1e-9,
+            "area moved {da} at tol {tol}"
+        );
+        for e in s.edges() {
+            let (a, b) = s.edge_points(e);
+            assert!(
+                (b[0] - a[0]).hypot(b[1] - a[1]) >= tol,
+                "short edge at tol {tol}"
+            );
+        }
+    }
+}
