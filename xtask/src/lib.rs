@@ -12,6 +12,10 @@
 //! - [`verify3`]: the same for the 3D Boolean (Theorems 1-4 through
 //!   `Audit::verify`) and the simplification sweep (cell structure,
 //!   closure, vertex bound);
+//! - [`verify_smooth`]: the postconditions of data smoothing (Appendix A)
+//!   on meshes and polygon sets, checked independently of the `smooth`
+//!   crate (closure, idempotence, distortion bound, minimum feature size,
+//!   volume and area change);
 //! - [`fingerprint`]: a digest of every result over those corpora, to show
 //!   that a refactoring leaves results unchanged.
 //!
@@ -26,3 +30,4 @@ pub mod fingerprint;
 pub mod tidy;
 pub mod verify;
 pub mod verify3;
+pub mod verify_smooth;

@@ -8,7 +8,7 @@
 
 use anyhow::{bail, Context, Result};
 use std::process::ExitCode;
-use xtask::{experiment, tidy, verify, verify3};
+use xtask::{experiment, tidy, verify, verify3, verify_smooth};
 
 const USAGE: &str = "usage: cargo xtask <task>
 
@@ -17,7 +17,7 @@ tasks:
                                          dependencies, //! headers, no reference outside
                                          the repository
   arith-experiment [--pairs N] [--seed S]  section 8.3 experiment (default N = 10000000)
-  verify [--suite 2d|3d|simplify|all] [--cases N] [--seed S]
+  verify [--suite 2d|3d|simplify|smooth|all] [--cases N] [--seed S]
                                          2D: Theorems 1-2, closure, eq. 4.20 (default N = 2000);
                                          3D: Theorems 1-4 by Audit::verify (N = 300);
                                          simplify: cell structure, closure, vertex bound (N = 500)
@@ -89,9 +89,9 @@ fn run(args: &[String]) -> Result<bool> {
                 }
             };
             let mut failures = 0;
-            let known = ["all", "2d", "3d", "simplify"];
+            let known = ["all", "2d", "3d", "simplify", "smooth"];
             if !known.contains(&suite_name.as_str()) {
-                bail!("unknown suite '{suite_name}' (2d, 3d, simplify or all)");
+                bail!("unknown suite '{suite_name}' (2d, 3d, simplify, smooth or all)");
             }
             if matches!(suite_name.as_str(), "all" | "2d") {
                 let suite = verify::boolean_2d_suite();
@@ -106,6 +106,14 @@ fn run(args: &[String]) -> Result<bool> {
             if matches!(suite_name.as_str(), "all" | "simplify") {
                 let suite = verify3::simplify_suite();
                 let n = pick(500);
+                failures += suite.print(&suite.run(n, v[1]), n, v[1]);
+            }
+            if matches!(suite_name.as_str(), "all" | "smooth") {
+                let suite = verify_smooth::smooth_3d_suite();
+                let n = pick(200);
+                failures += suite.print(&suite.run(n, v[1]), n, v[1]);
+                let suite = verify_smooth::smooth_2d_suite();
+                let n = pick(300);
                 failures += suite.print(&suite.run(n, v[1]), n, v[1]);
             }
             if failures > 0 {

@@ -45,7 +45,7 @@ pub struct Case3 {
 }
 
 /// Shells of random templates with garbage coordinates.
-fn garbage_mesh(r: &mut SplitMix64) -> PolygonMesh {
+pub(crate) fn garbage_mesh(r: &mut SplitMix64) -> PolygonMesh {
     let mut v = Vec::new();
     let mut f = Vec::new();
     for _ in 0..r.range(1, 3) {
@@ -96,7 +96,7 @@ fn grid_mesh(r: &mut SplitMix64) -> PolygonMesh {
     PolygonMesh::new(v, f)
 }
 
-fn rotate(p: [f64; 3], t: f64) -> [f64; 3] {
+pub(crate) fn rotate(p: [f64; 3], t: f64) -> [f64; 3] {
     let (s, c) = t.sin_cos();
     let [x, y, z] = p;
     let (y, z) = (c * y - s * z, s * y + c * z);
