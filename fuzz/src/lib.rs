@@ -249,3 +249,17 @@ pub struct SimplifyInput {
     /// The fill rule / operation selector.
     pub rule: u8,
 }
+
+/// A smoothing case: a 3D Boolean result and a 2D Boolean result to
+/// smooth at a tolerance of `2^(tolerance_exp mod 64 - 48)` relative to
+/// the shape's size.
+#[derive(Clone, Arbitrary, Debug)]
+pub struct SmoothInput {
+    /// The 3D operands and operation (the result is what gets smoothed;
+    /// operand A itself when the Boolean refuses).
+    pub solid: SolidInput,
+    /// The 2D operands (their union is what gets smoothed).
+    pub planar: [Loops; 2],
+    /// The tolerance's exponent.
+    pub tolerance_exp: u8,
+}

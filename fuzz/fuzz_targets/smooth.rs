@@ -1,0 +1,72 @@
+//! Fuzz target: data smoothing (Appendix A) of 3D and 2D Boolean results
+//! and of raw garbage-but-valid shapes never panics, refuses exactly the
+//! bad coordinates, keeps the closure constraints, never hits its safety
+//! budget, moves no vertex farther than its reported bound, and is
+//! idempotent (smoothing the result again changes nothing).
+#![no_main]
+
+use boolean_3d::{boolean_mesh, BooleanOp};
+use libfuzzer_sys::fuzz_target;
+use smooth::{smooth_mesh, smooth_polygon_set, smooth_triangles, SmoothError, SmoothOptions};
+use umbra_fuzz::SmoothInput;
+
+fn tolerance(size: f64, exp: u8) -> f64 {
+    let t = size * 2f64.powi(i32::from(exp % 64) - 48);
+    if t.is_finite() {
+        t
+    } else {
+        0.0
+    }
+}
+
+fuzz_target!(|input: SmoothInput| {
+    let a = input.solid.a.to_mesh();
+    let b = input.solid.b.to_mesh();
+    let coords_ok = a.validate_coordinates().is_ok();
+    let op = match input.solid.op % 3 {
+        0 => BooleanOp::Union,
+        1 => BooleanOp::Intersection,
+        _ => BooleanOp::Difference,
+    };
+    let mesh = boolean_mesh(&a, &b, op).map(|o| o.mesh).unwrap_or(a);
+    let size = mesh.vertices.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    let opts = SmoothOptions::new(tolerance(size, input.tolerance_exp));
+    match smooth_mesh(&mesh, &opts) {
+        Ok(out) => {
+            assert!(mesh.validate_coordinates().is_ok(), "bad coordinates accepted");
+            out.shape.check_topology().expect("smoothed mesh not closed");
+            assert!(!out.report.budget_hit, "safety budget hit");
+            assert!(out.report.max_displacement <= out.report.distortion_bound);
+            let again = smooth_mesh(&out.shape, &opts).expect("smoothing a smoothed mesh");
+            assert_eq!(again.shape.vertices, out.shape.vertices, "not idempotent");
+            assert_eq!(again.shape.facets.len(), out.shape.facets.len(), "not idempotent");
+            if let Some(tri) = input.solid.a.to_triangles() {
+                if let Ok(t) = smooth_triangles(&tri, &opts) {
+                    t.shape.check_topology().expect("smoothed triangles not closed");
+                }
+            }
+        }
+        Err(SmoothError::InvalidInput(_)) => {
+            assert!(!coords_ok || mesh.validate_coordinates().is_err(), "valid input refused")
+        }
+        Err(e) => panic!("{e}"),
+    }
+
+    let p = input.planar[0].to_set();
+    let q = input.planar[1].to_set();
+    let set = boolean_2d::boolean(&p, &q, BooleanOp::Union)
+        .map(|o| o.shape)
+        .unwrap_or(p);
+    let opts = SmoothOptions::new(tolerance(set.max_abs_coordinate(), input.tolerance_exp));
+    match smooth_polygon_set(&set, &opts) {
+        Ok(out) => {
+            out.shape.check_topology().expect("smoothed set not closed");
+            assert!(!out.report.budget_hit, "safety budget hit");
+            assert!(out.report.max_displacement <= out.report.distortion_bound);
+        }
+        Err(SmoothError::InvalidInput(_)) => {
+            assert!(set.validate_coordinates().is_err(), "valid set refused")
+        }
+        Err(e) => panic!("{e}"),
+    }
+});
