@@ -1,0 +1,91 @@
+//! Criterion benchmarks of data smoothing (Appendix A) beside the 3D
+//! Boolean whose output it smooths: the sphere difference of the
+//! `boolean_3d` bench at 20k to 1M triangles per operand, timed as the
+//! Boolean alone (`boolean`) and smoothing its result at the default
+//! tolerance, 1e-9 of the size (`smooth`), in both variants. The goal
+//! (issue: smoothing adds at most 25% to the Boolean's time at 1M
+//! triangles) is the ratio `smooth / boolean` of the same size; the
+//! figures are in `docs/performance.md`. The 2D group smooths the basic
+//! Boolean's union of two 1k-to-100k-gons.
+//!
+//! ```text
+//! cargo bench -p umbra-benches --bench smooth
+//! ```
+
+use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use std::hint::black_box;
+use std::time::Duration;
+use umbra::{default_mesh_tolerance, smooth_mesh, smooth_polygon_set, smooth_triangles};
+use umbra::{default_set_tolerance, SmoothOptions};
+use umbra_benches::solid::{sphere_pair, sphere_pair_quads};
+
+fn spheres(c: &mut Criterion) {
+    let mut group = c.benchmark_group("smooth_sphere_difference");
+    for size in [20_000usize, 200_000, 1_000_000] {
+        group.throughput(Throughput::Elements(2 * size as u64));
+        group.sample_size(10);
+        group.measurement_time(Duration::from_secs(if size >= 200_000 { 10 } else { 3 }));
+        let (a, b) = sphere_pair(size);
+        let out = boolean_triangles(&a, &b, BooleanOp::Difference)
+            .unwrap()
+            .mesh;
+        let opts = SmoothOptions::new(default_mesh_tolerance(&a.to_polygon_mesh()));
+        group.bench_with_input(
+            BenchmarkId::new("triangles/boolean", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| black_box(boolean_triangles(&a, &b, BooleanOp::Difference).unwrap()));
+            },
+        );
+        group.bench_with_input(
+            BenchmarkId::new("triangles/smooth", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| black_box(smooth_triangles(&out, &opts).unwrap()));
+            },
+        );
+        let (qa, qb) = sphere_pair_quads(size);
+        let out = boolean_mesh(&qa, &qb, BooleanOp::Difference).unwrap().mesh;
+        group.bench_with_input(
+            BenchmarkId::new("polygons/boolean", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| black_box(boolean_mesh(&qa, &qb, BooleanOp::Difference).unwrap()));
+            },
+        );
+        group.bench_with_input(
+            BenchmarkId::new("polygons/smooth", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| black_box(smooth_mesh(&out, &opts).unwrap()));
+            },
+        );
+    }
+    group.finish();
+}
+
+fn polygons(c: &mut Criterion) {
+    let mut group = c.benchmark_group("smooth_ngon_union");
+    for n in [1_000usize, 10_000, 100_000] {
+        let ring = |rot: f64| test_support::shapes::regular_ngon(n, 1.0, rot);
+        let mut a = umbra::PolygonSet2::new();
+        a.add_loop(&ring(0.0));
+        let mut b = umbra::PolygonSet2::new();
+        b.add_loop(&ring(180.0 / n as f64 * 0.37));
+        let out = boolean_2d::boolean(&a, &b, BooleanOp::Union).unwrap().shape;
+        let opts = SmoothOptions::new(default_set_tolerance(&a));
+        group.throughput(Throughput::Elements(2 * n as u64));
+        group.sample_size(10);
+        group.bench_with_input(BenchmarkId::new("boolean", n), &(), |bench, _| {
+            bench.iter(|| black_box(boolean_2d::boolean(&a, &b, BooleanOp::Union).unwrap()));
+        });
+        group.bench_with_input(BenchmarkId::new("smooth", n), &(), |bench, _| {
+            bench.iter(|| black_box(smooth_polygon_set(&out, &opts).unwrap()));
+        });
+    }
+    group.finish();
+}
+
+criterion_group!(benches, spheres, polygons);
+criterion_main!(benches);
