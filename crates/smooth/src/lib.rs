@@ -19,10 +19,12 @@
 
 mod error;
 mod grid;
+mod mesh;
 mod options;
 mod report;
 
 pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
+pub use mesh::{sanity_check_mesh, sanity_check_triangles, smooth_mesh, smooth_triangles};
 pub use options::SmoothOptions;
 pub use report::{SmoothCounts, SmoothReport, Smoothed};

@@ -1,0 +1,360 @@
+//! The cancellation operations of Appendix A: zero-length edge removal,
+//! half-edge cancellation inside a facet, and facet cancellation in full
+//! and in part by swapping the maximal subset of potentially-swappable
+//! half-edges that forms closed loops (f1's half-edges with f2's
+//! reversed; figure A.1). None of them creates or moves a vertex; each
+//! keeps facet and shape boundary closure (section 4.2).
+
+use crate::mesh::geom::{dot, lerp, point_segment};
+use crate::mesh::index::{grown_box, BoxIndex, IdBox};
+use crate::mesh::plane::{best_fit_plane, Plane};
+use crate::mesh::structure::Work;
+use crate::SmoothCounts;
+use std::collections::HashMap;
+use topology::{HalfEdge, Point3};
+
+/// Removes the facet's zero-length half-edges (each balances itself) and
+/// cancels opposing half-edge pairs `a -> b`, `b -> a` (removing one of
+/// each keeps both vertices balanced in the facet and the edge balanced in
+/// the shape). Returns whether anything was removed.
+pub(crate) fn cancel_in_facet(f: &mut Vec<HalfEdge>, counts: &mut SmoothCounts) -> bool {
+    let before = f.len();
+    f.retain(|h| h.start != h.end);
+    counts.zero_length_edges_removed += (before - f.len()) as u64;
+    let mut removed = vec![false; f.len()];
+    let mut cancelled = 0u64;
+    if f.len() <= 24 {
+        for i in 0..f.len() {
+            if removed[i] {
+                continue;
+            }
+            for j in i + 1..f.len() {
+                if !removed[j] && f[j].start == f[i].end && f[j].end == f[i].start {
+                    removed[i] = true;
+                    removed[j] = true;
+                    cancelled += 1;
+                    break;
+                }
+            }
+        }
+    } else {
+        let mut open: HashMap<(u32, u32), Vec<usize>> = HashMap::new();
+        for i in 0..f.len() {
+            let h = f[i];
+            if let Some(j) = open.get_mut(&(h.end, h.start)).and_then(Vec::pop) {
+                removed[i] = true;
+                removed[j] = true;
+                cancelled += 1;
+            } else {
+                open.entry((h.start, h.end)).or_default().push(i);
+            }
+        }
+    }
+    if cancelled > 0 {
+        let mut k = 0;
+        f.retain(|_| {
+            k += 1;
+            !removed[k - 1]
+        });
+        counts.half_edges_cancelled += cancelled;
+    }
+    f.len() != before
+}
+
+/// [`cancel_in_facet`] on every facet.
+pub(crate) fn cancel_all(w: &mut Work, counts: &mut SmoothCounts) {
+    for (f, changed) in w.facets.iter_mut().zip(w.changed.iter_mut()) {
+        if cancel_in_facet(f, counts) {
+            *changed = true;
+        }
+    }
+}
+
+/// The maximal subset of the directed edges `(from, to)` that forms
+/// closed loops (every vertex entered as often as left): repeatedly drop
+/// edges that cannot lie on a cycle (from a vertex nothing enters, or to a
+/// vertex nothing leaves) and take out one cycle by walking. What remains
+/// when no cycle is left is acyclic, so no larger balanced subset exists
+/// (the difference of two balanced sets is balanced and would hold a
+/// cycle).
+pub(crate) fn maximal_loops(edges: &[(u32, u32)]) -> Vec<bool> {
+    let n = edges.len();
+    let mut alive = vec![true; n];
+    let mut chosen = vec![false; n];
+    loop {
+        // Peel edges that cannot be on a cycle.
+        loop {
+            let mut ins: HashMap<u32, u32> = HashMap::new();
+            let mut outs: HashMap<u32, u32> = HashMap::new();
+            for (i, &(a, b)) in edges.iter().enumerate() {
+                if alive[i] {
+                    *outs.entry(a).or_default() += 1;
+                    *ins.entry(b).or_default() += 1;
+                }
+            }
+            let mut peeled = false;
+            for (i, &(a, b)) in edges.iter().enumerate() {
+                if alive[i] && (!ins.contains_key(&a) || !outs.contains_key(&b)) {
+                    alive[i] = false;
+                    peeled = true;
+                }
+            }
+            if !peeled {
+                break;
+            }
+        }
+        let Some(first) = (0..n).find(|&i| alive[i]) else {
+            return chosen;
+        };
+        // Every live vertex has a live out-edge: walk until a vertex
+        // repeats, then take the cycle from its first visit.
+        let mut path: Vec<usize> = vec![first];
+        let mut seen: HashMap<u32, usize> = HashMap::new();
+        seen.insert(edges[first].0, 0);
+        let mut at = edges[first].1;
+        loop {
+            if let Some(&k) = seen.get(&at) {
+                for &i in &path[k..] {
+                    alive[i] = false;
+                    chosen[i] = true;
+                }
+                break;
+            }
+            seen.insert(at, path.len());
+            let Some(next) = (0..n).find(|&i| alive[i] && edges[i].0 == at) else {
+                // Unreachable after peeling; stop this walk safely.
+                alive[path[path.len() - 1]] = false;
+                break;
+            };
+            path.push(next);
+            at = edges[next].1;
+        }
+    }
+}
+
+/// Whether the half-edge `a b` lies in the interior of facet `f` in its
+/// plane: the mid-point has winding number 1 and lies farther than
+/// `delta / 2` from every half-edge of the facet (a mid-point on the
+/// boundary is not in the interior).
+fn in_interior(
+    pos: &[Point3],
+    plane: &Plane,
+    f: &[HalfEdge],
+    a: Point3,
+    b: Point3,
+    delta: f64,
+) -> bool {
+    let m = lerp(a, b, 0.5);
+    let lim = 0.25 * delta * delta;
+    let on_boundary = f
+        .iter()
+        .any(|h| point_segment(m, pos[h.start as usize], pos[h.end as usize]).1 <= lim);
+    !on_boundary && plane.winding(pos, f, m) == 1
+}
+
+/// The outcome of one facet pair.
+enum PairResult {
+    Nothing,
+    Partial,
+    Full,
+}
+
+/// Facet cancellation between `i` and `j` (Appendix A), then half-edge
+/// cancellation in both.
+fn cancel_pair(
+    w: &mut Work,
+    i: usize,
+    j: usize,
+    delta: f64,
+    counts: &mut SmoothCounts,
+) -> PairResult {
+    let (f1, f2) = (&w.facets[i], &w.facets[j]);
+    if f1.is_empty() || f2.is_empty() {
+        return PairResult::Nothing;
+    }
+    let pos = &w.pos;
+    let (Some(p1), Some(p2)) = (best_fit_plane(pos, f1), best_fit_plane(pos, f2)) else {
+        return PairResult::Nothing;
+    };
+    if dot(p1.normal, p2.normal) >= 0.0 {
+        return PairResult::Nothing;
+    }
+    let near = |p: &Plane, h: &HalfEdge| {
+        p.distance(pos[h.start as usize]).abs() <= delta
+            && p.distance(pos[h.end as usize]).abs() <= delta
+    };
+    let counteracts = |h: &HalfEdge, other: &[HalfEdge]| {
+        other.iter().any(|g| g.start == h.end && g.end == h.start)
+    };
+    // Potentially swappable: (facet-local index, from f1?)
+    let mut cand: Vec<(usize, bool)> = Vec::new();
+    for (k, h) in f1.iter().enumerate() {
+        if !near(&p2, h) {
+            continue;
+        }
+        let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
+        if counteracts(h, f2) || in_interior(pos, &p2, f2, a, b, delta) {
+            cand.push((k, true));
+        }
+    }
+    for (k, h) in f2.iter().enumerate() {
+        if !near(&p1, h) || counteracts(h, f1) {
+            continue;
+        }
+        let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
+        if in_interior(pos, &p1, f1, a, b, delta) {
+            cand.push((k, false));
+        }
+    }
+    if cand.is_empty() {
+        return PairResult::Nothing;
+    }
+    let directed: Vec<(u32, u32)> = cand
+        .iter()
+        .map(|&(k, first)| {
+            if first {
+                (f1[k].start, f1[k].end)
+            } else {
+                (f2[k].end, f2[k].start)
+            }
+        })
+        .collect();
+    let chosen = maximal_loops(&directed);
+    if !chosen.iter().any(|&c| c) {
+        return PairResult::Nothing;
+    }
+    let mut take1 = vec![false; f1.len()];
+    let mut take2 = vec![false; f2.len()];
+    for (&(k, first), &c) in cand.iter().zip(&chosen) {
+        if c {
+            if first {
+                take1[k] = true;
+            } else {
+                take2[k] = true;
+            }
+        }
+    }
+    let split = |f: &[HalfEdge], take: &[bool]| {
+        let (mut keep, mut give) = (Vec::new(), Vec::new());
+        for (h, &t) in f.iter().zip(take) {
+            if t {
+                give.push(*h);
+            } else {
+                keep.push(*h);
+            }
+        }
+        (keep, give)
+    };
+    let (mut keep1, give1) = split(f1, &take1);
+    let (mut keep2, give2) = split(f2, &take2);
+    keep1.extend(give2);
+    keep2.extend(give1);
+    cancel_in_facet(&mut keep1, counts);
+    cancel_in_facet(&mut keep2, counts);
+    let full = keep1.is_empty() && keep2.is_empty();
+    w.facets[i] = keep1;
+    w.facets[j] = keep2;
+    w.changed[i] = true;
+    w.changed[j] = true;
+    if full {
+        counts.facets_cancelled += 1;
+        PairResult::Full
+    } else {
+        counts.facets_partially_cancelled += 1;
+        PairResult::Partial
+    }
+}
+
+/// One pass of facet cancellation over the candidate pairs: facets facing
+/// opposite ways (best-fit normals with a negative dot product) whose
+/// boxes, grown by `delta`, meet. The candidates are found once per pass
+/// by an R*-tree; a swap only moves half-edges between the two facets, and
+/// a facet only loses region, so its box stays within the one indexed.
+/// Returns the number of pairs that changed.
+pub(crate) fn facet_cancellation_pass(
+    w: &mut Work,
+    delta: f64,
+    counts: &mut SmoothCounts,
+    mut over_budget: impl FnMut(&SmoothCounts) -> bool,
+) -> (u64, bool) {
+    let mut boxes = Vec::new();
+    let mut normals: Vec<Option<Point3>> = vec![None; w.facets.len()];
+    for (i, f) in w.facets.iter().enumerate() {
+        if f.is_empty() {
+            continue;
+        }
+        let Some(p) = best_fit_plane(&w.pos, f) else {
+            continue;
+        };
+        normals[i] = Some(p.normal);
+        let (lo, hi) = grown_box(f.iter().map(|h| w.pos[h.start as usize]), delta);
+        boxes.push(IdBox {
+            lo,
+            hi,
+            id: i as u32,
+        });
+    }
+    let pairs: Vec<(usize, usize)> = {
+        let index = BoxIndex::new(
+            boxes
+                .iter()
+                .map(|b| IdBox {
+                    lo: b.lo,
+                    hi: b.hi,
+                    id: b.id,
+                })
+                .collect(),
+        );
+        let mut pairs = Vec::new();
+        for b in &boxes {
+            let i = b.id as usize;
+            let ni = normals[i].unwrap_or([0.0; 3]);
+            for j in index.meeting(b.lo, b.hi) {
+                let j = j as usize;
+                if j > i && normals[j].is_some_and(|nj| dot(ni, nj) < 0.0) {
+                    pairs.push((i, j));
+                }
+            }
+        }
+        pairs
+    };
+    let mut changed = 0;
+    for (i, j) in pairs {
+        if over_budget(counts) {
+            return (changed, true);
+        }
+        match cancel_pair(w, i, j, delta, counts) {
+            PairResult::Nothing => {}
+            PairResult::Partial | PairResult::Full => changed += 1,
+        }
+    }
+    (changed, false)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn opposing_pairs_and_zero_length_half_edges_cancel() {
+        let mut c = SmoothCounts::default();
+        let h = |start, end| HalfEdge { start, end };
+        let mut f = vec![h(0, 1), h(1, 2), h(2, 0), h(3, 3), h(1, 0), h(0, 1)];
+        assert!(cancel_in_facet(&mut f, &mut c));
+        assert_eq!(f, vec![h(1, 2), h(2, 0), h(0, 1)]);
+        assert_eq!(c.zero_length_edges_removed, 1);
+        assert_eq!(c.half_edges_cancelled, 1);
+    }
+
+    #[test]
+    fn maximal_loops_drops_what_cannot_close() {
+        // A triangle 0->1->2->0 plus a dangling 2->3 and a 2-cycle 4<->5.
+        let e = [(0, 1), (1, 2), (2, 0), (2, 3), (4, 5), (5, 4)];
+        assert_eq!(maximal_loops(&e), vec![true, true, true, false, true, true]);
+        // Figure-eight: two cycles through vertex 0.
+        let e = [(0, 1), (1, 0), (0, 2), (2, 0)];
+        assert_eq!(maximal_loops(&e), vec![true; 4]);
+        // A path only.
+        assert_eq!(maximal_loops(&[(0, 1), (1, 2)]), vec![false, false]);
+    }
+}

@@ -1,0 +1,197 @@
+//! 3D data smoothing of polygon meshes (dissertation chapter 5 and
+//! Appendix A), in a fixed order of phases that terminates by design
+//! (the argument is in `docs/algorithms/smooth.md`):
+//!
+//! 1. vertex adjustment (merging within `delta`), then zero-length edge
+//!    removal and half-edge cancellation;
+//! 2. edge cracking between edges, once: after it no vertex is ever
+//!    created or moved;
+//! 3. edge cracking by vertex, in rounds to a fixpoint (each crack
+//!    replaces an edge by strictly shorter edges between fixed vertices);
+//! 4. zero-length edge removal and half-edge cancellation (each removes
+//!    half-edges);
+//! 5. facet cancellation passes, each followed by half-edge cancellation,
+//!    repeated while a pass lowers the half-edge count;
+//! 6. empty facet and unreferenced vertex removal, and the report.
+//!
+//! Positions change only in phases 1-2, by at most `delta` for an input
+//! vertex and `2.5 delta` (from its input edges) for a created one; that
+//! is the reported distortion bound.
+
+mod cancel;
+mod crack;
+mod geom;
+mod index;
+mod plane;
+mod sanity;
+mod structure;
+mod triangles;
+
+pub use sanity::{sanity_check_mesh, sanity_check_triangles};
+pub use triangles::smooth_triangles;
+
+use crate::mesh::geom::{dist2, point_segment};
+use crate::mesh::structure::{Origin, Work};
+use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
+use topology::PolygonMesh;
+
+/// Smooths a polygon mesh (Appendix A): merges vertices within
+/// `options.tolerance`, cracks edges at nearby vertices and where two
+/// edges pass within the tolerance, cancels opposing half-edges inside a
+/// facet and opposing facets (in full, or in part by swapping half-edges
+/// as in figure A.1), and removes zero-length edges, empty facets and
+/// unreferenced vertices. The result satisfies the closure constraints of
+/// section 4.2 and the postconditions of [`sanity_check_mesh`]; every
+/// vertex lies within [`SmoothReport::distortion_bound`] of where it was
+/// (a created vertex: of the edges it was created on).
+///
+/// The input is validated first (closure, indices, coordinates: an
+/// [`SmoothError::InvalidInput`]) and never modified.
+///
+/// ```
+/// use topology::{Facet, PolygonMesh};
+/// // A tetrahedron with a fifth vertex 1e-9 from a corner, used by a
+/// // sliver pair of facets: smoothing merges it and cancels the sliver.
+/// let v = vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1e-9, 0.0, 0.0]];
+/// let mut facets: Vec<Facet> =
+///     [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]].iter().map(|l| Facet::from_loop(l)).collect();
+/// facets.push(Facet::from_loop(&[0, 4, 1]));
+/// facets.push(Facet::from_loop(&[1, 4, 0]));
+/// let mesh = PolygonMesh::new(v, facets);
+/// let out = smooth::smooth_mesh(&mesh, &smooth::SmoothOptions::new(1e-6)).unwrap();
+/// assert_eq!(out.shape.vertices.len(), 4);
+/// assert_eq!(out.shape.facets.len(), 4);
+/// assert!(smooth::sanity_check_mesh(&out.shape, 1e-6).is_ok());
+/// ```
+pub fn smooth_mesh(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+) -> Result<Smoothed<PolygonMesh>, SmoothError> {
+    options.validate()?;
+    mesh.check_topology()?;
+    mesh.validate_coordinates()?;
+    let (shape, report) = run(mesh, options)?;
+    #[cfg(debug_assertions)]
+    sanity_check_mesh(&shape, options.tolerance)?;
+    Ok(Smoothed { shape, report })
+}
+
+/// The closure check after a pass, in debug builds only.
+fn debug_check(w: &Work, stage: &str) -> Result<(), SmoothError> {
+    if cfg!(debug_assertions) {
+        w.check_closure(stage)
+    } else {
+        Ok(())
+    }
+}
+
+/// The phases on a validated mesh.
+pub(crate) fn run(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
+    let delta = options.tolerance;
+    let budget = options.budget_for(mesh.vertices.len(), mesh.half_edge_count());
+    let over_budget = |c: &SmoothCounts| c.adjustments() >= budget;
+    let mut counts = SmoothCounts::default();
+    let mut passes = 0u32;
+    let mut budget_hit = false;
+    let mut w = Work::from_mesh(mesh);
+
+    // Phase 1: vertex adjustment, then the cheap removals.
+    crack::merge_phase(&mut w, delta, &mut counts);
+    cancel::cancel_all(&mut w, &mut counts);
+    passes += 1;
+    debug_check(&w, "vertex merging")?;
+
+    // Phase 2: edge cracking between edges, once.
+    crack::crack_between_edges(&mut w, delta, &mut counts);
+    passes += 1;
+    debug_check(&w, "edge cracking between edges")?;
+
+    // Phase 3: edge cracking by vertex to a fixpoint.
+    let (rounds, hit) = crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, |w| {
+        debug_check(w, "edge cracking by vertex")
+    })?;
+    passes += rounds;
+    budget_hit |= hit;
+
+    // Phase 4: removals and half-edge cancellation.
+    cancel::cancel_all(&mut w, &mut counts);
+    passes += 1;
+    debug_check(&w, "half-edge cancellation")?;
+
+    // Phase 5: facet cancellation while it lowers the half-edge count.
+    while !budget_hit {
+        let before = w.half_edge_count();
+        let (changed, hit) =
+            cancel::facet_cancellation_pass(&mut w, delta, &mut counts, over_budget);
+        budget_hit |= hit;
+        cancel::cancel_all(&mut w, &mut counts);
+        passes += 1;
+        debug_check(&w, "facet cancellation")?;
+        if changed == 0 || w.half_edge_count() >= before {
+            break;
+        }
+    }
+
+    // Phase 6: compaction and the report.
+    let (shape, map, unreferenced, empty) = w.compact();
+    counts.unreferenced_vertices_removed += unreferenced;
+    counts.empty_facets_removed += empty;
+    let report = report(&w, &map, counts, passes, budget_hit, delta);
+    Ok((shape, report))
+}
+
+/// The report: k, the distortion bound and the measured displacement.
+fn report(
+    w: &Work,
+    map: &[Option<u32>],
+    counts: SmoothCounts,
+    passes: u32,
+    budget_hit: bool,
+    delta: f64,
+) -> SmoothReport {
+    let mut k = 0u32;
+    let mut bound = 0.0f64;
+    let mut moved = 0.0f64;
+    for (v, slot) in map.iter().enumerate() {
+        if slot.is_none() {
+            continue;
+        }
+        k = k.max(w.adjustments[v]);
+        match w.origin[v] {
+            Origin::Input(_) => {
+                if w.adjustments[v] > 0 {
+                    bound = bound.max(delta);
+                }
+            }
+            Origin::Created(e) => {
+                bound = bound.max(2.5 * delta);
+                let p = w.pos[v];
+                let d = point_segment(p, e[0], e[1])
+                    .1
+                    .max(point_segment(p, e[2], e[3]).1);
+                moved = moved.max(d.sqrt());
+            }
+        }
+    }
+    // Input vertices: the distance to the vertex they became.
+    for (i, &r) in w.representative.iter().enumerate() {
+        if map[r as usize].is_some() {
+            if let Origin::Input(p0) = w.origin[i] {
+                moved = moved.max(dist2(w.pos[r as usize], p0).sqrt());
+            }
+        }
+    }
+    SmoothReport {
+        tolerance: delta,
+        counts,
+        passes,
+        budget_hit,
+        max_adjustments: k,
+        distortion_bound: bound,
+        max_displacement: moved,
+        epsilon: bound,
+    }
+}
