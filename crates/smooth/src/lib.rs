@@ -20,9 +20,14 @@
 mod error;
 mod grid;
 mod options;
+mod planar;
 mod report;
 
 pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
 pub use options::SmoothOptions;
+pub use planar::{
+    check_smoothed_polygon_set, point_segment_dist2, smooth_polygon_set, PlanarDefect,
+    MAX_PLANAR_PASSES,
+};
 pub use report::{SmoothCounts, SmoothReport, Smoothed};
