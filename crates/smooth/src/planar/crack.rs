@@ -1,0 +1,166 @@
+//! Edge cracking (Appendix A) on the working copy.
+//!
+//! - Between edges: two edges with four distinct vertices whose interiors
+//!   cross (in the plane, two segments whose interiors come within the
+//!   tolerance of each other either cross or have an end within the
+//!   tolerance of the other, which is cracking by vertex) get a new vertex
+//!   at the crossing point, snapped to an existing vertex within the
+//!   tolerance (the first accepted, as in vertex merging). One pass: this
+//!   is the only cracking that moves or creates positions.
+//! - By vertex: an edge with a vertex (not its end) within the tolerance
+//!   of its interior, or exactly on it, is split there provided both new
+//!   edges are strictly shorter; repeated on the new edges until no edge
+//!   qualifies. The vertex set is fixed meanwhile, so each split replaces
+//!   one edge by two strictly shorter edges between vertices of a finite
+//!   set, and the process ends (see the algorithm note).
+
+use super::broad::{edge_pairs, segment_box, VertexIndex};
+use super::budget::Budget;
+use super::geom::{crossing_point, dist2, on_open_segment, point_segment_dist2, properly_cross};
+use super::work::{VertexRecord, WEdge, Work};
+use crate::{merge_vertices, SmoothCounts, SmoothError};
+
+/// Cracks every pair of properly crossing edges at their crossing point
+/// (snapped to a vertex within `tol`). Returns whether it computed any
+/// crossing point.
+pub fn crack_between_edges(
+    w: &mut Work,
+    tol: f64,
+    counts: &mut SmoothCounts,
+    budget: &mut Budget,
+) -> Result<bool, SmoothError> {
+    let n = w.pts.len();
+    let mut new_pts = Vec::new();
+    let mut new_k = Vec::new();
+    let mut cracks: Vec<Vec<u32>> = vec![Vec::new(); w.edges.len()];
+    for (i, j) in edge_pairs(&w.pts, &w.edges, 0.0) {
+        let (e, f) = (w.edges[i], w.edges[j]);
+        if e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b {
+            continue;
+        }
+        let p = |v: u32| w.pts[v as usize];
+        let (a, b, c, d) = (p(e.a), p(e.b), p(f.a), p(f.b));
+        if !properly_cross(a, b, c, d) {
+            continue;
+        }
+        if !budget.spend(1) {
+            break;
+        }
+        counts.edges_cracked_between_edges += 1;
+        let q = (n + new_pts.len()) as u32;
+        new_pts.push(crossing_point(a, b, c, d));
+        let k = [e.a, e.b, f.a, f.b]
+            .iter()
+            .map(|&v| w.rec[v as usize].k)
+            .max()
+            .unwrap_or(0);
+        new_k.push(k.saturating_add(1));
+        cracks[i].push(q);
+        cracks[j].push(q);
+    }
+    if new_pts.is_empty() {
+        return Ok(false);
+    }
+    // Snap: existing vertices (pairwise farther than `tol` apart after
+    // merging) come first, so each is accepted and every new point joins
+    // the first accepted vertex within `tol`, or is accepted itself.
+    let mut all = w.pts.clone();
+    all.extend_from_slice(&new_pts);
+    let rep = merge_vertices(&all, tol).representative;
+    if let Some(v) = (0..n).find(|&v| rep[v] as usize != v) {
+        return Err(SmoothError::Internal(format!(
+            "vertex {v} lies within the tolerance of vertex {} after merging",
+            rep[v]
+        )));
+    }
+    w.pts = all;
+    for (q, &k) in new_k.iter().enumerate() {
+        let q = n + q;
+        let r = rep[q] as usize;
+        if r == q {
+            counts.vertices_created += 1;
+            w.rec.push(VertexRecord { k });
+        } else {
+            w.rec.push(VertexRecord { k: 0 });
+            w.rec[r].k = w.rec[r].k.max(k);
+        }
+    }
+    let mut edges = Vec::with_capacity(w.edges.len() + 2 * new_pts.len());
+    for (e, list) in w.edges.iter().zip(cracks) {
+        if list.is_empty() {
+            edges.push(*e);
+            continue;
+        }
+        let (pa, pb) = (w.pts[e.a as usize], w.pts[e.b as usize]);
+        let dir = [pb[0] - pa[0], pb[1] - pa[1]];
+        let param = |v: u32| {
+            let q = w.pts[v as usize];
+            (q[0] - pa[0]) * dir[0] + (q[1] - pa[1]) * dir[1]
+        };
+        let mut ids: Vec<(f64, u32)> = list
+            .iter()
+            .map(|&q| rep[q as usize])
+            .filter(|&v| v != e.a && v != e.b)
+            .map(|v| (param(v), v))
+            .collect();
+        ids.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+        ids.dedup_by_key(|x| x.1);
+        let mut prev = e.a;
+        for &(_, v) in &ids {
+            edges.push(WEdge::directed(prev, v, e.m));
+            prev = v;
+        }
+        edges.push(WEdge::directed(prev, e.b, e.m));
+    }
+    w.edges = edges;
+    w.normalize(counts);
+    w.remove_unreferenced(counts);
+    Ok(true)
+}
+
+/// Cracks edges at the vertices near their interiors until none
+/// qualifies (or the budget is spent).
+pub fn crack_by_vertices(w: &mut Work, tol: f64, counts: &mut SmoothCounts, budget: &mut Budget) {
+    let index = VertexIndex::new(&w.pts);
+    let tol2 = tol * tol;
+    let mut stack: Vec<WEdge> = w.edges.iter().rev().copied().collect();
+    let mut out = Vec::with_capacity(w.edges.len());
+    while let Some(e) = stack.pop() {
+        if budget.exhausted() {
+            out.push(e);
+            continue;
+        }
+        let (pa, pb) = (w.pts[e.a as usize], w.pts[e.b as usize]);
+        let len2 = dist2(&pa, &pb);
+        let (lo, hi) = segment_box(pa, pb, tol);
+        let mut best: Option<(f64, u32)> = None;
+        for v in index.in_box(lo, hi) {
+            if v == e.a || v == e.b {
+                continue;
+            }
+            let pv = w.pts[v as usize];
+            let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
+            let near = d2 <= tol2 || on_open_segment(pv, pa, pb);
+            if near && dist2(&pa, &pv) < len2 && dist2(&pv, &pb) < len2 {
+                let d2 = if d2.is_nan() { 0.0 } else { d2 };
+                if best.is_none_or(|(bd, bv)| (d2, v) < (bd, bv)) {
+                    best = Some((d2, v));
+                }
+            }
+        }
+        match best {
+            Some((_, v)) if budget.spend(1) => {
+                counts.edges_cracked_by_vertex += 1;
+                let ke = w.rec[e.a as usize].k.max(w.rec[e.b as usize].k);
+                let kv = &mut w.rec[v as usize].k;
+                *kv = (*kv).max(ke.saturating_add(1));
+                // `e` is `a -> b` counted `m` (signed): so are its halves.
+                stack.push(WEdge::directed(v, e.b, e.m));
+                stack.push(WEdge::directed(e.a, v, e.m));
+            }
+            _ => out.push(e),
+        }
+    }
+    w.edges = out;
+    w.normalize(counts);
+}

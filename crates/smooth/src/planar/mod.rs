@@ -1,0 +1,149 @@
+//! 2D smoothing (Appendix A on polygon sets, followed by the
+//! simplification sweep of chapter 7 where the adjustments left crossings
+//! or winding numbers outside `{0, 1}`).
+//!
+//! One pass applies, in this order: unreferenced vertex removal, vertex
+//! merging, edge cracking between edges (one round, the only phase that
+//! creates positions), edge cracking by vertex (to its end, on a fixed
+//! vertex set), and after each of them zero-length edge removal and
+//! cancellation of opposing edges. Then the set is checked exactly; if it
+//! is not simple it is simplified by the sweep and the next pass smooths
+//! the sweep's output. At most [`MAX_PLANAR_PASSES`] passes run; the algorithm
+//! note `docs/algorithms/smooth_2d.md` gives the order and the measures
+//! that make every phase end.
+
+mod broad;
+mod budget;
+mod check;
+mod crack;
+mod geom;
+mod merge;
+mod resolve;
+mod work;
+
+pub use check::{check_smoothed_polygon_set, PlanarDefect};
+pub use geom::point_segment_dist2;
+
+use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
+use budget::Budget;
+use resolve::Resolution;
+use robust_arith::{intersection_error_bound, UNIT_ROUNDOFF};
+use topology::PolygonSet2;
+use work::Work;
+
+/// The most passes one run makes. The first pass resolves what the input
+/// had; a sweep after it rebuilds the set from its cells, and the second
+/// pass smooths the vertices the sweep created; the third exists for the
+/// rare set whose second pass left crossings again. After the last sweep
+/// the result is the sweep's output, cleaned by the exact operations only.
+pub const MAX_PLANAR_PASSES: u32 = 3;
+
+/// Smooths a polygon set with tolerance `delta = options.tolerance`
+/// (Appendix A, then simplification where needed).
+///
+/// The input is validated first (tolerance, coordinates, closure and
+/// indices); on error it is returned untouched. The result is
+/// topologically valid (section 4.2) and, on the output of a Boolean,
+/// simple: no two vertices within `delta`, no edge shorter than `delta`,
+/// no vertex within `delta` of an edge's interior where Appendix A's rule
+/// would crack it, no crossings, winding numbers in `{0, 1}`
+/// ([`check_smoothed_polygon_set`] tests all of it). Its area differs from
+/// the input's by at most about perimeter times the distortion bound.
+/// Smoothing the result again returns it unchanged (vertices sorted by
+/// position, edges by vertex ids).
+///
+/// ```
+/// use smooth::{smooth_polygon_set, SmoothOptions};
+/// use topology::PolygonSet2;
+///
+/// // Two unit squares sharing the edge x = 1, drawn separately.
+/// let mut s = PolygonSet2::new();
+/// s.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// s.add_loop(&[[1.0, 1e-9], [2.0, 0.0], [2.0, 1.0], [1.0, 1.0]]);
+/// let out = smooth_polygon_set(&s, &SmoothOptions::new(1e-6)).unwrap();
+/// assert_eq!(out.shape.edge_count(), 6); // one ring around both
+/// assert_eq!(out.shape.signed_area(), 2.0);
+/// ```
+pub fn smooth_polygon_set(
+    set: &PolygonSet2,
+    options: &SmoothOptions,
+) -> Result<Smoothed<PolygonSet2>, SmoothError> {
+    options.validate()?;
+    set.validate_coordinates()?;
+    set.check_topology()?;
+    let tol = options.tolerance;
+    let mut budget = Budget::new(options.budget_for(set.vertex_count(), set.edge_count()));
+    let mut counts = SmoothCounts::default();
+    let mut w = Work::from_set(set);
+    w.normalize(&mut counts);
+    debug_check(&w, "the copy")?;
+    let mut sweep_epsilon = 0.0;
+    let mut passes = 0;
+    let mut crossing_error = 0.0;
+    loop {
+        passes += 1;
+        merge::merge_phase(&mut w, tol, &mut counts, &mut budget);
+        debug_check(&w, "vertex merging")?;
+        let alpha = intersection_error_bound(max_abs(&w));
+        if crack::crack_between_edges(&mut w, tol, &mut counts, &mut budget)? {
+            crossing_error += alpha;
+        }
+        debug_check(&w, "edge cracking between edges")?;
+        crack::crack_by_vertices(&mut w, tol, &mut counts, &mut budget);
+        debug_check(&w, "edge cracking by vertex")?;
+        w.remove_unreferenced(&mut counts);
+        match resolve::resolve(&mut w, &mut counts)? {
+            Resolution::Clean => break,
+            Resolution::Swept(eps) => {
+                sweep_epsilon += eps;
+                w.normalize(&mut counts);
+                w.remove_unreferenced(&mut counts);
+                debug_check(&w, "simplification")?;
+            }
+        }
+        if passes == MAX_PLANAR_PASSES {
+            break;
+        }
+    }
+    let k = w.k_max();
+    let input = set.vertices();
+    let (shape, tracked) = w.into_canonical(&mut counts);
+    let max_displacement = tracked
+        .iter()
+        .enumerate()
+        .filter_map(|(i, t)| t.map(|v| (input[i], shape.vertex(v))))
+        .map(|(p, q)| geom::dist2(&p, &q).sqrt())
+        .fold(0.0f64, f64::max);
+    let distortion_bound =
+        f64::from(k) * tol * (1.0 + 8.0 * UNIT_ROUNDOFF) + sweep_epsilon + crossing_error;
+    Ok(Smoothed {
+        shape,
+        report: SmoothReport {
+            tolerance: tol,
+            counts,
+            passes,
+            budget_hit: budget.hit(),
+            max_adjustments: k,
+            distortion_bound,
+            max_displacement,
+            epsilon: distortion_bound,
+        },
+    })
+}
+
+fn max_abs(w: &Work) -> f64 {
+    w.pts
+        .iter()
+        .flat_map(|p| p.iter())
+        .fold(0.0f64, |m, &c| m.max(c.abs()))
+}
+
+/// In debug builds, the closure constraints after a phase (section 4.2).
+fn debug_check(w: &Work, phase: &str) -> Result<(), SmoothError> {
+    if cfg!(debug_assertions) {
+        w.to_set()
+            .check_topology()
+            .map_err(|e| SmoothError::Internal(format!("after {phase}: {e}")))?;
+    }
+    Ok(())
+}

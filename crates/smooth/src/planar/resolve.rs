@@ -1,0 +1,98 @@
+//! The simplification step of 2D smoothing: where merging and cracking
+//! left edges that cross, touch or overlap (exact tests over the pairs of
+//! the broad phase), multiplicities above one, or winding numbers outside
+//! `{0, 1}`, the modified Bentley-Ottmann sweep of chapter 7 rebuilds the
+//! set as the cells of positive winding number (the standard form of
+//! section 6.1: multiply enclosed regions become singly enclosed, inside-out
+//! regions unenclosed), which is what a Boolean result that only rounding
+//! and near-degeneracy disturbed is meant to fill.
+
+use super::broad::edge_pairs;
+use super::geom::edges_conflict;
+use super::work::{VertexRecord, Work};
+use crate::{SmoothCounts, SmoothError};
+use simplify_2d::{cell_structure, simplify, FillRule};
+use std::collections::HashMap;
+use topology::PolygonSet2;
+
+/// The number of edge pairs that meet other than at a shared vertex
+/// (exact; the pairs come from the broad phase, never all pairs).
+pub fn conflicts(w: &Work) -> u64 {
+    edge_pairs(&w.pts, &w.edges, 0.0)
+        .into_iter()
+        .filter(|&(i, j)| {
+            let (e, f) = (w.edges[i], w.edges[j]);
+            edges_conflict([e.a, e.b], [f.a, f.b], &w.pts)
+        })
+        .count() as u64
+}
+
+/// What the step did.
+pub enum Resolution {
+    /// The set was already simple: no conflicts, every edge separates
+    /// winding number 1 on its left from 0 on its right.
+    Clean,
+    /// The sweep rebuilt the set; its epsilon (section 8.4).
+    Swept(f64),
+}
+
+fn internal(e: impl std::fmt::Display) -> SmoothError {
+    SmoothError::Internal(format!(
+        "the simplification sweep refused a smoothed set: {e}"
+    ))
+}
+
+/// Checks the working copy and, when it is not simple, replaces it by its
+/// simplification with the positive rule.
+pub fn resolve(w: &mut Work, counts: &mut SmoothCounts) -> Result<Resolution, SmoothError> {
+    let crossing = conflicts(w);
+    let set = w.to_set();
+    let (shape, epsilon, sweep_k) = if crossing == 0 && w.max_multiplicity() <= 1 {
+        let cells = cell_structure(&set).map_err(internal)?;
+        if cells.edges().iter().all(|e| {
+            e.mult == 0
+                || (e.left - e.right == e.mult
+                    && e.left.max(e.right) == 1
+                    && e.left.min(e.right) == 0)
+        }) {
+            return Ok(Resolution::Clean);
+        }
+        (cells.shape_with(|&w| w > 0), cells.epsilon(), cells.k_max())
+    } else {
+        let s = simplify(&set, FillRule::Positive).map_err(internal)?;
+        (s.shape, s.epsilon, s.k_max)
+    };
+    counts.crossings_resolved += crossing;
+    replace(w, &shape, sweep_k);
+    Ok(Resolution::Swept(epsilon))
+}
+
+/// Replaces the working copy by the sweep's output, keeping the records
+/// (and the tracking of input vertices) of the vertices whose position
+/// the sweep kept; the vertices it created carry the sweep's `k_max` on
+/// top of the largest count so far.
+fn replace(w: &mut Work, shape: &PolygonSet2, sweep_k: u32) {
+    let key = |p: [f64; 2]| (p[0].to_bits(), p[1].to_bits());
+    let mut by_pos: HashMap<(u64, u64), u32> = HashMap::new();
+    for (i, &p) in shape.vertices().iter().enumerate() {
+        by_pos.entry(key(p)).or_insert(i as u32);
+    }
+    let created_k = w.k_max().saturating_add(sweep_k.max(1));
+    let mut rec = vec![VertexRecord { k: created_k }; shape.vertex_count()];
+    let mut old_to_new = vec![None; w.pts.len()];
+    for (v, &p) in w.pts.iter().enumerate() {
+        if let Some(&i) = by_pos.get(&key(p)) {
+            rec[i as usize] = w.rec[v];
+            old_to_new[v] = Some(i);
+        }
+    }
+    let tracked: Vec<Option<u32>> = w
+        .tracked
+        .iter()
+        .map(|t| t.and_then(|v| old_to_new[v as usize]))
+        .collect();
+    let mut next = Work::from_set(shape);
+    next.rec = rec;
+    next.tracked = tracked;
+    *w = next;
+}

@@ -1,0 +1,115 @@
+//! The named cases of 2D smoothing: touching and nearly touching squares
+//! through the basic Boolean in both operand orders, a square minus an
+//! (almost) identical square, slivers from near-coincident edges.
+
+mod planar_support;
+
+use boolean_2d::{boolean, BooleanOp};
+use planar_support::{set_of, smooth_checked, smooth_checked_area};
+use test_support::shapes::{rect, square};
+
+const TOL: f64 = 1e-5;
+
+/// One ring around `[0, 2 + gap] x [0, 1]` (collinear vertices may stay
+/// on its sides): the union of the squares `[0, 1]` and `[1 + gap, 2 +
+/// gap]` with the gap closed or the overlap merged.
+fn assert_one_box(s: &topology::PolygonSet2, gap: f64) {
+    assert_eq!(s.loops().len(), 1, "one ring: {s:?}");
+    let want = 2.0 + gap;
+    assert!(
+        (s.signed_area() - want).abs() < 1e-12,
+        "area {} want {want}",
+        s.signed_area()
+    );
+    let bb = s.bounding_box().unwrap();
+    for (c, want) in [
+        (bb[0][0], 0.0),
+        (bb[0][1], 0.0),
+        (bb[1][0], 2.0),
+        (bb[1][1], 1.0),
+    ] {
+        assert!((c - want).abs() <= 1e-5, "{bb:?}");
+    }
+}
+
+#[test]
+fn touching_squares_union_both_orders_is_one_box() {
+    let a = set_of(&[square(0.0, 0.0, 1.0)]);
+    for gap in [0.0, 1e-12, -1e-12, 1e-9, -1e-9, 1e-6, -1e-6] {
+        let b = set_of(&[square(1.0 + gap, 0.0, 1.0)]);
+        for (x, y) in [(&a, &b), (&b, &a)] {
+            let u = boolean(x, y, BooleanOp::Union).unwrap().shape;
+            let out = smooth_checked_area(&u, TOL);
+            assert_one_box(&out.shape, gap);
+        }
+        // Also the two squares assembled without a Boolean.
+        let mut both = a.clone();
+        both.append(&b);
+        assert_one_box(&smooth_checked_area(&both, TOL).shape, gap);
+    }
+}
+
+#[test]
+fn square_minus_identical_or_almost_identical_square_is_empty() {
+    let a = set_of(&[square(0.0, 0.0, 1.0)]);
+    for off in [0.0, 1e-10, -1e-10, 1e-7] {
+        for b in [
+            set_of(&[square(off, 0.0, 1.0)]),
+            set_of(&[square(off, off, 1.0)]),
+            set_of(&[rect(0.0, 0.0, 1.0 + off, 1.0)]),
+        ] {
+            let d = boolean(&a, &b, BooleanOp::Difference).unwrap().shape;
+            let out = smooth_checked(&d, TOL);
+            assert!(out.shape.is_empty(), "offset {off}: {:?}", out.shape);
+            assert_eq!(out.shape.vertex_count(), 0);
+        }
+    }
+}
+
+#[test]
+fn slivers_from_near_coincident_edges_vanish() {
+    // A 3 x 1 rectangle minus a rectangle sharing its top edge up to 1e-9:
+    // the Boolean leaves a sliver of height 1e-9 along the top.
+    let a = set_of(&[rect(0.0, 0.0, 3.0, 1.0)]);
+    let b = set_of(&[rect(-1.0, 0.5, 5.0, 0.5 + 1e-9)]);
+    let d = boolean(&a, &b, BooleanOp::Difference).unwrap().shape;
+    let out = smooth_checked_area(&d, TOL);
+    assert_eq!(out.shape.loops().len(), 1);
+    assert!((out.shape.signed_area() - 1.5).abs() < 1e-8);
+    // A slanted sliver: the other operand's edge crosses at a tiny angle.
+    let c = set_of(&[vec![
+        [-1.0, 0.5],
+        [4.0, 0.5],
+        [4.0, 1.0 + 1e-8],
+        [-1.0, 1.0 - 1e-8],
+    ]]);
+    let d = boolean(&a, &c, BooleanOp::Difference).unwrap().shape;
+    let out = smooth_checked_area(&d, TOL);
+    assert_eq!(out.shape.loops().len(), 1, "{:?}", out.shape);
+}
+
+#[test]
+fn stacked_rows_of_squares_union_to_one_ring() {
+    let mut acc = set_of(&[square(0.0, 0.0, 1.0)]);
+    for i in 1..6 {
+        let nudge = [0.0, 3e-9, -2e-9, 1e-12, -4e-7][i - 1];
+        let b = set_of(&[square(f64::from(i as u32) + nudge, 0.0, 1.0)]);
+        acc = boolean(&acc, &b, BooleanOp::Union).unwrap().shape;
+    }
+    let out = smooth_checked_area(&acc, TOL);
+    assert_eq!(out.shape.loops().len(), 1);
+    assert!((out.shape.signed_area() - 6.0).abs() < 1e-5);
+}
+
+#[test]
+fn zero_tolerance_keeps_exact_operations_only() {
+    let a = set_of(&[square(0.0, 0.0, 1.0)]);
+    let b = set_of(&[square(1.0, 0.0, 1.0)]);
+    let mut both = a.clone();
+    both.append(&b);
+    let out = smooth_checked_area(&both, 0.0);
+    assert_eq!(out.shape.loops().len(), 1);
+    assert_eq!(out.report.counts.vertices_merged, 2);
+    assert_eq!(out.report.counts.half_edges_cancelled, 1);
+    assert_eq!(out.report.distortion_bound, 0.0);
+}
