@@ -49,8 +49,8 @@ pub struct BooleanArgs {
     triangulate: bool,
     /// Smooth the result at this tolerance (Appendix A: merges what lies
     /// closer, removes slivers, gaps and coincident opposing facets).
-    /// 3D results are smoothed by default at 1e-9 times the operands'
-    /// largest bounding-box extent; `--smooth 0` writes the basic
+    /// 3D results are smoothed by default at 1e-9 times the largest
+    /// bounding-box extent of either operand; `--smooth 0` writes the basic
     /// Boolean's raw output. 2D results are smoothed only when asked.
     #[arg(long, value_name = "T", value_parser = tolerance_arg)]
     smooth: Option<f64>,
