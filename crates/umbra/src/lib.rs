@@ -19,6 +19,10 @@
 //! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
 //!   (triangle meshes), [`triangulate_mesh`], and [`boolean_solid`], which
 //!   runs either [`MeshVariant`] on any valid operands.
+//! - Smoothing (chapter 5, Appendix A): [`smooth_mesh`],
+//!   [`smooth_triangles`], [`smooth_polygon_set`] and [`smooth_solid`] (by
+//!   variant) with [`SmoothOptions`]; [`default_mesh_tolerance`] is the
+//!   rule the CLI uses when none is given. No other call smooths.
 //! - Reports: [`Boolean2Report`], [`SimplifyReport`], [`Boolean3Report`]
 //!   and their parts, `serde::Serialize`, built from an operation's output.
 //! - WKT: [`read_wkt_file`], [`read_wkt_str`], [`write_wkt_file`],
