@@ -104,17 +104,24 @@ pub(crate) fn run(
     passes += 1;
     debug_check(&w, "vertex merging")?;
 
-    // Phase 2: edge cracking between edges, once.
-    crack::crack_between_edges(&mut w, delta, &mut counts);
-    passes += 1;
-    debug_check(&w, "edge cracking between edges")?;
-
-    // Phase 3: edge cracking by vertex to a fixpoint.
-    let (rounds, hit) = crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, |w| {
-        debug_check(w, "edge cracking by vertex")
-    })?;
-    passes += rounds;
-    budget_hit |= hit;
+    // Phases 2-3: edge cracking between edges, then by vertex to a
+    // fixpoint, repeated while edge-edge cracking finds a pair.
+    let mut roots = crack::Roots::new();
+    loop {
+        let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
+        passes += 1;
+        debug_check(&w, "edge cracking between edges")?;
+        let (rounds, hit) =
+            crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, &mut roots, |w| {
+                debug_check(w, "edge cracking by vertex")
+            })?;
+        passes += rounds;
+        budget_hit |= hit;
+        if cracked == 0 || budget_hit || over_budget(&counts) {
+            budget_hit |= cracked > 0;
+            break;
+        }
+    }
 
     // Phase 4: removals and half-edge cancellation.
     cancel::cancel_all(&mut w, &mut counts);
