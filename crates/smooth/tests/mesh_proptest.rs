@@ -92,8 +92,14 @@ proptest! {
         prop_assert!(out.report.max_displacement <= out.report.distortion_bound);
         let dv = (poly(&out.shape).signed_volume() - m.signed_volume()).abs();
         prop_assert!(dv <= area(&poly(&m)) * DELTA + 1e-12, "volume moved {dv:e}");
+        // Smoothing the result again moves and creates no vertex. (It may
+        // crack where re-triangulation had to leave a triangle thinner
+        // than the tolerance: section 4.8 fixes the triangles' vertices.)
         let again = smooth_triangles(&out.shape, &SmoothOptions::new(DELTA)).unwrap();
-        prop_assert_eq!(again.report.counts.adjustments(), 0, "{:?}", again.report);
+        sanity_check_triangles(&again.shape, DELTA).unwrap();
+        let c = again.report.counts;
+        prop_assert_eq!((c.vertices_merged, c.vertices_created), (0, 0), "{:?}", again.report);
+        prop_assert_eq!(again.report.max_displacement, 0.0);
     }
 
     #[test]
@@ -101,7 +107,7 @@ proptest! {
         boxes in prop::collection::vec(grid_box(), 1..4),
         centres in prop::collection::vec(prop::array::uniform3(-2i32..=2), 1..4),
         picks in prop::collection::vec((0usize..4, prop::array::uniform3(-1.0f64..1.0)), 32),
-        spread in prop::sample::select(vec![0.0, 0.3, 1.0, 3.0]),
+        spread in prop::sample::select(vec![0.0, 0.1, 0.3, 1.0, 3.0]),
     ) {
         // Closed topology from the boxes; positions replaced by points
         // scattered within `spread * delta` of a few centres.
@@ -118,11 +124,12 @@ proptest! {
         let out = smooth_mesh(&m, &SmoothOptions::new(DELTA)).unwrap();
         check_result(&out.shape, &out.report, DELTA);
         // A second run may only do more where the first run's reach
-        // (1.5 delta from the edges a crack descends from) stopped it:
-        // clusters wider than the tolerance. Within it, nothing changes.
+        // (1.5 delta from the edges a crack descends from) stopped it, in
+        // clusters wider than the tolerance. In tight clusters nothing
+        // changes.
         let again = smooth_mesh(&out.shape, &SmoothOptions::new(DELTA)).unwrap();
         check_result(&again.shape, &again.report, DELTA);
-        if spread <= 1.0 {
+        if spread <= 0.3 {
             prop_assert_eq!(again.report.counts, smooth::SmoothCounts::default(), "{:?}", out.report);
             prop_assert_eq!(&again.shape, &out.shape);
         }

@@ -6,7 +6,7 @@
 //! phases terminate (see the algorithm note `docs/algorithms/smooth.md`).
 
 use crate::mesh::geom::{dist2, lerp, point_segment, segment_segment};
-use crate::mesh::index::{grown_box, BoxIndex, IdBox, PointIndex};
+use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::structure::{Origin, Work};
 use crate::{merge_vertices, SmoothCounts};
 use std::collections::HashMap;
@@ -126,38 +126,33 @@ pub(crate) fn crack_between_edges(
     let index = BoxIndex::new(boxes);
     // (edge i, edge j, crack point, the four end points)
     let mut found: Vec<(usize, usize, Point3, [Point3; 4])> = Vec::new();
-    for (i, &(a, b)) in edges.iter().enumerate() {
+    index.for_each_pair(|i, j| {
+        let (i, j) = (i as usize, j as usize);
+        let (a, b) = edges[i];
         let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
-        let (lo, hi) = grown_box([pa, pb], 0.0);
-        for j in index.meeting(lo, hi) {
-            let j = j as usize;
-            if j <= i {
-                continue;
-            }
-            let (c, d) = edges[j];
-            if c == a || c == b || d == a || d == b {
-                continue;
-            }
-            let (pc, pd) = (w.pos[c as usize], w.pos[d as usize]);
-            let (s, t, c1, c2) = segment_segment(pa, pb, pc, pd);
-            if !(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) || dist2(c1, c2) > d2max {
-                continue;
-            }
-            let near_end = point_segment(pa, pc, pd).1 <= d2max
-                || point_segment(pb, pc, pd).1 <= d2max
-                || point_segment(pc, pa, pb).1 <= d2max
-                || point_segment(pd, pa, pb).1 <= d2max;
-            if near_end {
-                continue;
-            }
-            let p = lerp(c1, c2, 0.5);
-            if !may_split(w, roots, edges[i], p, reach) || !may_split(w, roots, edges[j], p, reach)
-            {
-                continue;
-            }
-            found.push((i, j, p, [pa, pb, pc, pd]));
+        let (c, d) = edges[j];
+        if c == a || c == b || d == a || d == b {
+            return;
         }
-    }
+        let (pc, pd) = (w.pos[c as usize], w.pos[d as usize]);
+        let (s, t, c1, c2) = segment_segment(pa, pb, pc, pd);
+        if !(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) || dist2(c1, c2) > d2max {
+            return;
+        }
+        let near_end = point_segment(pa, pc, pd).1 <= d2max
+            || point_segment(pb, pc, pd).1 <= d2max
+            || point_segment(pc, pa, pb).1 <= d2max
+            || point_segment(pd, pa, pb).1 <= d2max;
+        if near_end {
+            return;
+        }
+        let p = lerp(c1, c2, 0.5);
+        if !may_split(w, roots, edges[i], p, reach) || !may_split(w, roots, edges[j], p, reach) {
+            return;
+        }
+        found.push((i, j, p, [pa, pb, pc, pd]));
+    });
+    found.sort_by_key(|f| (f.0, f.1));
     if found.is_empty() {
         return 0;
     }
@@ -255,10 +250,15 @@ pub(crate) fn crack_by_vertex(
     }
     let d2max = delta * delta;
     let referenced = w.referenced();
-    let index = PointIndex::new(
-        (0..w.pos.len() as u32)
-            .filter(|&v| referenced[v as usize])
-            .map(|v| (w.pos[v as usize], v)),
+    let points: Vec<(Point3, u32)> = (0..w.pos.len() as u32)
+        .filter(|&v| referenced[v as usize])
+        .map(|v| (w.pos[v as usize], v))
+        .collect();
+    let index = BoxIndex::new(
+        points
+            .iter()
+            .map(|&(p, id)| IdBox { lo: p, hi: p, id })
+            .collect(),
     );
     let mut todo = w.edges();
     let mut rounds = 0;
@@ -268,12 +268,37 @@ pub(crate) fn crack_by_vertex(
         }
         let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
         let mut inserted = 0u64;
-        for &(a, b) in &todo {
+        // The vertices in each edge's grown box: one tree join when every
+        // edge is to be checked, queries for the few sub-edges after.
+        let near: Vec<Vec<u32>> = if rounds == 0 {
+            let boxes = todo
+                .iter()
+                .enumerate()
+                .map(|(i, &(a, b))| {
+                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
+                    IdBox {
+                        lo,
+                        hi,
+                        id: i as u32,
+                    }
+                })
+                .collect();
+            let mut near = vec![Vec::new(); todo.len()];
+            BoxIndex::new(boxes).for_each_point_inside(&points, |e, v| near[e as usize].push(v));
+            near
+        } else {
+            todo.iter()
+                .map(|&(a, b)| {
+                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
+                    index.meeting(lo, hi)
+                })
+                .collect()
+        };
+        for (&(a, b), near) in todo.iter().zip(&near) {
             let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
             let l2 = dist2(pa, pb);
-            let (lo, hi) = grown_box([pa, pb], delta);
             let mut cands: Vec<(f64, f64, u32)> = Vec::new();
-            for v in index.inside(lo, hi) {
+            for &v in near {
                 if v == a || v == b {
                     continue;
                 }

@@ -105,7 +105,7 @@ pub(crate) fn run(
     debug_check(&w, "vertex merging")?;
 
     // Phases 2-3: edge cracking between edges, then by vertex to a
-    // fixpoint, repeated while edge-edge cracking finds a pair.
+    // fixpoint, repeated until neither cracks anything.
     let mut roots = crack::Roots::new();
     loop {
         let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
@@ -117,8 +117,11 @@ pub(crate) fn run(
             })?;
         passes += rounds;
         budget_hit |= hit;
-        if cracked == 0 || budget_hit || over_budget(&counts) {
-            budget_hit |= cracked > 0;
+        if cracked == 0 && rounds == 0 {
+            break; // neither kind of cracking applies any more
+        }
+        if budget_hit || over_budget(&counts) {
+            budget_hit = true;
             break;
         }
     }
