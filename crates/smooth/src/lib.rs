@@ -9,6 +9,10 @@
 //!   the budget was hit, the largest number of adjustments touching one
 //!   region (the k of chapter 8) and the distortion bound it gives.
 //! - [`Smoothed`]: a smoothed shape with its report.
+//! - [`smooth_mesh`], [`smooth_triangles`]: Appendix A on polygon and
+//!   triangle meshes, in an order of phases that terminates by design;
+//!   [`sanity_check_mesh`], [`sanity_check_triangles`]: their
+//!   postconditions, for tests, `xtask` and fuzzing.
 //!
 //! The vertex adjustment of Appendix A (greedy acceptance: a vertex within
 //! `delta` of an already accepted vertex is merged into it) runs on a

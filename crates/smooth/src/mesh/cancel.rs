@@ -7,7 +7,7 @@
 
 use crate::mesh::geom::{dot, lerp, point_segment};
 use crate::mesh::index::{grown_box, BoxIndex, IdBox};
-use crate::mesh::plane::{best_fit_plane, Plane};
+use crate::mesh::plane::{best_fit_plane, facet_normal, Plane};
 use crate::mesh::structure::Work;
 use crate::SmoothCounts;
 use std::collections::HashMap;
@@ -283,10 +283,10 @@ pub(crate) fn facet_cancellation_pass(
         if f.is_empty() {
             continue;
         }
-        let Some(p) = best_fit_plane(&w.pos, f) else {
+        let Some(n) = facet_normal(&w.pos, f) else {
             continue;
         };
-        normals[i] = Some(p.normal);
+        normals[i] = Some(n);
         let (lo, hi) = grown_box(f.iter().map(|h| w.pos[h.start as usize]), delta);
         boxes.push(IdBox {
             lo,
@@ -294,30 +294,16 @@ pub(crate) fn facet_cancellation_pass(
             id: i as u32,
         });
     }
-    let pairs: Vec<(usize, usize)> = {
-        let index = BoxIndex::new(
-            boxes
-                .iter()
-                .map(|b| IdBox {
-                    lo: b.lo,
-                    hi: b.hi,
-                    id: b.id,
-                })
-                .collect(),
-        );
-        let mut pairs = Vec::new();
-        for b in &boxes {
-            let i = b.id as usize;
-            let ni = normals[i].unwrap_or([0.0; 3]);
-            for j in index.meeting(b.lo, b.hi) {
-                let j = j as usize;
-                if j > i && normals[j].is_some_and(|nj| dot(ni, nj) < 0.0) {
-                    pairs.push((i, j));
-                }
+    let mut pairs: Vec<(usize, usize)> = Vec::new();
+    BoxIndex::new(boxes).for_each_pair(|i, j| {
+        let (i, j) = (i as usize, j as usize);
+        if let (Some(ni), Some(nj)) = (normals[i], normals[j]) {
+            if dot(ni, nj) < 0.0 {
+                pairs.push((i, j));
             }
         }
-        pairs
-    };
+    });
+    pairs.sort_unstable();
     let mut changed = 0;
     for (i, j) in pairs {
         if over_budget(counts) {

@@ -6,7 +6,7 @@
 //! phases terminate (see the algorithm note `docs/algorithms/smooth.md`).
 
 use crate::mesh::geom::{dist2, lerp, point_segment, segment_segment};
-use crate::mesh::index::{grown_box, BoxIndex, IdBox, PointIndex};
+use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::structure::{Origin, Work};
 use crate::{merge_vertices, SmoothCounts};
 use std::collections::HashMap;
@@ -41,20 +41,75 @@ pub(crate) fn merge_phase(w: &mut Work, delta: f64, counts: &mut SmoothCounts) {
     counts.vertices_merged += m.merged;
 }
 
-/// Edge cracking between edges, once over the current edges: two edges
-/// with four distinct vertices whose interiors pass within `delta` of each
+/// The segment each current edge descends from (its end points when
+/// cracking began); an edge missing here is its own root.
+pub(crate) type Roots = HashMap<(u32, u32), (Point3, Point3)>;
+
+fn root_of(w: &Work, roots: &Roots, (a, b): (u32, u32)) -> (Point3, Point3) {
+    roots
+        .get(&(a, b))
+        .copied()
+        .unwrap_or((w.pos[a as usize], w.pos[b as usize]))
+}
+
+/// Whether splitting edge `(a, b)` at `p` gives two strictly shorter
+/// edges and keeps `p` within `reach` of the edge's root.
+fn may_split(w: &Work, roots: &Roots, e: (u32, u32), p: Point3, reach: f64) -> bool {
+    let (pa, pb) = (w.pos[e.0 as usize], w.pos[e.1 as usize]);
+    let l2 = dist2(pa, pb);
+    let (ra, rb) = root_of(w, roots, e);
+    dist2(pa, p) < l2 && dist2(p, pb) < l2 && point_segment(p, ra, rb).1 <= reach * reach
+}
+
+/// Applies `splits`, gives every sub-edge its parent's root and returns
+/// the sub-edges.
+fn split_with_roots(
+    w: &mut Work,
+    roots: &mut Roots,
+    splits: HashMap<(u32, u32), Vec<u32>>,
+) -> Vec<(u32, u32)> {
+    let parents: Vec<((u32, u32), (Point3, Point3))> =
+        splits.keys().map(|&e| (e, root_of(w, roots, e))).collect();
+    let chains = w.split_edges(splits);
+    let mut subs = Vec::new();
+    for (e, root) in parents {
+        let Some(chain) = chains.get(&e) else {
+            continue;
+        };
+        let mut prev = e.0;
+        for &v in chain.iter().chain(std::iter::once(&e.1)) {
+            let key = (prev.min(v), prev.max(v));
+            roots.entry(key).or_insert(root);
+            subs.push(key);
+            prev = v;
+        }
+    }
+    subs
+}
+
+/// Edge cracking between edges over the current edges: two edges with
+/// four distinct vertices whose interiors pass within `delta` of each
 /// other (with every end point farther than `delta` from the other edge:
 /// closer ends are cracking by vertex's business) are both split at a
 /// vertex at the mid-point of their closest points, snapped to an existing
-/// vertex within `delta` or merged with an earlier created one.
-pub(crate) fn crack_between_edges(w: &mut Work, delta: f64, counts: &mut SmoothCounts) {
+/// vertex within `delta` or merged with an earlier created one. An edge
+/// is split only into strictly shorter edges and at a point within `1.5
+/// delta` of its root; a crack point failing that for either edge is not
+/// created. Returns the number of edge pairs cracked.
+pub(crate) fn crack_between_edges(
+    w: &mut Work,
+    delta: f64,
+    counts: &mut SmoothCounts,
+    roots: &mut Roots,
+) -> u64 {
     if delta <= 0.0 {
-        return; // exact crossings are the Boolean's business
+        return 0; // exact crossings are the Boolean's business
     }
     let edges = w.edges();
     if edges.len() < 2 {
-        return;
+        return 0;
     }
+    let reach = 1.5 * delta;
     let d2max = delta * delta;
     let boxes = edges
         .iter()
@@ -71,35 +126,35 @@ pub(crate) fn crack_between_edges(w: &mut Work, delta: f64, counts: &mut SmoothC
     let index = BoxIndex::new(boxes);
     // (edge i, edge j, crack point, the four end points)
     let mut found: Vec<(usize, usize, Point3, [Point3; 4])> = Vec::new();
-    for (i, &(a, b)) in edges.iter().enumerate() {
+    index.for_each_pair(|i, j| {
+        let (i, j) = (i as usize, j as usize);
+        let (a, b) = edges[i];
         let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
-        let (lo, hi) = grown_box([pa, pb], 0.0);
-        for j in index.meeting(lo, hi) {
-            let j = j as usize;
-            if j <= i {
-                continue;
-            }
-            let (c, d) = edges[j];
-            if c == a || c == b || d == a || d == b {
-                continue;
-            }
-            let (pc, pd) = (w.pos[c as usize], w.pos[d as usize]);
-            let (s, t, c1, c2) = segment_segment(pa, pb, pc, pd);
-            if !(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) || dist2(c1, c2) > d2max {
-                continue;
-            }
-            let near_end = point_segment(pa, pc, pd).1 <= d2max
-                || point_segment(pb, pc, pd).1 <= d2max
-                || point_segment(pc, pa, pb).1 <= d2max
-                || point_segment(pd, pa, pb).1 <= d2max;
-            if near_end {
-                continue;
-            }
-            found.push((i, j, lerp(c1, c2, 0.5), [pa, pb, pc, pd]));
+        let (c, d) = edges[j];
+        if c == a || c == b || d == a || d == b {
+            return;
         }
-    }
+        let (pc, pd) = (w.pos[c as usize], w.pos[d as usize]);
+        let (s, t, c1, c2) = segment_segment(pa, pb, pc, pd);
+        if !(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) || dist2(c1, c2) > d2max {
+            return;
+        }
+        let near_end = point_segment(pa, pc, pd).1 <= d2max
+            || point_segment(pb, pc, pd).1 <= d2max
+            || point_segment(pc, pa, pb).1 <= d2max
+            || point_segment(pd, pa, pb).1 <= d2max;
+        if near_end {
+            return;
+        }
+        let p = lerp(c1, c2, 0.5);
+        if !may_split(w, roots, edges[i], p, reach) || !may_split(w, roots, edges[j], p, reach) {
+            return;
+        }
+        found.push((i, j, p, [pa, pb, pc, pd]));
+    });
+    found.sort_by_key(|f| (f.0, f.1));
     if found.is_empty() {
-        return;
+        return 0;
     }
     // Snap: existing referenced vertices first (pairwise farther than
     // delta apart after merging, so they stay), then the crack points in
@@ -115,35 +170,68 @@ pub(crate) fn crack_between_edges(w: &mut Work, delta: f64, counts: &mut SmoothC
     let n_existing = existing.len();
     let mut created: HashMap<usize, u32> = HashMap::new();
     let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
+    let mut cracked = 0;
     for (k, &(i, j, p, ends)) in found.iter().enumerate() {
         let rep = m.representative[n_existing + k] as usize;
         let v = if rep < n_existing {
-            let v = existing[rep];
-            w.adjustments[v as usize] = w.adjustments[v as usize].max(1);
-            v
+            existing[rep]
         } else if rep == n_existing + k {
+            // Accepted: both edges may split at p (checked above).
             let v = w.add_vertex(p, Origin::Created(ends));
             counts.vertices_created += 1;
             created.insert(rep, v);
             v
         } else {
-            let v = created[&rep];
-            w.adjustments[v as usize] = 2;
-            v
+            created[&rep]
         };
-        splits.entry(edges[i]).or_default().push(v);
-        splits.entry(edges[j]).or_default().push(v);
-        counts.edges_cracked_between_edges += 1;
+        let q = w.pos[v as usize];
+        let mut any = false;
+        for e in [edges[i], edges[j]] {
+            if v != e.0 && v != e.1 && may_split(w, roots, e, q, reach) {
+                splits.entry(e).or_default().push(v);
+                any = true;
+            }
+        }
+        if any {
+            cracked += 1;
+            if rep != n_existing + k {
+                // Snapped or merged: one more adjustment touches v.
+                let k_v = &mut w.adjustments[v as usize];
+                *k_v = (*k_v + 1).min(2);
+            }
+        }
     }
-    w.split_edges(splits);
+    // Several crack points on one edge: keep the chain only if all its
+    // sub-edges are shorter than the edge, else the first point alone.
+    for (e, vs) in splits.iter_mut() {
+        vs.sort_unstable();
+        vs.dedup();
+        if vs.len() > 1 {
+            let (pa, pb) = (w.pos[e.0 as usize], w.pos[e.1 as usize]);
+            let l2 = dist2(pa, pb);
+            let mut keyed: Vec<(f64, u32)> = vs
+                .iter()
+                .map(|&v| (crate::mesh::geom::projection(w.pos[v as usize], pa, pb), v))
+                .collect();
+            keyed.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.1.cmp(&y.1)));
+            let mut chain = vec![pa];
+            chain.extend(keyed.iter().map(|k| w.pos[k.1 as usize]));
+            chain.push(pb);
+            if !chain.windows(2).all(|s| dist2(s[0], s[1]) < l2) {
+                vs.truncate(1);
+            }
+        }
+    }
+    counts.edges_cracked_between_edges += cracked;
+    split_with_roots(w, roots, splits);
+    cracked
 }
 
 /// Edge cracking by vertex, in rounds to a fixpoint: an edge whose
 /// interior passes within `delta` of a vertex (not its end) is split at
-/// it, provided both new edges are shorter than the edge (Appendix A) and
-/// the vertex lies within `delta` of the edge the round-0 edge it descends
-/// from (so that chains of cracks never carry an edge farther than `delta`
-/// from where it was). Every qualifying vertex of an edge is taken at once
+/// it, provided both new edges are shorter than the edge (Appendix A).
+/// No vertex moves; the sub-edges inherit the edge's root (for edge-edge
+/// cracking's reach). Every qualifying vertex of an edge is taken at once
 /// when the chain's sub-edges are all shorter than the edge, else the
 /// nearest one. Each split replaces an edge by strictly shorter edges
 /// between vertices of a fixed set: the multiset of edge lengths decreases,
@@ -154,6 +242,7 @@ pub(crate) fn crack_by_vertex(
     delta: f64,
     counts: &mut SmoothCounts,
     mut over_budget: impl FnMut(&SmoothCounts) -> bool,
+    roots: &mut Roots,
     mut after_round: impl FnMut(&Work) -> Result<(), crate::SmoothError>,
 ) -> Result<(u32, bool), crate::SmoothError> {
     if delta <= 0.0 {
@@ -161,13 +250,17 @@ pub(crate) fn crack_by_vertex(
     }
     let d2max = delta * delta;
     let referenced = w.referenced();
-    let index = PointIndex::new(
-        (0..w.pos.len() as u32)
-            .filter(|&v| referenced[v as usize])
-            .map(|v| (w.pos[v as usize], v)),
+    let points: Vec<(Point3, u32)> = (0..w.pos.len() as u32)
+        .filter(|&v| referenced[v as usize])
+        .map(|v| (w.pos[v as usize], v))
+        .collect();
+    let index = BoxIndex::new(
+        points
+            .iter()
+            .map(|&(p, id)| IdBox { lo: p, hi: p, id })
+            .collect(),
     );
     let mut todo = w.edges();
-    let mut roots: HashMap<(u32, u32), (Point3, Point3)> = HashMap::new();
     let mut rounds = 0;
     while !todo.is_empty() {
         if over_budget(counts) {
@@ -175,13 +268,37 @@ pub(crate) fn crack_by_vertex(
         }
         let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
         let mut inserted = 0u64;
-        for &(a, b) in &todo {
+        // The vertices in each edge's grown box: one tree join when every
+        // edge is to be checked, queries for the few sub-edges after.
+        let near: Vec<Vec<u32>> = if rounds == 0 {
+            let boxes = todo
+                .iter()
+                .enumerate()
+                .map(|(i, &(a, b))| {
+                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
+                    IdBox {
+                        lo,
+                        hi,
+                        id: i as u32,
+                    }
+                })
+                .collect();
+            let mut near = vec![Vec::new(); todo.len()];
+            BoxIndex::new(boxes).for_each_point_inside(&points, |e, v| near[e as usize].push(v));
+            near
+        } else {
+            todo.iter()
+                .map(|&(a, b)| {
+                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
+                    index.meeting(lo, hi)
+                })
+                .collect()
+        };
+        for (&(a, b), near) in todo.iter().zip(&near) {
             let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
-            let (ra, rb) = roots.get(&(a, b)).copied().unwrap_or((pa, pb));
             let l2 = dist2(pa, pb);
-            let (lo, hi) = grown_box([pa, pb], delta);
             let mut cands: Vec<(f64, f64, u32)> = Vec::new();
-            for v in index.inside(lo, hi) {
+            for &v in near {
                 if v == a || v == b {
                     continue;
                 }
@@ -191,9 +308,6 @@ pub(crate) fn crack_by_vertex(
                     continue;
                 }
                 if dist2(pa, p) >= l2 || dist2(p, pb) >= l2 {
-                    continue;
-                }
-                if point_segment(p, ra, rb).1 > d2max {
                     continue;
                 }
                 cands.push((t, d2, v));
@@ -223,21 +337,9 @@ pub(crate) fn crack_by_vertex(
         }
         rounds += 1;
         counts.edges_cracked_by_vertex += inserted;
-        let chains = w.split_edges(splits);
-        let mut next = Vec::new();
-        for ((a, b), chain) in chains {
-            let root = roots
-                .get(&(a, b))
-                .copied()
-                .unwrap_or((w.pos[a as usize], w.pos[b as usize]));
-            let mut prev = a;
-            for &v in chain.iter().chain(std::iter::once(&b)) {
-                let key = (prev.min(v), prev.max(v));
-                roots.entry(key).or_insert(root);
-                next.push(key);
-                prev = v;
-            }
-        }
+        // The sub-edges are checked next round; every other edge is
+        // unchanged and was found uncrackable.
+        let mut next = split_with_roots(w, roots, splits);
         next.sort_unstable();
         next.dedup();
         todo = next;

@@ -1,10 +1,12 @@
-//! Broad phases of 3D smoothing: R*-trees (the `rstar` crate, bulk
-//! loaded) over points and over boxes grown by the tolerance, so that
-//! vertex-near-edge, edge-near-edge and facet-pair candidates are found in
-//! O(log n + hits) each, never by testing all pairs. A grid would not do:
-//! one long edge would cover many cells.
+//! Broad phases of 3D smoothing: a bounding-volume hierarchy over boxes
+//! grown by the tolerance (median splits on the longest axis of the box
+//! centres, `O(n log n)` to build, a query in `O(log n + hits)` for boxes
+//! that do not overlap in bulk), so that vertex-near-edge,
+//! edge-near-edge and facet-pair candidates are found without testing all
+//! pairs. A grid would not do: one long edge would cover many cells. (An
+//! R*-tree crate was measured here first: its bulk loading alone took
+//! longer than the Boolean the smoothing follows.)
 
-use rstar::{RTree, RTreeObject, AABB};
 use topology::Point3;
 
 /// A box with an id.
@@ -12,13 +14,6 @@ pub(crate) struct IdBox {
     pub lo: Point3,
     pub hi: Point3,
     pub id: u32,
-}
-
-impl RTreeObject for IdBox {
-    type Envelope = AABB<Point3>;
-    fn envelope(&self) -> Self::Envelope {
-        AABB::from_corners(self.lo, self.hi)
-    }
 }
 
 /// The box of `points` grown by `margin` on every side.
@@ -38,47 +33,213 @@ pub(crate) fn grown_box(points: impl IntoIterator<Item = Point3>, margin: f64) -
     (lo, hi)
 }
 
-/// Boxes, queried by box intersection.
-pub(crate) struct BoxIndex(RTree<IdBox>);
+/// Boxes per leaf.
+const LEAF: usize = 4;
+
+/// A node: its box and either two children (`count == 0`; `first` and
+/// `first + 1`... stored as `first` and `second`) or a leaf range of
+/// `order`.
+struct Node {
+    lo: Point3,
+    hi: Point3,
+    first: u32,
+    second: u32,
+    count: u32,
+}
+
+#[inline]
+fn meets(alo: &Point3, ahi: &Point3, blo: &Point3, bhi: &Point3) -> bool {
+    (0..3).all(|k| alo[k] <= bhi[k] && blo[k] <= ahi[k])
+}
+
+/// Boxes, queried by closed-box intersection.
+pub(crate) struct BoxIndex {
+    boxes: Vec<IdBox>,
+    nodes: Vec<Node>,
+    order: Vec<u32>,
+}
 
 impl BoxIndex {
     pub fn new(boxes: Vec<IdBox>) -> BoxIndex {
-        BoxIndex(RTree::bulk_load(boxes))
+        let mut index = BoxIndex {
+            order: (0..boxes.len() as u32).collect(),
+            boxes,
+            nodes: Vec::new(),
+        };
+        if !index.boxes.is_empty() {
+            let n = index.boxes.len();
+            index.build(0, n);
+        }
+        index
+    }
+
+    fn build(&mut self, start: usize, end: usize) -> u32 {
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for &i in &self.order[start..end] {
+            let b = &self.boxes[i as usize];
+            for k in 0..3 {
+                lo[k] = lo[k].min(b.lo[k]);
+                hi[k] = hi[k].max(b.hi[k]);
+                let c = 0.5 * b.lo[k] + 0.5 * b.hi[k];
+                clo[k] = clo[k].min(c);
+                chi[k] = chi[k].max(c);
+            }
+        }
+        let me = self.nodes.len() as u32;
+        self.nodes.push(Node {
+            lo,
+            hi,
+            first: start as u32,
+            second: 0,
+            count: (end - start) as u32,
+        });
+        if end - start <= LEAF {
+            return me;
+        }
+        let ext = [chi[0] - clo[0], chi[1] - clo[1], chi[2] - clo[2]];
+        let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
+            0
+        } else if ext[1] >= ext[2] {
+            1
+        } else {
+            2
+        };
+        let mid = (start + end) / 2;
+        let boxes = &self.boxes;
+        self.order[start..end].select_nth_unstable_by(mid - start, |&a, &b| {
+            let ca = boxes[a as usize].lo[axis] + boxes[a as usize].hi[axis];
+            let cb = boxes[b as usize].lo[axis] + boxes[b as usize].hi[axis];
+            ca.total_cmp(&cb).then(a.cmp(&b))
+        });
+        let first = self.build(start, mid);
+        let second = self.build(mid, end);
+        let node = &mut self.nodes[me as usize];
+        node.first = first;
+        node.second = second;
+        node.count = 0;
+        me
+    }
+
+    /// Calls `f` with the id of every box meeting `[lo, hi]` (closed).
+    fn visit(&self, lo: &Point3, hi: &Point3, mut f: impl FnMut(u32)) {
+        if self.nodes.is_empty() {
+            return;
+        }
+        let mut stack = vec![0u32];
+        while let Some(n) = stack.pop() {
+            let node = &self.nodes[n as usize];
+            if !meets(&node.lo, &node.hi, lo, hi) {
+                continue;
+            }
+            if node.count == 0 {
+                stack.push(node.second);
+                stack.push(node.first);
+            } else {
+                let s = node.first as usize;
+                for &i in &self.order[s..s + node.count as usize] {
+                    let b = &self.boxes[i as usize];
+                    if meets(&b.lo, &b.hi, lo, hi) {
+                        f(b.id);
+                    }
+                }
+            }
+        }
+    }
+
+    /// Calls `f(i, j)` once for every pair of ids `i < j` of boxes that
+    /// meet, in no particular order (queries run in the tree's leaf order,
+    /// for locality; callers sort what they keep).
+    pub fn for_each_pair(&self, mut f: impl FnMut(u32, u32)) {
+        for &k in &self.order {
+            let b = &self.boxes[k as usize];
+            self.visit(&b.lo, &b.hi, |j| {
+                if b.id < j {
+                    f(b.id, j);
+                }
+            });
+        }
+    }
+
+    /// Every pair of ids `(i, j)`, `i < j`, of boxes that meet, sorted.
+    #[cfg(test)]
+    pub fn pairs(&self) -> Vec<(u32, u32)> {
+        let mut p = Vec::new();
+        self.for_each_pair(|i, j| p.push((i, j)));
+        p.sort_unstable();
+        p
+    }
+
+    /// Calls `f(box id, point id)` for every point inside a box, in the
+    /// order of `points`.
+    pub fn for_each_point_inside(&self, points: &[(Point3, u32)], mut f: impl FnMut(u32, u32)) {
+        for &(q, v) in points {
+            self.visit(&q, &q, |b| f(b, v));
+        }
     }
 
     /// The ids of the boxes meeting `[lo, hi]` (closed), sorted.
     pub fn meeting(&self, lo: Point3, hi: Point3) -> Vec<u32> {
-        let mut ids: Vec<u32> = self
-            .0
-            .locate_in_envelope_intersecting(&AABB::from_corners(lo, hi))
-            .map(|b| b.id)
-            .collect();
+        let mut ids = Vec::new();
+        self.visit(&lo, &hi, |i| ids.push(i));
         ids.sort_unstable();
         ids
     }
 }
 
-/// Points with ids, queried by box containment.
-pub(crate) struct PointIndex(RTree<rstar::primitives::GeomWithData<Point3, u32>>);
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use test_support::rng::SplitMix64;
 
-impl PointIndex {
-    pub fn new(points: impl IntoIterator<Item = (Point3, u32)>) -> PointIndex {
-        PointIndex(RTree::bulk_load(
-            points
-                .into_iter()
-                .map(|(p, id)| rstar::primitives::GeomWithData::new(p, id))
-                .collect(),
-        ))
-    }
-
-    /// The ids of the points in `[lo, hi]` (closed), sorted.
-    pub fn inside(&self, lo: Point3, hi: Point3) -> Vec<u32> {
-        let mut ids: Vec<u32> = self
-            .0
-            .locate_in_envelope(&AABB::from_corners(lo, hi))
-            .map(|p| p.data)
-            .collect();
-        ids.sort_unstable();
-        ids
+    /// The index answers exactly what testing every pair answers.
+    #[test]
+    fn pairs_and_points_equal_all_pairs() {
+        let mut rng = SplitMix64::new(5);
+        for n in [0usize, 1, 3, 17, 200] {
+            let boxes: Vec<(Point3, Point3)> = (0..n)
+                .map(|_| {
+                    let lo: Point3 = std::array::from_fn(|_| rng.unit());
+                    let hi: Point3 = std::array::from_fn(|k| lo[k] + 0.2 * rng.unit());
+                    (lo, hi)
+                })
+                .collect();
+            let index = BoxIndex::new(
+                boxes
+                    .iter()
+                    .enumerate()
+                    .map(|(i, &(lo, hi))| IdBox {
+                        lo,
+                        hi,
+                        id: i as u32,
+                    })
+                    .collect(),
+            );
+            let mut want = Vec::new();
+            for i in 0..n {
+                for j in i + 1..n {
+                    if meets(&boxes[i].0, &boxes[i].1, &boxes[j].0, &boxes[j].1) {
+                        want.push((i as u32, j as u32));
+                    }
+                }
+            }
+            assert_eq!(index.pairs(), want);
+            let pts: Vec<(Point3, u32)> = (0..50)
+                .map(|v| (std::array::from_fn(|_| rng.unit()), v))
+                .collect();
+            let mut want = Vec::new();
+            for (i, b) in boxes.iter().enumerate() {
+                for &(q, v) in &pts {
+                    if meets(&b.0, &b.1, &q, &q) {
+                        want.push((i as u32, v));
+                    }
+                }
+            }
+            want.sort_unstable();
+            let mut got = Vec::new();
+            index.for_each_point_inside(&pts, |b, v| got.push((b, v)));
+            got.sort_unstable();
+            assert_eq!(got, want);
+        }
     }
 }

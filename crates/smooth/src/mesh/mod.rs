@@ -3,20 +3,19 @@
 //! (the argument is in `docs/algorithms/smooth.md`):
 //!
 //! 1. vertex adjustment (merging within `delta`), then zero-length edge
-//!    removal and half-edge cancellation;
-//! 2. edge cracking between edges, once: after it no vertex is ever
-//!    created or moved;
-//! 3. edge cracking by vertex, in rounds to a fixpoint (each crack
-//!    replaces an edge by strictly shorter edges between fixed vertices);
-//! 4. zero-length edge removal and half-edge cancellation (each removes
+//!    removal and half-edge cancellation; no vertex moves after this;
+//! 2. edge cracking between edges, then by vertex in rounds to a fixpoint,
+//!    repeated until neither splits anything: every split replaces an
+//!    edge by strictly shorter edges, so the multiset of edge lengths
+//!    decreases;
+//! 3. zero-length edge removal and half-edge cancellation (each removes
 //!    half-edges);
-//! 5. facet cancellation passes, each followed by half-edge cancellation,
-//!    repeated while a pass lowers the half-edge count;
-//! 6. empty facet and unreferenced vertex removal, and the report.
+//! 4. facet cancellation passes, each swap followed by half-edge
+//!    cancellation, repeated while a pass lowers the half-edge count;
+//! 5. empty facet and unreferenced vertex removal, and the report.
 //!
-//! Positions change only in phases 1-2, by at most `delta` for an input
-//! vertex and `2.5 delta` (from its input edges) for a created one; that
-//! is the reported distortion bound.
+//! An input vertex moves at most `delta`; a created vertex lies within
+//! `2.5 delta` of the input edges it descends from: the distortion bound.
 
 mod cancel;
 mod crack;
@@ -104,24 +103,34 @@ pub(crate) fn run(
     passes += 1;
     debug_check(&w, "vertex merging")?;
 
-    // Phase 2: edge cracking between edges, once.
-    crack::crack_between_edges(&mut w, delta, &mut counts);
-    passes += 1;
-    debug_check(&w, "edge cracking between edges")?;
+    // Phase 2: edge cracking between edges, then by vertex to a
+    // fixpoint, repeated until neither cracks anything.
+    let mut roots = crack::Roots::new();
+    loop {
+        let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
+        passes += 1;
+        debug_check(&w, "edge cracking between edges")?;
+        let (rounds, hit) =
+            crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, &mut roots, |w| {
+                debug_check(w, "edge cracking by vertex")
+            })?;
+        passes += rounds;
+        budget_hit |= hit;
+        if cracked == 0 && rounds == 0 {
+            break; // neither kind of cracking applies any more
+        }
+        if budget_hit || over_budget(&counts) {
+            budget_hit = true;
+            break;
+        }
+    }
 
-    // Phase 3: edge cracking by vertex to a fixpoint.
-    let (rounds, hit) = crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, |w| {
-        debug_check(w, "edge cracking by vertex")
-    })?;
-    passes += rounds;
-    budget_hit |= hit;
-
-    // Phase 4: removals and half-edge cancellation.
+    // Phase 3: removals and half-edge cancellation.
     cancel::cancel_all(&mut w, &mut counts);
     passes += 1;
     debug_check(&w, "half-edge cancellation")?;
 
-    // Phase 5: facet cancellation while it lowers the half-edge count.
+    // Phase 4: facet cancellation while it lowers the half-edge count.
     while !budget_hit {
         let before = w.half_edge_count();
         let (changed, hit) =
@@ -135,7 +144,7 @@ pub(crate) fn run(
         }
     }
 
-    // Phase 6: compaction and the report.
+    // Phase 5: compaction and the report.
     let (shape, map, unreferenced, empty) = w.compact();
     counts.unreferenced_vertices_removed += unreferenced;
     counts.empty_facets_removed += empty;

@@ -28,10 +28,11 @@ fn unit(a: Point3) -> Option<Point3> {
     }
 }
 
-/// The best-fit plane of the facet with the given half-edges, `None` when
-/// its vector area is zero (no direction maximises the apparent area
-/// uniquely: the facet has no side to face).
-pub(crate) fn best_fit_plane(pos: &[Point3], half_edges: &[HalfEdge]) -> Option<Plane> {
+/// The unit Newell normal of the facet with the given half-edges (relative
+/// to its first vertex, for accuracy), `None` when its vector area is zero
+/// (no direction maximises the apparent area uniquely: the facet has no
+/// side to face).
+pub(crate) fn facet_normal(pos: &[Point3], half_edges: &[HalfEdge]) -> Option<Point3> {
     let first = half_edges.first()?;
     let o = pos[first.start as usize];
     let mut n = [0.0f64; 3];
@@ -42,7 +43,14 @@ pub(crate) fn best_fit_plane(pos: &[Point3], half_edges: &[HalfEdge]) -> Option<
         n[1] += (p[2] - q[2]) * (p[0] + q[0]);
         n[2] += (p[0] - q[0]) * (p[1] + q[1]);
     }
-    let normal = unit(n)?;
+    unit(n)
+}
+
+/// The best-fit plane of the facet with the given half-edges, `None` when
+/// its vector area is zero ([`facet_normal`]).
+pub(crate) fn best_fit_plane(pos: &[Point3], half_edges: &[HalfEdge]) -> Option<Plane> {
+    let normal = facet_normal(pos, half_edges)?;
+    let o = pos[half_edges[0].start as usize];
     let mut vs: Vec<u32> = half_edges.iter().map(|h| h.start).collect();
     vs.sort_unstable();
     vs.dedup();

@@ -4,9 +4,105 @@
 //! by the rules of section 4.8 (`topology::triangulate_facet`), so the
 //! output stays a triangle mesh satisfying shape boundary closure.
 
+use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
 use crate::{SmoothError, SmoothOptions, Smoothed};
-use topology::{triangulate_facet, TriangleMesh};
+use std::collections::HashMap;
+use topology::{triangulate_facet, HalfEdge, Point3, TriangleMesh};
+
+/// Twice the signed area of the 2D triangle `a b c`.
+fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
+    (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])
+}
+
+/// Whether `d` lies strictly inside the circle through the anticlockwise
+/// triangle `a b c`.
+fn in_circle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
+    let r = |p: [f64; 2]| {
+        let (x, y) = (p[0] - d[0], p[1] - d[1]);
+        (x, y, x * x + y * y)
+    };
+    let (ax, ay, a2) = r(a);
+    let (bx, by, b2) = r(b);
+    let (cx, cy, c2) = r(c);
+    let det = ax * (by * c2 - b2 * cy) - ay * (bx * c2 - b2 * cx) + a2 * (bx * cy - by * cx);
+    det > 0.0
+}
+
+/// Improves the triangles of one re-triangulated facet by flipping
+/// internal edges (Lawson's flips towards the Delaunay triangulation in
+/// the facet's plane), which removes the thin triangles ear clipping
+/// leaves beside vertices that cracking put on the facet's edges. A flip
+/// replaces the internal edge of the quadrilateral `u q v p` by `p q`: the
+/// quadrilateral's four half-edges stay and the internal edge is again a
+/// half-edge pair, so closure holds whatever the geometry. Only strictly
+/// convex quadrilaterals are flipped; the number of flips is capped (the
+/// safety net against rounding cycles).
+fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]) {
+    if tris.len() < 2 {
+        return;
+    }
+    let Some(plane) = best_fit_plane(pos, boundary) else {
+        return;
+    };
+    let p2 = |v: u32| plane.project(pos[v as usize]);
+    let on_boundary = |a: u32, b: u32| {
+        boundary
+            .iter()
+            .any(|h| (h.start == a && h.end == b) || (h.start == b && h.end == a))
+    };
+    let cap = 4 * tris.len() * tris.len();
+    let mut flips = 0;
+    // Directed half-edge -> (triangle, corner of its start).
+    let mut at: HashMap<(u32, u32), (usize, usize)> = HashMap::new();
+    let index = |at: &mut HashMap<(u32, u32), (usize, usize)>, t: usize, tri: [u32; 3]| {
+        for k in 0..3 {
+            at.insert((tri[k], tri[(k + 1) % 3]), (t, k));
+        }
+    };
+    for (t, &tri) in tris.iter().enumerate() {
+        index(&mut at, t, tri);
+    }
+    let mut changed = true;
+    while changed && flips < cap {
+        changed = false;
+        for t1 in 0..tris.len() {
+            for k1 in 0..3 {
+                let (u, v) = (tris[t1][k1], tris[t1][(k1 + 1) % 3]);
+                let Some(&(t2, k2)) = at.get(&(v, u)) else {
+                    continue;
+                };
+                if t2 == t1 || u > v || on_boundary(u, v) {
+                    continue;
+                }
+                let p = tris[t1][(k1 + 2) % 3];
+                let q = tris[t2][(k2 + 2) % 3];
+                if p == q {
+                    continue;
+                }
+                let (pu, pv, pp, pq) = (p2(u), p2(v), p2(p), p2(q));
+                let convex = orient(pu, pv, pp) > 0.0
+                    && orient(pv, pu, pq) > 0.0
+                    && orient(pu, pq, pp) > 0.0
+                    && orient(pv, pp, pq) > 0.0;
+                if !convex || !in_circle(pu, pv, pp, pq) {
+                    continue;
+                }
+                for tri in [tris[t1], tris[t2]] {
+                    for k in 0..3 {
+                        at.remove(&(tri[k], tri[(k + 1) % 3]));
+                    }
+                }
+                tris[t1] = [u, q, p];
+                tris[t2] = [v, p, q];
+                index(&mut at, t1, tris[t1]);
+                index(&mut at, t2, tris[t2]);
+                flips += 1;
+                changed = true;
+            }
+        }
+    }
+}
 
 /// Smooths a triangle mesh ([`crate::smooth_mesh`] on its triangles) and
 /// re-triangulates the facets smoothing changed (section 4.8), counting
@@ -34,7 +130,9 @@ pub fn smooth_triangles(
         }
         pairs.clear();
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
+        let first = triangles.len();
         triangulate_facet(&poly.vertices, &pairs, &mut triangles);
+        flip_to_delaunay(&poly.vertices, h, &mut triangles[first..]);
         report.counts.facets_retriangulated += 1;
     }
     // A triangle repeating a vertex holds a zero-length half-edge and a
