@@ -138,6 +138,10 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     out.shape.check_topology().expect("closure");
     let r = &out.report;
     assert!(!r.budget_hit, "budget hit: {r:?}");
+    assert!(
+        r.passes < smooth::MAX_PLANAR_PASSES,
+        "ended on the pass limit: {r:?}"
+    );
     assert!(r.max_displacement <= r.distortion_bound, "{r:?}");
     assert!(r.epsilon >= r.distortion_bound);
     if let Err(d) = check_smoothed_polygon_set(&out.shape, tol) {
