@@ -27,7 +27,7 @@ pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
 pub use options::SmoothOptions;
 pub use planar::{
-    check_smoothed_polygon_set, point_segment_dist2, smooth_polygon_set, PlanarDefect,
+    point_segment_dist2, sanity_check_polygon_set, smooth_polygon_set, PlanarDefect,
     MAX_PLANAR_PASSES,
 };
 pub use report::{SmoothCounts, SmoothReport, Smoothed};

@@ -8,7 +8,7 @@
 mod planar_support;
 
 use planar_support::{perimeter, seg_dist};
-use smooth::{check_smoothed_polygon_set, smooth_polygon_set, SmoothOptions};
+use smooth::{sanity_check_polygon_set, smooth_polygon_set, SmoothOptions};
 use std::str::FromStr;
 use test_support::exact::winding;
 use topology::PolygonSet2;
@@ -70,7 +70,7 @@ fn real_map_smoothed_at_small_tolerances() {
             out.shape.edge_count()
         );
         assert!(!r.budget_hit);
-        check_smoothed_polygon_set(&out.shape, tol).unwrap_or_else(|d| panic!("{d}; {r:?}"));
+        sanity_check_polygon_set(&out.shape, tol).unwrap_or_else(|d| panic!("{d}; {r:?}"));
         assert!(r.max_displacement <= r.distortion_bound);
         let (a0, a1) = (m.signed_area(), out.shape.signed_area());
         let bound = perimeter(&m) * r.distortion_bound.max(tol) + 1e-12 * a0.abs();

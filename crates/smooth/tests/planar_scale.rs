@@ -7,7 +7,7 @@
 mod planar_support;
 
 use planar_support::set_of;
-use smooth::{check_smoothed_polygon_set, smooth_polygon_set, SmoothOptions};
+use smooth::{sanity_check_polygon_set, smooth_polygon_set, SmoothOptions};
 use std::time::Instant;
 use test_support::rng::Xorshift64Star;
 use test_support::shapes::{regular_ngon, square};
@@ -38,7 +38,7 @@ fn run(name: &str, s: &PolygonSet2) {
     let t = Instant::now();
     let out = smooth_polygon_set(s, &SmoothOptions::new(TOL)).unwrap();
     let dt = t.elapsed().as_secs_f64();
-    check_smoothed_polygon_set(&out.shape, TOL).unwrap();
+    sanity_check_polygon_set(&out.shape, TOL).unwrap();
     println!(
         "{name}: {} edges -> {} edges in {:.3} s ({:.2} us/edge), passes {}, k {}",
         s.edge_count(),

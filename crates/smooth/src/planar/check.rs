@@ -88,7 +88,7 @@ impl std::error::Error for PlanarDefect {}
 /// cross, touch or overlap (exact). Winding numbers are not checked here
 /// (the simplification sweep's cell check does that). Cost `O(n log n)`
 /// plus the pairs of the broad phase.
-pub fn check_smoothed_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(), PlanarDefect> {
+pub fn sanity_check_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(), PlanarDefect> {
     set.validate_coordinates().map_err(PlanarDefect::Topology)?;
     set.check_topology().map_err(PlanarDefect::Topology)?;
     let pts = set.vertices();

@@ -21,7 +21,7 @@ mod merge;
 mod resolve;
 mod work;
 
-pub use check::{check_smoothed_polygon_set, PlanarDefect};
+pub use check::{sanity_check_polygon_set, PlanarDefect};
 pub use geom::point_segment_dist2;
 
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
@@ -47,7 +47,7 @@ pub const MAX_PLANAR_PASSES: u32 = 3;
 /// simple: no two vertices within `delta`, no edge shorter than `delta`,
 /// no vertex within `delta` of an edge's interior where Appendix A's rule
 /// would crack it, no crossings, winding numbers in `{0, 1}`
-/// ([`check_smoothed_polygon_set`] tests all of it). Its area differs from
+/// ([`sanity_check_polygon_set`] tests all of it). Its area differs from
 /// the input's by at most about perimeter times the distortion bound.
 /// Smoothing the result again returns it unchanged (vertices sorted by
 /// position, edges by vertex ids).

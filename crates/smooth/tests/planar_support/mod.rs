@@ -5,7 +5,7 @@
 
 #![allow(dead_code)]
 
-use smooth::{check_smoothed_polygon_set, smooth_polygon_set, SmoothOptions, Smoothed};
+use smooth::{sanity_check_polygon_set, smooth_polygon_set, SmoothOptions, Smoothed};
 use test_support::exact::{orient, winding};
 use test_support::shapes::Ring;
 use topology::PolygonSet2;
@@ -144,7 +144,7 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     );
     assert!(r.max_displacement <= r.distortion_bound, "{r:?}");
     assert!(r.epsilon >= r.distortion_bound);
-    if let Err(d) = check_smoothed_polygon_set(&out.shape, tol) {
+    if let Err(d) = sanity_check_polygon_set(&out.shape, tol) {
         panic!("not clean at {tol}: {d}; report {r:?}\nout {:?}", out.shape);
     }
     let again = smooth_polygon_set(&out.shape, &SmoothOptions::new(tol)).unwrap();
