@@ -10,11 +10,12 @@ use test_support::shapes::{rect, square};
 
 const TOL: f64 = 1e-5;
 
-/// One ring around `[0, 2 + gap] x [0, 1]` (collinear vertices may stay
-/// on its sides): the union of the squares `[0, 1]` and `[1 + gap, 2 +
-/// gap]` with the gap closed or the overlap merged.
+/// One rectangle `[0, 2 + gap] x [0, 1]` of four edges: the union of the
+/// squares `[0, 1]` and `[1 + gap, 2 + gap]` with the gap closed or the
+/// overlap merged, and no vertex left on its straight sides.
 fn assert_one_box(s: &topology::PolygonSet2, gap: f64) {
     assert_eq!(s.loops().len(), 1, "one ring: {s:?}");
+    assert_eq!(s.edge_count(), 4, "a rectangle: {s:?}");
     let want = 2.0 + gap;
     assert!(
         (s.signed_area() - want).abs() < 1e-12,
@@ -99,6 +100,7 @@ fn stacked_rows_of_squares_union_to_one_ring() {
     let out = smooth_checked_area(&acc, TOL);
     assert_eq!(out.shape.loops().len(), 1);
     assert!((out.shape.signed_area() - 6.0).abs() < 1e-5);
+    assert_eq!(out.shape.edge_count(), 4, "{:?}", out.shape);
 }
 
 #[test]
