@@ -156,6 +156,7 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     }
     if out.shape.edge_count() <= 400 {
         assert_eq!(exact_conflicts(&out.shape), 0);
+        assert_spacing_brute_force(&out.shape, tol);
         // Every result vertex within the distortion bound of the input's
         // boundary.
         for &p in out.shape.vertices() {
@@ -186,4 +187,35 @@ pub fn smooth_checked_area(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet
     let bound = perimeter(input) * out.report.distortion_bound.max(tol) + 1e-12 * (1.0 + a0.abs());
     assert!((a1 - a0).abs() <= bound, "area {a0} -> {a1}, bound {bound}");
     out
+}
+
+/// All pairs, plain f64 with a relative slack for rounding: no two
+/// vertices within `tol`, no edge `tol` long or shorter, and no vertex
+/// within `tol` of an edge's interior where a crack would make both parts
+/// shorter (Appendix A's condition).
+pub fn assert_spacing_brute_force(s: &PolygonSet2, tol: f64) {
+    let v = s.vertices();
+    let d = |p: [f64; 2], q: [f64; 2]| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+    let slack = 1.0 - 1e-9;
+    for i in 0..v.len() {
+        for j in i + 1..v.len() {
+            assert!(
+                d(v[i], v[j]) > tol * slack,
+                "vertices {i} and {j} within {tol}"
+            );
+        }
+    }
+    for e in s.edges() {
+        let (a, b) = s.edge_points(e);
+        let len = d(a, b);
+        assert!(len > tol * slack, "edge {e:?} of length {len}");
+        for (k, &p) in v.iter().enumerate() {
+            if k as u32 == e.start || k as u32 == e.end {
+                continue;
+            }
+            let near = seg_dist(p, a, b) < tol * slack;
+            let shorter = d(a, p) < len * slack && d(p, b) < len * slack;
+            assert!(!(near && shorter), "vertex {k} within {tol} of edge {e:?}");
+        }
+    }
 }
