@@ -26,8 +26,5 @@ mod report;
 pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
 pub use options::SmoothOptions;
-pub use planar::{
-    point_segment_dist2, sanity_check_polygon_set, smooth_polygon_set, PlanarDefect,
-    MAX_PLANAR_PASSES,
-};
+pub use planar::{sanity_check_polygon_set, smooth_polygon_set, PlanarDefect, MAX_PLANAR_PASSES};
 pub use report::{SmoothCounts, SmoothReport, Smoothed};

@@ -18,14 +18,14 @@ mod broad;
 mod budget;
 mod check;
 mod crack;
-mod geom;
+/// Plane geometry, dimension-generic where it can be shared with 3D.
+pub(crate) mod geom;
 mod merge;
 mod resolve;
 mod straighten;
 mod work;
 
 pub use check::{sanity_check_polygon_set, PlanarDefect};
-pub use geom::point_segment_dist2;
 
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use budget::Budget;
