@@ -186,3 +186,30 @@ fn a_comb_of_vertices_near_an_edge_drifts_within_the_bound() {
     assert!(areas.iter().all(|&a| a > -2.0 * TOL), "{areas:?}");
     assert!(out.report.counts.edges_cracked_by_vertex > 0);
 }
+
+#[test]
+fn crossings_are_cracked_and_inside_out_parts_dropped() {
+    // A bow tie: winding +1 on the left triangle, -1 on the right one.
+    let bow = set_of(&[vec![[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]]]);
+    let out = smooth_checked(&bow, TOL);
+    let c = out.report.counts;
+    assert_eq!(
+        (c.edges_cracked_between_edges, c.vertices_created),
+        (1, 1),
+        "{c:?}"
+    );
+    assert_eq!(out.shape.edge_count(), 3);
+    assert!((out.shape.signed_area() - 1.0).abs() < 1e-15);
+    // A pentagram: winding 2 in the centre; the result is its outline.
+    let star: Vec<[f64; 2]> = (0..5)
+        .map(|i| {
+            let a = std::f64::consts::TAU * f64::from(2 * i) / 5.0;
+            [a.cos(), a.sin()]
+        })
+        .collect();
+    let out = smooth_checked(&set_of(&[star.clone()]), TOL);
+    assert_eq!(out.report.counts.edges_cracked_between_edges, 5);
+    assert_eq!(out.shape.vertex_count(), 10);
+    let outline = simplify_2d::simplify(&set_of(&[star]), simplify_2d::FillRule::Positive).unwrap();
+    assert!((out.shape.signed_area() - outline.shape.signed_area()).abs() < 1e-12);
+}
