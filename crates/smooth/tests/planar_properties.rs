@@ -113,6 +113,26 @@ proptest! {
     }
 
     #[test]
+    fn random_polygons_on_coarse_grids(
+        seed in any::<u64>(),
+        n in 3usize..30,
+        off in prop::sample::select(vec![0.0, 1.5 * 2f64.powi(40), 1.5 * 2f64.powi(49)]),
+        tol in prop::sample::select(vec![0.0, 1e-3, 0.1, 0.5]),
+    ) {
+        // Section 7.7's displaced random polygons: with the offset
+        // 1.5 * 2^49 the coordinates are multiples of 1/8, so rounding
+        // moves crossing points by up to the tolerance and beyond.
+        let mut rng = Xorshift64Star::new(seed);
+        let ring: Ring = (0..n)
+            .map(|_| {
+                let p = rng.in_disc();
+                [p[0] * 16.0 + off, p[1] * 16.0 + off]
+            })
+            .collect();
+        smooth_checked(&set_of(&[ring]), tol);
+    }
+
+    #[test]
     fn boolean_chains_of_grid_squares(
         steps in prop::collection::vec(
             (0i32..6, 0i32..6, 1i32..4, 0usize..3, 0usize..6),
