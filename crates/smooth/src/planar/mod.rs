@@ -50,9 +50,9 @@ pub const MAX_PLANAR_PASSES: u32 = 3;
 /// the pass limit (`report.passes < MAX_PLANAR_PASSES`, as it does on the
 /// outputs of Booleans in every test), clean: no two vertices within
 /// `delta`, no edge shorter than `delta`, no vertex within `delta` of an
-/// edge's interior where Appendix A's rule would crack it, no crossings
-/// ([`sanity_check_polygon_set`] tests these), and winding numbers in
-/// `{0, 1}` (the sweep's cell check). Its area differs from
+/// edge's interior where Appendix A's rule would crack it, no crossings,
+/// and winding numbers in `{0, 1}` ([`sanity_check_polygon_set`] tests
+/// all of it). Its area differs from
 /// the input's by at most about perimeter times the distortion bound.
 /// Smoothing the result again returns it unchanged (vertices sorted by
 /// position, edges by vertex ids).
