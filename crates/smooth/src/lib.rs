@@ -32,8 +32,5 @@ pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
 pub use mesh::{sanity_check_mesh, sanity_check_triangles, smooth_mesh, smooth_triangles};
 pub use options::SmoothOptions;
-pub use planar::{
-    check_smoothed_polygon_set, point_segment_dist2, smooth_polygon_set, PlanarDefect,
-    MAX_PLANAR_PASSES,
-};
+pub use planar::{sanity_check_polygon_set, smooth_polygon_set, PlanarDefect, MAX_PLANAR_PASSES};
 pub use report::{SmoothCounts, SmoothReport, Smoothed};

@@ -47,6 +47,18 @@ pub enum PlanarDefect {
         /// The other edge index.
         b: usize,
     },
+    /// The simplification sweep failed on the set (a bug there).
+    Sweep(String),
+    /// An edge does not separate winding number 1 from 0 (an inside-out
+    /// or multiply enclosed region), by the sweep's cell structure.
+    Winding {
+        /// The edge index.
+        edge: usize,
+        /// The winding number on its left.
+        left: i32,
+        /// The winding number on its right.
+        right: i32,
+    },
 }
 
 impl fmt::Display for PlanarDefect {
@@ -74,6 +86,11 @@ impl fmt::Display for PlanarDefect {
             PlanarDefect::Crossing { a, b } => {
                 write!(f, "edges {a} and {b} cross, touch or overlap")
             }
+            PlanarDefect::Sweep(m) => write!(f, "the winding check failed: {m}"),
+            PlanarDefect::Winding { edge, left, right } => write!(
+                f,
+                "edge {edge} has winding number {left} on its left and {right} on its right, not 1 and 0"
+            ),
         }
     }
 }
@@ -84,11 +101,12 @@ impl std::error::Error for PlanarDefect {}
 /// topologically valid, unit edges (one per vertex pair), no edge of
 /// length at most `tolerance`, no two vertices within `tolerance`, no
 /// vertex within `tolerance` of an edge's interior that Appendix A's rule
-/// would crack it at (both parts strictly shorter), and no two edges that
-/// cross, touch or overlap (exact). Winding numbers are not checked here
-/// (the simplification sweep's cell check does that). Cost `O(n log n)`
-/// plus the pairs of the broad phase.
-pub fn check_smoothed_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(), PlanarDefect> {
+/// would crack it at (both parts strictly shorter), no two edges that
+/// cross, touch or overlap (exact), and every edge with winding number 1
+/// on its left and 0 on its right (the cell structure of the
+/// simplification sweep, exact on a set without crossings). Cost
+/// `O(n log n)` plus the pairs of the broad phase.
+pub fn sanity_check_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(), PlanarDefect> {
     set.validate_coordinates().map_err(PlanarDefect::Topology)?;
     set.check_topology().map_err(PlanarDefect::Topology)?;
     let pts = set.vertices();
@@ -135,6 +153,19 @@ pub fn check_smoothed_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(
         let (e, f) = (edges[i], edges[j]);
         if edges_conflict([e.a, e.b], [f.a, f.b], pts) {
             return Err(PlanarDefect::Crossing { a: i, b: j });
+        }
+    }
+    let cells = simplify_2d::cell_structure(set).map_err(|e| match e {
+        simplify_2d::SimplifyError::InvalidInput { source, .. } => PlanarDefect::Topology(source),
+        other => PlanarDefect::Sweep(other.to_string()),
+    })?;
+    for e in cells.edges() {
+        if e.mult != 0 && !(e.left.max(e.right) == 1 && e.left.min(e.right) == 0) {
+            return Err(PlanarDefect::Winding {
+                edge: e.origin as usize,
+                left: e.left,
+                right: e.right,
+            });
         }
     }
     Ok(())

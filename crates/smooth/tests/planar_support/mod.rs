@@ -5,7 +5,7 @@
 
 #![allow(dead_code)]
 
-use smooth::{check_smoothed_polygon_set, smooth_polygon_set, SmoothOptions, Smoothed};
+use smooth::{sanity_check_polygon_set, smooth_polygon_set, SmoothOptions, Smoothed};
 use test_support::exact::{orient, winding};
 use test_support::shapes::Ring;
 use topology::PolygonSet2;
@@ -138,9 +138,13 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     out.shape.check_topology().expect("closure");
     let r = &out.report;
     assert!(!r.budget_hit, "budget hit: {r:?}");
+    assert!(
+        r.passes < smooth::MAX_PLANAR_PASSES,
+        "ended on the pass limit: {r:?}"
+    );
     assert!(r.max_displacement <= r.distortion_bound, "{r:?}");
     assert!(r.epsilon >= r.distortion_bound);
-    if let Err(d) = check_smoothed_polygon_set(&out.shape, tol) {
+    if let Err(d) = sanity_check_polygon_set(&out.shape, tol) {
         panic!("not clean at {tol}: {d}; report {r:?}\nout {:?}", out.shape);
     }
     let again = smooth_polygon_set(&out.shape, &SmoothOptions::new(tol)).unwrap();
@@ -152,6 +156,7 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     }
     if out.shape.edge_count() <= 400 {
         assert_eq!(exact_conflicts(&out.shape), 0);
+        assert_spacing_brute_force(&out.shape, tol);
         // Every result vertex within the distortion bound of the input's
         // boundary.
         for &p in out.shape.vertices() {
@@ -182,4 +187,35 @@ pub fn smooth_checked_area(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet
     let bound = perimeter(input) * out.report.distortion_bound.max(tol) + 1e-12 * (1.0 + a0.abs());
     assert!((a1 - a0).abs() <= bound, "area {a0} -> {a1}, bound {bound}");
     out
+}
+
+/// All pairs, plain f64 with a relative slack for rounding: no two
+/// vertices within `tol`, no edge `tol` long or shorter, and no vertex
+/// within `tol` of an edge's interior where a crack would make both parts
+/// shorter (Appendix A's condition).
+pub fn assert_spacing_brute_force(s: &PolygonSet2, tol: f64) {
+    let v = s.vertices();
+    let d = |p: [f64; 2], q: [f64; 2]| ((p[0] - q[0]).powi(2) + (p[1] - q[1]).powi(2)).sqrt();
+    let slack = 1.0 - 1e-9;
+    for i in 0..v.len() {
+        for j in i + 1..v.len() {
+            assert!(
+                d(v[i], v[j]) > tol * slack,
+                "vertices {i} and {j} within {tol}"
+            );
+        }
+    }
+    for e in s.edges() {
+        let (a, b) = s.edge_points(e);
+        let len = d(a, b);
+        assert!(len > tol * slack, "edge {e:?} of length {len}");
+        for (k, &p) in v.iter().enumerate() {
+            if k as u32 == e.start || k as u32 == e.end {
+                continue;
+            }
+            let near = seg_dist(p, a, b) < tol * slack;
+            let shorter = d(a, p) < len * slack && d(p, b) < len * slack;
+            assert!(!(near && shorter), "vertex {k} within {tol} of edge {e:?}");
+        }
+    }
 }
