@@ -199,6 +199,8 @@ proptest! {
         let sane = scale == 1.0 || scale == 1e-9;
         if sane && out.report.passes < smooth::MAX_PLANAR_PASSES {
             smooth::sanity_check_polygon_set(&out.shape, tol * scale).unwrap();
+            let again = smooth_polygon_set(&out.shape, &SmoothOptions::new(tol * scale)).unwrap();
+            prop_assert_eq!(&again.shape, &out.shape);
         }
     }
 

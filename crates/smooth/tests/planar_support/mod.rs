@@ -179,12 +179,12 @@ pub fn smooth_checked(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     out
 }
 
-/// [`smooth_checked`], and the area within `perimeter x bound` of the
+/// [`smooth_checked`], and the area within `perimeter x tol` of the
 /// input's (for inputs whose winding numbers are already 0 or 1).
 pub fn smooth_checked_area(input: &PolygonSet2, tol: f64) -> Smoothed<PolygonSet2> {
     let out = smooth_checked(input, tol);
     let (a0, a1) = (input.signed_area(), out.shape.signed_area());
-    let bound = perimeter(input) * out.report.distortion_bound.max(tol) + 1e-12 * (1.0 + a0.abs());
+    let bound = perimeter(input) * tol + 1e-12 * (1.0 + a0.abs());
     assert!((a1 - a0).abs() <= bound, "area {a0} -> {a1}, bound {bound}");
     out
 }
