@@ -294,13 +294,11 @@ pub(crate) fn facet_cancellation_pass(
             id: i as u32,
         });
     }
-    let mut pairs: Vec<(usize, usize)> = Vec::new();
-    BoxIndex::new(boxes).for_each_pair(|i, j| {
+    let mut pairs: Vec<(usize, usize)> = BoxIndex::new(boxes).pairs_where(|i, j| {
         let (i, j) = (i as usize, j as usize);
-        if let (Some(ni), Some(nj)) = (normals[i], normals[j]) {
-            if dot(ni, nj) < 0.0 {
-                pairs.push((i, j));
-            }
+        match (normals[i], normals[j]) {
+            (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => Some((i, j)),
+            _ => None,
         }
     });
     pairs.sort_unstable();
