@@ -1,4 +1,10 @@
-//! Temporary timing probe (not committed).
+//! Times smoothing against the Boolean it follows: the union of two offset
+//! icospheres (`LEVEL` subdivisions, default 6: 81,920 triangles each) by
+//! `boolean_triangles`, then `smooth_triangles` at 1e-9, in one process.
+//! The figures of `docs/algorithms/smooth.md` come from
+//! `CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16
+//! cargo run --release -p smooth --example smooth_timing -- LEVEL`.
+//! (Criterion benches beside the peers live in `benches/`.)
 use boolean_3d::{boolean_triangles, BooleanOp};
 use smooth::{smooth_triangles, SmoothOptions};
 use std::time::Instant;
