@@ -113,7 +113,13 @@ fn a_tiny_budget_stops_early_with_a_valid_shape_and_says_so() {
     // adjustments, so a budget of 2 stops the loops that follow.
     let (mut v, mut f) = (Vec::new(), Vec::new());
     test_support::shapes::push_box(&mut v, &mut f, [0.0; 3], [1.0; 3], false);
-    test_support::shapes::push_box(&mut v, &mut f, [0.0, 0.0, 1.0 + 1e-9], [1.0, 1.0, 2.0], false);
+    test_support::shapes::push_box(
+        &mut v,
+        &mut f,
+        [0.0, 0.0, 1.0 + 1e-9],
+        [1.0, 1.0, 2.0],
+        false,
+    );
     let m = topology::PolygonMesh::new(v, f);
     let o = SmoothOptions {
         tolerance: 1e-6,
