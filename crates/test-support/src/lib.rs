@@ -22,3 +22,12 @@ pub mod rng;
 pub mod shapes;
 #[cfg(feature = "proptest")]
 pub mod strategies;
+
+/// The path of a real data file shipped with this crate, e.g.
+/// `data_path("pyvista/nut.ply")` (see `data/*/README.md` for where each
+/// file comes from and its licence).
+pub fn data_path(relative: &str) -> std::path::PathBuf {
+    std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+        .join("data")
+        .join(relative)
+}
