@@ -54,3 +54,27 @@ fn stacked_prisms_with_large_caps() {
         );
     }
 }
+
+#[test]
+fn large_retriangulated_facet_stays_valid() {
+    // The triangle variant: a 48-gon prism's side is cracked by the other
+    // prism's vertices (offset by half a step), so the quads become
+    // polygons to re-triangulate, flipped towards Delaunay.
+    let n = 48;
+    let a = topology::triangulate_mesh(&prism(n, 0.0, 1.0));
+    let mut b = prism(n, 1.0, 2.0);
+    for p in &mut b.vertices {
+        let a = std::f64::consts::PI / n as f64;
+        let (s, c) = a.sin_cos();
+        *p = [c * p[0] - s * p[1], s * p[0] + c * p[1], p[2]];
+    }
+    let b = topology::triangulate_mesh(&b);
+    let raw = boolean_3d::boolean_triangles(&a, &b, BooleanOp::Union)
+        .unwrap()
+        .mesh;
+    let out = smooth::smooth_triangles(&raw, &SmoothOptions::new(1e-6)).unwrap();
+    smooth::sanity_check_triangles(&out.shape, 1e-6).unwrap();
+    assert!(!out.report.budget_hit);
+    let v = out.shape.signed_volume();
+    assert!((v - raw.signed_volume()).abs() < 1e-6, "{v}");
+}
