@@ -180,11 +180,15 @@ fn in_interior(
     pos: &[Point3],
     plane: &Plane,
     f: &[HalfEdge],
+    reach: &(Point3, Point3),
     a: Point3,
     b: Point3,
     delta: f64,
 ) -> bool {
     let m = lerp(a, b, 0.5);
+    if (0..3).any(|k| m[k] < reach.0[k] || m[k] > reach.1[k]) {
+        return false; // its projection misses the facet's projection
+    }
     let lim = 0.25 * delta * delta;
     let on_boundary = f
         .iter()
@@ -226,6 +230,17 @@ fn cancel_pair(
     let in1: HashSet<(u32, u32)> = f1.iter().map(|g| (g.start, g.end)).collect();
     let in2: HashSet<(u32, u32)> = f2.iter().map(|g| (g.start, g.end)).collect();
     let counteracts = |h: &HalfEdge, other: &HashSet<(u32, u32)>| other.contains(&(h.end, h.start));
+    // A mid-point within delta of a facet's plane whose projection lies in
+    // the facet's projection is inside the facet's box grown by delta plus
+    // the facet's largest vertex distance from its plane.
+    let reach = |p: &Plane, f: &[HalfEdge]| {
+        let warp = f
+            .iter()
+            .map(|h| p.distance(pos[h.start as usize]).abs())
+            .fold(0.0, f64::max);
+        grown_box(f.iter().map(|h| pos[h.start as usize]), delta + warp)
+    };
+    let (reach1, reach2) = (reach(&p1, f1), reach(&p2, f2));
     // Potentially swappable: (facet-local index, from f1?)
     let mut cand: Vec<(usize, bool)> = Vec::new();
     for (k, h) in f1.iter().enumerate() {
@@ -233,7 +248,7 @@ fn cancel_pair(
             continue;
         }
         let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
-        if counteracts(h, &in2) || in_interior(pos, &p2, f2, a, b, delta) {
+        if counteracts(h, &in2) || in_interior(pos, &p2, f2, &reach2, a, b, delta) {
             cand.push((k, true));
         }
     }
@@ -242,7 +257,7 @@ fn cancel_pair(
             continue;
         }
         let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
-        if in_interior(pos, &p1, f1, a, b, delta) {
+        if in_interior(pos, &p1, f1, &reach1, a, b, delta) {
             cand.push((k, false));
         }
     }
