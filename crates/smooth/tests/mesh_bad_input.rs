@@ -106,3 +106,31 @@ fn empty_and_clean_meshes_pass_through() {
     let out = smooth_mesh(&m, &SmoothOptions::new(0.0)).unwrap();
     assert_eq!(out.shape, m);
 }
+
+#[test]
+fn a_tiny_budget_stops_early_with_a_valid_shape_and_says_so() {
+    // Two unit cubes stacked with a 1e-9 gap: merging alone is 4
+    // adjustments, so a budget of 2 stops the loops that follow.
+    let (mut v, mut f) = (Vec::new(), Vec::new());
+    test_support::shapes::push_box(&mut v, &mut f, [0.0; 3], [1.0; 3], false);
+    test_support::shapes::push_box(
+        &mut v,
+        &mut f,
+        [0.0, 0.0, 1.0 + 1e-9],
+        [1.0, 1.0, 2.0],
+        false,
+    );
+    let m = topology::PolygonMesh::new(v, f);
+    let o = SmoothOptions {
+        tolerance: 1e-6,
+        budget: Some(2),
+    };
+    let out = smooth_mesh(&m, &o).unwrap();
+    assert!(out.report.budget_hit);
+    out.shape.check_topology().unwrap();
+    // The default budget is never hit: the shared face cancels.
+    let out = smooth_mesh(&m, &SmoothOptions::new(1e-6)).unwrap();
+    assert!(!out.report.budget_hit);
+    assert_eq!(out.report.counts.facets_cancelled, 1);
+    assert!(out.shape.manifold_report().unwrap().is_two_manifold());
+}

@@ -10,7 +10,7 @@ use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::plane::{best_fit_plane, facet_normal, Plane};
 use crate::mesh::structure::Work;
 use crate::SmoothCounts;
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use topology::{HalfEdge, Point3};
 
 /// Removes the facet's zero-length half-edges (each balances itself) and
@@ -71,43 +71,77 @@ pub(crate) fn cancel_all(w: &mut Work, counts: &mut SmoothCounts) {
 }
 
 /// The maximal subset of the directed edges `(from, to)` that forms
-/// closed loops (every vertex entered as often as left): repeatedly drop
-/// edges that cannot lie on a cycle (from a vertex nothing enters, or to a
-/// vertex nothing leaves) and take out one cycle by walking. What remains
-/// when no cycle is left is acyclic, so no larger balanced subset exists
-/// (the difference of two balanced sets is balanced and would hold a
-/// cycle).
+/// closed loops (every vertex entered as often as left): peel the edges
+/// that cannot lie on a cycle (from a vertex nothing enters, or to a
+/// vertex nothing leaves), walk from a remaining edge until a vertex
+/// repeats, take that cycle out, and repeat. What remains when no edge is
+/// left after peeling is acyclic, so no larger balanced subset exists (the
+/// difference of two balanced subsets is balanced and would hold a
+/// cycle). Peeling is incremental (a queue of vertices whose in- or
+/// out-degree dropped to zero), so the whole is near-linear.
 pub(crate) fn maximal_loops(edges: &[(u32, u32)]) -> Vec<bool> {
     let n = edges.len();
     let mut alive = vec![true; n];
     let mut chosen = vec![false; n];
+    let mut outs: HashMap<u32, Vec<usize>> = HashMap::new();
+    let mut ins: HashMap<u32, Vec<usize>> = HashMap::new();
+    let mut out_deg: HashMap<u32, usize> = HashMap::new();
+    let mut in_deg: HashMap<u32, usize> = HashMap::new();
+    for (i, &(a, b)) in edges.iter().enumerate() {
+        outs.entry(a).or_default().push(i);
+        ins.entry(b).or_default().push(i);
+        *out_deg.entry(a).or_default() += 1;
+        *in_deg.entry(b).or_default() += 1;
+        out_deg.entry(b).or_default();
+        in_deg.entry(a).or_default();
+    }
+    let mut queue: Vec<u32> = {
+        let mut q: Vec<u32> = out_deg.keys().copied().collect();
+        q.sort_unstable();
+        q
+    };
+    // Removes edge i from the live graph, queueing its ends.
+    let remove = |i: usize,
+                  alive: &mut [bool],
+                  out_deg: &mut HashMap<u32, usize>,
+                  in_deg: &mut HashMap<u32, usize>,
+                  queue: &mut Vec<u32>| {
+        alive[i] = false;
+        let (a, b) = edges[i];
+        *out_deg.get_mut(&a).expect("vertex of an edge") -= 1;
+        *in_deg.get_mut(&b).expect("vertex of an edge") -= 1;
+        queue.push(a);
+        queue.push(b);
+    };
+    let mut cursor: HashMap<u32, usize> = HashMap::new();
+    let mut next_start = 0;
     loop {
-        // Peel edges that cannot be on a cycle.
-        loop {
-            let mut ins: HashMap<u32, u32> = HashMap::new();
-            let mut outs: HashMap<u32, u32> = HashMap::new();
-            for (i, &(a, b)) in edges.iter().enumerate() {
-                if alive[i] {
-                    *outs.entry(a).or_default() += 1;
-                    *ins.entry(b).or_default() += 1;
+        // Peel.
+        while let Some(v) = queue.pop() {
+            if in_deg[&v] == 0 {
+                for &i in outs.get(&v).map(Vec::as_slice).unwrap_or(&[]) {
+                    if alive[i] {
+                        remove(i, &mut alive, &mut out_deg, &mut in_deg, &mut queue);
+                    }
                 }
             }
-            let mut peeled = false;
-            for (i, &(a, b)) in edges.iter().enumerate() {
-                if alive[i] && (!ins.contains_key(&a) || !outs.contains_key(&b)) {
-                    alive[i] = false;
-                    peeled = true;
+            if out_deg[&v] == 0 {
+                for &i in ins.get(&v).map(Vec::as_slice).unwrap_or(&[]) {
+                    if alive[i] {
+                        remove(i, &mut alive, &mut out_deg, &mut in_deg, &mut queue);
+                    }
                 }
-            }
-            if !peeled {
-                break;
             }
         }
-        let Some(first) = (0..n).find(|&i| alive[i]) else {
+        while next_start < n && !alive[next_start] {
+            next_start += 1;
+        }
+        if next_start == n {
             return chosen;
-        };
+        }
         // Every live vertex has a live out-edge: walk until a vertex
         // repeats, then take the cycle from its first visit.
+        let first = next_start;
         let mut path: Vec<usize> = vec![first];
         let mut seen: HashMap<u32, usize> = HashMap::new();
         seen.insert(edges[first].0, 0);
@@ -115,15 +149,21 @@ pub(crate) fn maximal_loops(edges: &[(u32, u32)]) -> Vec<bool> {
         loop {
             if let Some(&k) = seen.get(&at) {
                 for &i in &path[k..] {
-                    alive[i] = false;
                     chosen[i] = true;
+                    remove(i, &mut alive, &mut out_deg, &mut in_deg, &mut queue);
                 }
                 break;
             }
             seen.insert(at, path.len());
-            let Some(next) = (0..n).find(|&i| alive[i] && edges[i].0 == at) else {
-                // Unreachable after peeling; stop this walk safely.
-                alive[path[path.len() - 1]] = false;
+            let list = outs.get(&at).map(Vec::as_slice).unwrap_or(&[]);
+            let c = cursor.entry(at).or_default();
+            while *c < list.len() && !alive[list[*c]] {
+                *c += 1;
+            }
+            let Some(&next) = list.get(*c) else {
+                // Not reachable after peeling; drop the edge into `at`.
+                let last = path[path.len() - 1];
+                remove(last, &mut alive, &mut out_deg, &mut in_deg, &mut queue);
                 break;
             };
             path.push(next);
@@ -140,11 +180,15 @@ fn in_interior(
     pos: &[Point3],
     plane: &Plane,
     f: &[HalfEdge],
+    reach: &(Point3, Point3),
     a: Point3,
     b: Point3,
     delta: f64,
 ) -> bool {
     let m = lerp(a, b, 0.5);
+    if (0..3).any(|k| m[k] < reach.0[k] || m[k] > reach.1[k]) {
+        return false; // its projection misses the facet's projection
+    }
     let lim = 0.25 * delta * delta;
     let on_boundary = f
         .iter()
@@ -183,9 +227,20 @@ fn cancel_pair(
         p.distance(pos[h.start as usize]).abs() <= delta
             && p.distance(pos[h.end as usize]).abs() <= delta
     };
-    let counteracts = |h: &HalfEdge, other: &[HalfEdge]| {
-        other.iter().any(|g| g.start == h.end && g.end == h.start)
+    let in1: HashSet<(u32, u32)> = f1.iter().map(|g| (g.start, g.end)).collect();
+    let in2: HashSet<(u32, u32)> = f2.iter().map(|g| (g.start, g.end)).collect();
+    let counteracts = |h: &HalfEdge, other: &HashSet<(u32, u32)>| other.contains(&(h.end, h.start));
+    // A mid-point within delta of a facet's plane whose projection lies in
+    // the facet's projection is inside the facet's box grown by delta plus
+    // the facet's largest vertex distance from its plane.
+    let reach = |p: &Plane, f: &[HalfEdge]| {
+        let warp = f
+            .iter()
+            .map(|h| p.distance(pos[h.start as usize]).abs())
+            .fold(0.0, f64::max);
+        grown_box(f.iter().map(|h| pos[h.start as usize]), delta + warp)
     };
+    let (reach1, reach2) = (reach(&p1, f1), reach(&p2, f2));
     // Potentially swappable: (facet-local index, from f1?)
     let mut cand: Vec<(usize, bool)> = Vec::new();
     for (k, h) in f1.iter().enumerate() {
@@ -193,16 +248,16 @@ fn cancel_pair(
             continue;
         }
         let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
-        if counteracts(h, f2) || in_interior(pos, &p2, f2, a, b, delta) {
+        if counteracts(h, &in2) || in_interior(pos, &p2, f2, &reach2, a, b, delta) {
             cand.push((k, true));
         }
     }
     for (k, h) in f2.iter().enumerate() {
-        if !near(&p1, h) || counteracts(h, f1) {
+        if !near(&p1, h) || counteracts(h, &in1) {
             continue;
         }
         let (a, b) = (pos[h.start as usize], pos[h.end as usize]);
-        if in_interior(pos, &p1, f1, a, b, delta) {
+        if in_interior(pos, &p1, f1, &reach1, a, b, delta) {
             cand.push((k, false));
         }
     }
@@ -294,13 +349,11 @@ pub(crate) fn facet_cancellation_pass(
             id: i as u32,
         });
     }
-    let mut pairs: Vec<(usize, usize)> = Vec::new();
-    BoxIndex::new(boxes).for_each_pair(|i, j| {
+    let mut pairs: Vec<(usize, usize)> = BoxIndex::new(boxes).pairs_where(|i, j| {
         let (i, j) = (i as usize, j as usize);
-        if let (Some(ni), Some(nj)) = (normals[i], normals[j]) {
-            if dot(ni, nj) < 0.0 {
-                pairs.push((i, j));
-            }
+        match (normals[i], normals[j]) {
+            (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => Some((i, j)),
+            _ => None,
         }
     });
     pairs.sort_unstable();
@@ -330,6 +383,42 @@ mod tests {
         assert_eq!(f, vec![h(1, 2), h(2, 0), h(0, 1)]);
         assert_eq!(c.zero_length_edges_removed, 1);
         assert_eq!(c.half_edges_cancelled, 1);
+    }
+
+    proptest::proptest! {
+        /// Random multigraphs: the chosen edges are balanced at every
+        /// vertex and the rest holds no cycle (so the choice is maximal).
+        #[test]
+        fn maximal_loops_is_balanced_and_maximal(
+            edges in proptest::collection::vec((0u32..6, 0u32..6), 0..30),
+        ) {
+            let chosen = maximal_loops(&edges);
+            let mut balance = HashMap::new();
+            for (e, &c) in edges.iter().zip(&chosen) {
+                if c {
+                    *balance.entry(e.0).or_insert(0i32) += 1;
+                    *balance.entry(e.1).or_insert(0i32) -= 1;
+                }
+            }
+            proptest::prop_assert!(balance.values().all(|&b| b == 0));
+            // The rest is acyclic: repeatedly drop edges from vertices
+            // nothing enters; everything must go.
+            let mut rest: Vec<(u32, u32)> = edges
+                .iter()
+                .zip(&chosen)
+                .filter(|(_, &c)| !c)
+                .map(|(e, _)| *e)
+                .collect();
+            loop {
+                let before = rest.len();
+                let ends: Vec<u32> = rest.iter().map(|e| e.1).collect();
+                rest.retain(|e| ends.contains(&e.0));
+                if rest.len() == before {
+                    break;
+                }
+            }
+            proptest::prop_assert!(rest.is_empty(), "a cycle left: {:?}", rest);
+        }
     }
 
     #[test]

@@ -9,6 +9,7 @@ use crate::mesh::geom::{dist2, lerp, point_segment, segment_segment};
 use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::structure::{Origin, Work};
 use crate::{merge_vertices, SmoothCounts};
+use rayon::prelude::*;
 use std::collections::HashMap;
 use topology::Point3;
 
@@ -125,32 +126,35 @@ pub(crate) fn crack_between_edges(
         .collect();
     let index = BoxIndex::new(boxes);
     // (edge i, edge j, crack point, the four end points)
-    let mut found: Vec<(usize, usize, Point3, [Point3; 4])> = Vec::new();
-    index.for_each_pair(|i, j| {
+    let w_ref: &Work = w;
+    let roots_ref: &Roots = roots;
+    let mut found: Vec<(usize, usize, Point3, [Point3; 4])> = index.pairs_where(|i, j| {
         let (i, j) = (i as usize, j as usize);
         let (a, b) = edges[i];
-        let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
+        let (pa, pb) = (w_ref.pos[a as usize], w_ref.pos[b as usize]);
         let (c, d) = edges[j];
         if c == a || c == b || d == a || d == b {
-            return;
+            return None;
         }
-        let (pc, pd) = (w.pos[c as usize], w.pos[d as usize]);
+        let (pc, pd) = (w_ref.pos[c as usize], w_ref.pos[d as usize]);
         let (s, t, c1, c2) = segment_segment(pa, pb, pc, pd);
         if !(s > 0.0 && s < 1.0 && t > 0.0 && t < 1.0) || dist2(c1, c2) > d2max {
-            return;
+            return None;
         }
         let near_end = point_segment(pa, pc, pd).1 <= d2max
             || point_segment(pb, pc, pd).1 <= d2max
             || point_segment(pc, pa, pb).1 <= d2max
             || point_segment(pd, pa, pb).1 <= d2max;
         if near_end {
-            return;
+            return None;
         }
         let p = lerp(c1, c2, 0.5);
-        if !may_split(w, roots, edges[i], p, reach) || !may_split(w, roots, edges[j], p, reach) {
-            return;
+        if !may_split(w_ref, roots_ref, edges[i], p, reach)
+            || !may_split(w_ref, roots_ref, edges[j], p, reach)
+        {
+            return None;
         }
-        found.push((i, j, p, [pa, pb, pc, pd]));
+        Some((i, j, p, [pa, pb, pc, pd]))
     });
     found.sort_by_key(|f| (f.0, f.1));
     if found.is_empty() {
@@ -268,32 +272,15 @@ pub(crate) fn crack_by_vertex(
         }
         let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
         let mut inserted = 0u64;
-        // The vertices in each edge's grown box: one tree join when every
-        // edge is to be checked, queries for the few sub-edges after.
-        let near: Vec<Vec<u32>> = if rounds == 0 {
-            let boxes = todo
-                .iter()
-                .enumerate()
-                .map(|(i, &(a, b))| {
-                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
-                    IdBox {
-                        lo,
-                        hi,
-                        id: i as u32,
-                    }
-                })
-                .collect();
-            let mut near = vec![Vec::new(); todo.len()];
-            BoxIndex::new(boxes).for_each_point_inside(&points, |e, v| near[e as usize].push(v));
-            near
-        } else {
-            todo.iter()
-                .map(|&(a, b)| {
-                    let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
-                    index.meeting(lo, hi)
-                })
-                .collect()
-        };
+        // The vertices in each edge's grown box (queries in parallel,
+        // answers in edge order).
+        let near: Vec<Vec<u32>> = todo
+            .par_iter()
+            .map(|&(a, b)| {
+                let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
+                index.meeting(lo, hi)
+            })
+            .collect();
         for (&(a, b), near) in todo.iter().zip(&near) {
             let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
             let l2 = dist2(pa, pb);

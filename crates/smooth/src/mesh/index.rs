@@ -7,7 +7,11 @@
 //! R*-tree crate was measured here first: its bulk loading alone took
 //! longer than the Boolean the smoothing follows.)
 
+use rayon::prelude::*;
 use topology::Point3;
+
+/// Queries per parallel task.
+const CHUNK: usize = 2048;
 
 /// A box with an id.
 pub(crate) struct IdBox {
@@ -147,35 +151,35 @@ impl BoxIndex {
         }
     }
 
-    /// Calls `f(i, j)` once for every pair of ids `i < j` of boxes that
-    /// meet, in no particular order (queries run in the tree's leaf order,
-    /// for locality; callers sort what they keep).
-    pub fn for_each_pair(&self, mut f: impl FnMut(u32, u32)) {
-        for &k in &self.order {
-            let b = &self.boxes[k as usize];
-            self.visit(&b.lo, &b.hi, |j| {
-                if b.id < j {
-                    f(b.id, j);
+    /// `f(i, j)` for every pair of ids `i < j` of boxes that meet, keeping
+    /// the `Some` answers. The queries run in parallel over chunks of the
+    /// tree's leaf order (for locality); the answers come in chunk order,
+    /// the same for any thread count.
+    pub fn pairs_where<T: Send>(&self, f: impl Fn(u32, u32) -> Option<T> + Sync) -> Vec<T> {
+        self.order
+            .par_chunks(CHUNK)
+            .map(|chunk| {
+                let mut out = Vec::new();
+                for &k in chunk {
+                    let b = &self.boxes[k as usize];
+                    self.visit(&b.lo, &b.hi, |j| {
+                        if b.id < j {
+                            out.extend(f(b.id, j));
+                        }
+                    });
                 }
-            });
-        }
+                out
+            })
+            .flatten_iter()
+            .collect()
     }
 
     /// Every pair of ids `(i, j)`, `i < j`, of boxes that meet, sorted.
     #[cfg(test)]
     pub fn pairs(&self) -> Vec<(u32, u32)> {
-        let mut p = Vec::new();
-        self.for_each_pair(|i, j| p.push((i, j)));
+        let mut p = self.pairs_where(|i, j| Some((i, j)));
         p.sort_unstable();
         p
-    }
-
-    /// Calls `f(box id, point id)` for every point inside a box, in the
-    /// order of `points`.
-    pub fn for_each_point_inside(&self, points: &[(Point3, u32)], mut f: impl FnMut(u32, u32)) {
-        for &(q, v) in points {
-            self.visit(&q, &q, |b| f(b, v));
-        }
     }
 
     /// The ids of the boxes meeting `[lo, hi]` (closed), sorted.
@@ -237,7 +241,9 @@ mod tests {
             }
             want.sort_unstable();
             let mut got = Vec::new();
-            index.for_each_point_inside(&pts, |b, v| got.push((b, v)));
+            for &(q, v) in &pts {
+                got.extend(index.meeting(q, q).into_iter().map(|b| (b, v)));
+            }
             got.sort_unstable();
             assert_eq!(got, want);
         }

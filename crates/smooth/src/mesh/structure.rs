@@ -8,6 +8,7 @@
 
 use crate::mesh::geom::projection;
 use crate::SmoothError;
+use rayon::prelude::*;
 use std::collections::HashMap;
 use topology::{Facet, HalfEdge, Point3, PolygonMesh};
 
@@ -80,7 +81,7 @@ impl Work {
             .filter(|h| h.start != h.end)
             .map(|&h| edge_key(h))
             .collect();
-        e.sort_unstable();
+        e.par_sort_unstable();
         e.dedup();
         e
     }

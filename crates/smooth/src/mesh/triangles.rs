@@ -7,7 +7,7 @@
 use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
 use crate::{SmoothError, SmoothOptions, Smoothed};
-use std::collections::HashMap;
+use std::collections::{HashMap, HashSet};
 use topology::{triangulate_facet, HalfEdge, Point3, TriangleMesh};
 
 /// Twice the signed area of the 2D triangle `a b c`.
@@ -46,11 +46,12 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
         return;
     };
     let p2 = |v: u32| plane.project(pos[v as usize]);
-    let on_boundary = |a: u32, b: u32| {
-        boundary
-            .iter()
-            .any(|h| (h.start == a && h.end == b) || (h.start == b && h.end == a))
-    };
+    let boundary_edges: HashSet<(u32, u32)> = boundary
+        .iter()
+        .map(|h| (h.start.min(h.end), h.start.max(h.end)))
+        .collect();
+    // `u < v` where it is called.
+    let on_boundary = |u: u32, v: u32| boundary_edges.contains(&(u, v));
     let cap = 4 * tris.len() * tris.len();
     let mut flips = 0;
     // Directed half-edge -> (triangle, corner of its start).
@@ -74,6 +75,9 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
                 };
                 if t2 == t1 || u > v || on_boundary(u, v) {
                     continue;
+                }
+                if tris[t2][k2] != v || tris[t2][(k2 + 1) % 3] != u {
+                    continue; // a repeated half-edge: the map kept another
                 }
                 let p = tris[t1][(k1 + 2) % 3];
                 let q = tris[t2][(k2 + 2) % 3];

@@ -1,0 +1,33 @@
+//! Times smoothing against the Boolean it follows: the union of two offset
+//! icospheres (`LEVEL` subdivisions, default 6: 81,920 triangles each) by
+//! `boolean_triangles`, then `smooth_triangles` at 1e-9, in one process.
+//! The figures of `docs/algorithms/smooth.md` come from
+//! `CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16
+//! cargo run --release -p smooth --example smooth_timing -- LEVEL`.
+//! (Criterion benches beside the peers live in `benches/`.)
+use boolean_3d::{boolean_triangles, BooleanOp};
+use smooth::{smooth_triangles, SmoothOptions};
+use std::time::Instant;
+use test_support::shapes::icosphere;
+
+fn main() {
+    let l: u32 = std::env::args()
+        .nth(1)
+        .map(|s| s.parse().unwrap())
+        .unwrap_or(6);
+    let a = icosphere([0.0; 3], 1.0, l);
+    let b = icosphere([0.3, 0.2, 0.1], 1.0, l);
+    let t = Instant::now();
+    let r = boolean_triangles(&a, &b, BooleanOp::Union).unwrap().mesh;
+    let tb = t.elapsed();
+    let t = Instant::now();
+    let _s = smooth_triangles(&r, &SmoothOptions::new(1e-9)).unwrap();
+    let ts = t.elapsed();
+    println!(
+        "operand {} boolean {:?} smooth {:?} ({:.0}%)",
+        a.triangles.len(),
+        tb,
+        ts,
+        100.0 * ts.as_secs_f64() / tb.as_secs_f64()
+    );
+}
