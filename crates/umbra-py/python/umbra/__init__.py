@@ -53,7 +53,7 @@ PathLike = Union[str, "os.PathLike[str]"]
 def _shapely() -> Any:
     """The shapely module, or None when it is not installed."""
     try:
-        import shapely
+        import shapely  # type: ignore[import-untyped, unused-ignore]
     except ImportError:
         return None
     return shapely
@@ -130,7 +130,7 @@ def read(path: PathLike, *, check: bool = True, keep_orientation: bool = False) 
     """
     kind, value = _umbra.read(os.fspath(path), check=check, keep_orientation=keep_orientation)
     if kind == "polygons" and _shapely() is not None:
-        return _to_shapely(value)
+        return _to_shapely(value)  # type: ignore[arg-type]
     return value
 
 
