@@ -42,7 +42,9 @@ pub fn points<const K: usize>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ve
     let raw = as_array(obj, None, what, &expected)?;
     let (kind, name) = kind_of(&raw)?;
     if !matches!(kind, 'f' | 'i' | 'u') {
-        return Err(error(format!("{what}: expected {expected}, got dtype {name}")));
+        return Err(error(format!(
+            "{what}: expected {expected}, got dtype {name}"
+        )));
     }
     let shape = raw.shape().to_vec();
     let empty_list = shape == [0];
@@ -57,9 +59,7 @@ pub fn points<const K: usize>(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Ve
         .cast_into::<numpy::PyArrayDyn<f64>>()
         .map_err(|_| error(format!("{what}: expected {expected}")))?;
     let ro = arr.readonly();
-    let flat = ro
-        .as_slice()
-        .map_err(|e| error(format!("{what}: {e}")))?;
+    let flat = ro.as_slice().map_err(|e| error(format!("{what}: {e}")))?;
     Ok(flat
         .chunks_exact(K)
         .map(|c| std::array::from_fn(|i| c[i]))

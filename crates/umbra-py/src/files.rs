@@ -47,10 +47,19 @@ pub fn read<'py>(
         }
     })?;
     match content {
-        Content::Mesh(m) => PyTuple::new(py, ["mesh".into_pyobject(py)?.into_any(), Mesh::wrap(py, m)?.into_any()]),
+        Content::Mesh(m) => PyTuple::new(
+            py,
+            [
+                "mesh".into_pyobject(py)?.into_any(),
+                Mesh::wrap(py, m)?.into_any(),
+            ],
+        ),
         Content::Polygons(p) => PyTuple::new(
             py,
-            ["polygons".into_pyobject(py)?.into_any(), polygons_to_py(py, &p)?],
+            [
+                "polygons".into_pyobject(py)?.into_any(),
+                polygons_to_py(py, &p)?,
+            ],
         ),
     }
 }
@@ -58,9 +67,16 @@ pub fn read<'py>(
 /// Writes a mesh; STL and PLY binary unless `ascii`.
 #[pyfunction]
 #[pyo3(signature = (mesh, path, *, ascii = false))]
-pub fn write_mesh(py: Python<'_>, mesh: &Bound<'_, Mesh>, path: PathBuf, ascii: bool) -> PyResult<()> {
+pub fn write_mesh(
+    py: Python<'_>,
+    mesh: &Bound<'_, Mesh>,
+    path: PathBuf,
+    ascii: bool,
+) -> PyResult<()> {
     let m = &mesh.get().mesh;
-    run(py, || write_mesh_with(&path, m, MeshWriteOptions { text: ascii }))
+    run(py, || {
+        write_mesh_with(&path, m, MeshWriteOptions { text: ascii })
+    })
 }
 
 /// Writes polygons (the plain Python form); returns the number of holes
@@ -74,5 +90,7 @@ pub fn write_polygons(
     keep_orientation: bool,
 ) -> PyResult<usize> {
     let set = crate::planar::input_set(py, polygons, keep_orientation, "geom")?;
-    run(py, || write_polygon_set(&path, &set, orientation(keep_orientation)))
+    run(py, || {
+        write_polygon_set(&path, &set, orientation(keep_orientation))
+    })
 }

@@ -56,9 +56,13 @@ fn facets_of(faces: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<Facet>> {
                         shape_text(&shape)
                     )));
                 }
-                return Ok(flat.chunks_exact(cols.max(1)).map(Facet::from_loop).collect());
+                return Ok(flat
+                    .chunks_exact(cols.max(1))
+                    .map(Facet::from_loop)
+                    .collect());
             }
-            if shape.len() == 1 && arr.getattr("dtype")?.getattr("kind")?.extract::<String>()? != "O"
+            if shape.len() == 1
+                && arr.getattr("dtype")?.getattr("kind")?.extract::<String>()? != "O"
             {
                 return Err(error(format!(
                     "faces: expected {expected}, got shape {}",
@@ -75,7 +79,9 @@ fn facets_of(faces: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<Facet>> {
         let entry = entry?;
         let what = format!("faces[{i}]");
         if is_integer(&entry) {
-            return Err(error(format!("faces: expected {expected}, got an integer at {what}")));
+            return Err(error(format!(
+                "faces: expected {expected}, got an integer at {what}"
+            )));
         }
         let first = entry
             .get_item(0)
@@ -142,7 +148,12 @@ impl Mesh {
     #[getter]
     fn faces<'py>(&self, py: Python<'py>) -> PyResult<Bound<'py, PyAny>> {
         if let Some(t) = as_triangle_mesh(&self.mesh) {
-            let flat: Vec<i64> = t.triangles.iter().flatten().map(|&i| i64::from(i)).collect();
+            let flat: Vec<i64> = t
+                .triangles
+                .iter()
+                .flatten()
+                .map(|&i| i64::from(i))
+                .collect();
             return index_matrix(py, flat, t.triangles.len(), 3);
         }
         let list = PyList::empty(py);
@@ -304,10 +315,7 @@ impl Mesh {
     fn __reduce__<'py>(slf: &Bound<'py, Self>) -> PyResult<Bound<'py, PyTuple>> {
         let py = slf.py();
         let ctor = py.get_type::<Mesh>().getattr("from_arrays")?;
-        PyTuple::new(
-            py,
-            [ctor, slf.get().to_arrays(py)?.into_any()],
-        )
+        PyTuple::new(py, [ctor, slf.get().to_arrays(py)?.into_any()])
     }
 
     /// Meshes are equal when their vertices (bit for bit, so never with a

@@ -136,7 +136,9 @@ pub fn csg<'py>(
     triangulate: bool,
 ) -> PyResult<Bound<'py, Mesh>> {
     if !tree.is_instance_of::<PyDict>() {
-        return Err(error("tree: expected a dict (the JSON form of `umbra csg`)"));
+        return Err(error(
+            "tree: expected a dict (the JSON form of `umbra csg`)",
+        ));
     }
     let kwargs = PyDict::new(py);
     kwargs.set_item("allow_nan", false)?;
