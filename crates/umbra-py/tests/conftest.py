@@ -44,7 +44,7 @@ def cli_binary():
     """The `umbra` binary: $UMBRA_CLI, or a build in the workspace's target
     directory, or on PATH; None when there is none."""
     env = os.environ.get("UMBRA_CLI")
-    if env:
+    if env and os.path.isfile(env):
         return env
     for profile in ("release", "debug"):
         p = REPO / "target" / profile / "umbra"
