@@ -49,7 +49,7 @@ def test_random_polygons_give_valid_results(seed):
         umbra.simplify(out)
 
 
-GARBAGE = [
+GARBAGE: list = [
     None, 3, 2.5, "abc", b"\x00\x01", [], [[]], [[[]]], [None], [[1, 2]], [[1, 2, "x"]],
     np.zeros((2, 2, 2)), np.array([[np.nan, 0, 0]]), np.full((3, 3), 1e308),
     [[0, 0, 0], [1, 1]], {"a": 1}, np.array([[1 + 2j, 0, 0]]),
