@@ -175,10 +175,10 @@ pub fn points_array<'py, const K: usize>(
         .into_any())
 }
 
-/// An int64 array of shape `(rows, cols)` from row-major indices.
-pub fn index_matrix<'py>(
+/// An array of shape `(rows, cols)` from row-major values.
+pub fn index_matrix<'py, T: numpy::Element>(
     py: Python<'py>,
-    flat: Vec<i64>,
+    flat: Vec<T>,
     rows: usize,
     cols: usize,
 ) -> PyResult<Bound<'py, PyAny>> {

@@ -57,7 +57,7 @@ class Mesh:
         """The report of ``umbra check --json`` (without ``file``)."""
     def to_arrays(
         self,
-    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.int64], npt.NDArray[np.int64]]:
+    ) -> Tuple[npt.NDArray[np.float64], npt.NDArray[np.uint32], npt.NDArray[np.int64]]:
         """(vertices, half_edges (h, 2), facet_offsets (m + 1))."""
     @staticmethod
     def from_arrays(
