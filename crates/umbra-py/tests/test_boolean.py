@@ -109,3 +109,14 @@ def test_csg_tree_dict():
 def test_bad_csg_trees(tree, match):
     with pytest.raises(umbra.UmbraError, match=match):
         umbra.csg(tree)
+
+
+def test_csg_file_leaves_are_read_from_the_working_directory(tmp_path, monkeypatch):
+    umbra.write(cube((0.0, 0.0, 0.0), 2.0), tmp_path / "block.off")
+    monkeypatch.chdir(tmp_path)
+    tree = {
+        "op": "difference",
+        "children": [{"file": "block.off"}, {"box": {"size": 1}, "translate": [1.5, 1.5, 1.5]}],
+    }
+    m = umbra.csg(tree)
+    assert m.is_valid() and close(m.volume(), 8.0 - 0.125)
