@@ -1,0 +1,232 @@
+"""Umbra: topologically robust Boolean operations on polygons and polyhedra
+in plain float64 arithmetic, after the dissertation "Towards robust inexact
+geometric computation".
+
+Any input that satisfies the closure constraints (section 4.2) yields output
+that satisfies them too, whatever floating-point rounding does.
+
+3D: ``Mesh`` (numpy arrays in and out), ``boolean``, ``union_all``,
+``csg`` (the JSON tree form of ``umbra csg`` as a dict), ``Mesh.from_trimesh``
+and ``Mesh.to_trimesh``.
+
+2D: ``boolean_2d`` and ``simplify`` on shapely geometries (Polygon,
+MultiPolygon, or a GeometryCollection of those), returned as shapely
+geometries; without shapely, on the plain form: a list of polygons, each a
+list of rings (exterior first, then holes), each ring an (k, 2) float64
+array.
+
+Files: ``read`` and ``write`` for every format of the command-line tool
+(.obj .off .stl .ply meshes; .3mf .glb meshes written only; .wkt .geojson
+polygons; .svg polygons written only).
+
+Every error is an ``UmbraError`` (a ``ValueError``) with the command-line
+tool's one-line message. The GIL is released while umbra computes, so
+threads run operations in parallel.
+"""
+
+from __future__ import annotations
+
+import os
+from typing import Any, Iterable, List, Union
+
+import numpy as np
+
+from . import _umbra
+from ._umbra import Mesh, UmbraError, __version__
+
+__all__ = [
+    "Mesh",
+    "UmbraError",
+    "boolean",
+    "boolean_2d",
+    "csg",
+    "read",
+    "simplify",
+    "union_all",
+    "write",
+    "__version__",
+]
+
+PathLike = Union[str, "os.PathLike[str]"]
+
+
+def _shapely() -> Any:
+    """The shapely module, or None when it is not installed."""
+    try:
+        import shapely  # type: ignore[import-untyped, unused-ignore]
+    except ImportError:
+        return None
+    return shapely
+
+
+def _is_shapely(geom: Any) -> bool:
+    shapely = _shapely()
+    return shapely is not None and isinstance(geom, shapely.Geometry)
+
+
+def _ring(coords: Any, what: str) -> np.ndarray:
+    arr = np.asarray(coords, dtype=np.float64)
+    if arr.ndim != 2 or arr.shape[1] != 2:
+        raise UmbraError(
+            f"{what}: unsupported geometry: coordinates with Z or M values "
+            "(expected 2D polygons)"
+        )
+    return arr
+
+
+def _from_shapely(geom: Any, what: str) -> List[List[np.ndarray]]:
+    """A shapely geometry in the plain form."""
+    shapely = _shapely()
+    if geom.is_empty:
+        return []
+    if geom.has_z:
+        raise UmbraError(
+            f"{what}: unsupported geometry: {geom.geom_type} with Z coordinates "
+            "(expected 2D polygons)"
+        )
+    if isinstance(geom, shapely.Polygon):
+        return [
+            [_ring(geom.exterior.coords, what)]
+            + [_ring(r.coords, what) for r in geom.interiors]
+        ]
+    if isinstance(geom, (shapely.MultiPolygon, shapely.GeometryCollection)):
+        out: List[List[np.ndarray]] = []
+        for g in geom.geoms:
+            out.extend(_from_shapely(g, what))
+        return out
+    raise UmbraError(
+        f"{what}: unsupported geometry: {geom.geom_type} "
+        "(expected Polygon, MultiPolygon or a GeometryCollection of them)"
+    )
+
+
+def _to_shapely(polygons: List[List[np.ndarray]]) -> Any:
+    """The plain form as a shapely Polygon (none or one) or MultiPolygon."""
+    shapely = _shapely()
+    parts = [shapely.Polygon(p[0], p[1:]) for p in polygons if p]
+    if not parts:
+        return shapely.Polygon()
+    if len(parts) == 1:
+        return parts[0]
+    return shapely.MultiPolygon(parts)
+
+
+def _polygons_in(geom: Any, what: str) -> Any:
+    return _from_shapely(geom, what) if _is_shapely(geom) else geom
+
+
+def read(path: PathLike, *, check: bool = True, keep_orientation: bool = False) -> Any:
+    """Read a file by its extension.
+
+    Meshes (.obj .off .stl .ply) return a ``Mesh``; STL triangles are welded
+    by exact position. With ``check=False`` an open or otherwise invalid
+    mesh (or one with NaN coordinates) is read anyway, for
+    ``Mesh.check()`` to report, like ``umbra check``.
+
+    Polygons (.wkt .geojson) return a shapely geometry when shapely is
+    installed, else the plain form (a list of polygons, each a list of
+    (k, 2) rings). Rings are read by role (exteriors counter-clockwise,
+    holes clockwise) unless ``keep_orientation``.
+    """
+    kind, value = _umbra.read(os.fspath(path), check=check, keep_orientation=keep_orientation)
+    if kind == "polygons" and _shapely() is not None:
+        return _to_shapely(value)  # type: ignore[arg-type]
+    return value
+
+
+def write(
+    shape: Any,
+    path: PathLike,
+    *,
+    ascii: bool = False,
+    keep_orientation: bool = False,
+) -> None:
+    """Write a mesh or polygons to a file of the format of its extension.
+
+    A ``Mesh`` (or a ``trimesh.Trimesh``) goes to .obj .off .stl .ply .3mf
+    .glb (STL and PLY binary unless ``ascii``; binary STL and glTF store
+    float32). Polygons (shapely or the plain form) go to .wkt .geojson
+    .svg.
+    """
+    path = os.fspath(path)
+    if type(shape).__name__ == "Trimesh" and hasattr(shape, "faces"):
+        shape = Mesh.from_trimesh(shape)
+    if isinstance(shape, Mesh):
+        _umbra.write_mesh(shape, path, ascii=ascii)
+    else:
+        _umbra.write_polygons(
+            _polygons_in(shape, "geom"), path, keep_orientation=keep_orientation
+        )
+
+
+def boolean(a: Mesh, b: Mesh, op: str, *, triangulate: bool = False) -> Mesh:
+    """The 3D Boolean ``op`` ("union", "intersection" or "difference").
+
+    The result is always topologically valid. ``triangulate=True`` runs the
+    triangle-mesh variant (section 4.8): operands are triangulated by
+    internal edges first, and the result is triangles. Both operands must
+    be valid (``Mesh.is_valid()``); otherwise ``UmbraError`` names the
+    operand and the violated constraint.
+    """
+    return _umbra.boolean(a, b, op, triangulate=triangulate)
+
+
+def union_all(meshes: Iterable[Mesh], *, triangulate: bool = False) -> Mesh:
+    """The union of every mesh, as a balanced tree of binary Booleans."""
+    return _umbra.union_all(list(meshes), triangulate=triangulate)
+
+
+def csg(tree: dict, *, triangulate: bool = False) -> Mesh:
+    """The mesh of a CSG tree in the JSON form of ``umbra csg``, as a dict.
+
+    Example: ``{"op": "difference", "children": [{"box": {"size": [2, 2, 2],
+    "center": True}}, {"cylinder": {"radius": 0.5, "height": 3, "center":
+    True}}]}``. Leaves: box, sphere, cylinder, torus, file (relative to the
+    working directory); any node may carry translate, rotate (degrees) and
+    scale. Independent branches run in parallel.
+    """
+    return _umbra.csg(tree, triangulate=triangulate)
+
+
+def boolean_2d(
+    a: Any,
+    b: Any,
+    op: str,
+    *,
+    via: str = "basic",
+    keep_orientation: bool = False,
+) -> Any:
+    """The 2D Boolean ``op`` ("union", "intersection", "difference", "xor").
+
+    ``via="basic"`` is the basic Boolean of chapter 4 (tolerant of
+    self-intersecting and inside-out operands); ``via="simplify"`` assembles
+    both boundaries and simplifies them (chapter 6), which resolves
+    self-intersections. Operands are shapely geometries or the plain form;
+    the result is a shapely Polygon or MultiPolygon when ``a`` or ``b`` is a
+    shapely geometry, else the plain form. Rings are read by role unless
+    ``keep_orientation`` (then every ring is a directed loop as written and
+    every output loop is its own polygon).
+    """
+    out = _umbra.boolean_2d(
+        _polygons_in(a, "a"),
+        _polygons_in(b, "b"),
+        op,
+        via=via,
+        keep_orientation=keep_orientation,
+    )
+    return _to_shapely(out) if _is_shapely(a) or _is_shapely(b) else out
+
+
+def simplify(geom: Any, rule: str = "positive", *, keep_orientation: bool = False) -> Any:
+    """Simplify a polygon set by a winding-number fill rule (chapters 6-7).
+
+    ``rule`` is "positive" (winding number > 0), "nonzero", "evenodd",
+    "negative" or "at-least-2". The result has no crossing edges (up to the
+    epsilon of section 8.4) and is returned in the input's kind (shapely or
+    the plain form). Winding rules other than "positive" mostly make sense
+    with ``keep_orientation=True``, where rings keep their direction.
+    """
+    out = _umbra.simplify(
+        _polygons_in(geom, "geom"), rule, keep_orientation=keep_orientation
+    )
+    return _to_shapely(out) if _is_shapely(geom) else out

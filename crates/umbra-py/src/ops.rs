@@ -1,0 +1,165 @@
+//! The 3D operations: the Boolean of two meshes, the union of many (a
+//! balanced tree of Booleans), and CSG trees in the JSON form of `umbra
+//! csg`.
+
+use crate::mesh::Mesh;
+use crate::{error, run};
+use pyo3::prelude::*;
+use pyo3::types::PyDict;
+use umbra::{
+    boolean_solid, evaluate_csg, parse_csg, BooleanOp, CsgOptions, MeshVariant, PolygonMesh,
+    UmbraError,
+};
+
+/// The operation named `op`: every name of the facade (`union`,
+/// `intersection`, `difference`, `xor`), with its message otherwise.
+pub fn parse_op(op: &str) -> PyResult<BooleanOp> {
+    op.parse::<BooleanOp>().map_err(error)
+}
+
+/// The variant of `triangulate`.
+fn variant(triangulate: bool) -> MeshVariant {
+    if triangulate {
+        MeshVariant::TriangleMesh
+    } else {
+        MeshVariant::PolygonMesh
+    }
+}
+
+/// One binary Boolean with the command-line tool's message on failure.
+fn solid(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    variant: MeshVariant,
+) -> Result<PolygonMesh, UmbraError> {
+    boolean_solid(a, b, op, variant)
+        .map(|out| out.mesh)
+        .map_err(|source| UmbraError::Boolean3 {
+            file: String::new(),
+            source,
+        })
+}
+
+/// The 3D Boolean ``op`` ("union", "intersection" or "difference") of
+/// two meshes (section 4 of the dissertation): the result is always
+/// topologically valid. ``triangulate=True`` runs the triangle-mesh variant
+/// (section 4.8): operands are triangulated first and the output is
+/// triangles. Both operands must be valid (``Mesh.is_valid()``).
+#[pyfunction]
+#[pyo3(signature = (a, b, op, *, triangulate = false))]
+pub fn boolean<'py>(
+    py: Python<'py>,
+    a: &Bound<'py, Mesh>,
+    b: &Bound<'py, Mesh>,
+    op: &str,
+    triangulate: bool,
+) -> PyResult<Bound<'py, Mesh>> {
+    let op = parse_op(op)?;
+    let (a, b) = (&a.get().mesh, &b.get().mesh);
+    let out = run(py, || solid(a, b, op, variant(triangulate)))?;
+    Mesh::wrap(py, out)
+}
+
+/// The union of every mesh of ``meshes`` as a balanced tree of binary
+/// Booleans (pairs, then pairs of pairs), so operand sizes stay even; one
+/// mesh is returned as it is, none gives the empty mesh.
+#[pyfunction]
+#[pyo3(signature = (meshes, *, triangulate = false))]
+pub fn union_all<'py>(
+    py: Python<'py>,
+    meshes: &Bound<'py, PyAny>,
+    triangulate: bool,
+) -> PyResult<Bound<'py, Mesh>> {
+    let mut items: Vec<Bound<'py, Mesh>> = Vec::new();
+    for (i, m) in meshes.try_iter()?.enumerate() {
+        let m = m?;
+        items.push(
+            m.cast_into::<Mesh>()
+                .map_err(|_| error(format!("meshes[{i}]: expected an umbra.Mesh")))?,
+        );
+    }
+    let refs: Vec<&PolygonMesh> = items.iter().map(|m| &m.get().mesh).collect();
+    let out = run(py, || balanced_union(&refs, variant(triangulate)))?;
+    Mesh::wrap(py, out)
+}
+
+/// The union of `meshes` as a balanced tree of Booleans. An operand's
+/// error names it by its position (`meshes[3]`).
+fn balanced_union(
+    meshes: &[&PolygonMesh],
+    variant: MeshVariant,
+) -> Result<PolygonMesh, UmbraError> {
+    for (i, m) in meshes.iter().enumerate() {
+        if let Err(source) = m.check_topology().and_then(|()| m.validate_coordinates()) {
+            return Err(UmbraError::InvalidShape {
+                file: format!("meshes[{i}]"),
+                source,
+            });
+        }
+    }
+    if let [one] = meshes {
+        return Ok((*one).clone());
+    }
+    // The first level reads the caller's meshes; later levels own theirs.
+    let mut level = Vec::with_capacity(meshes.len().div_ceil(2));
+    for pair in meshes.chunks(2) {
+        level.push(match pair {
+            [a, b] => solid(a, b, BooleanOp::Union, variant)?,
+            single => single[0].clone(),
+        });
+    }
+    while level.len() > 1 {
+        let mut next = Vec::with_capacity(level.len().div_ceil(2));
+        let mut it = level.into_iter();
+        while let Some(a) = it.next() {
+            next.push(match it.next() {
+                Some(b) => solid(&a, &b, BooleanOp::Union, variant)?,
+                None => a,
+            });
+        }
+        level = next;
+    }
+    Ok(level.pop().unwrap_or_default())
+}
+
+/// The mesh of a CSG tree given as a dict in the JSON form of ``umbra
+/// csg`` (``{"op": "difference", "children": [{"box": {...}}, ...]}``;
+/// ``umbra csg --help`` shows every node). ``file`` leaves are read
+/// relative to the working directory. Independent branches run in
+/// parallel; the result is the same whatever the thread count.
+#[pyfunction]
+#[pyo3(signature = (tree, *, triangulate = false))]
+pub fn csg<'py>(
+    py: Python<'py>,
+    tree: &Bound<'py, PyAny>,
+    triangulate: bool,
+) -> PyResult<Bound<'py, Mesh>> {
+    if !tree.is_instance_of::<PyDict>() {
+        return Err(error(
+            "tree: expected a dict (the JSON form of `umbra csg`)",
+        ));
+    }
+    let kwargs = PyDict::new(py);
+    kwargs.set_item("allow_nan", false)?;
+    let text: String = py
+        .import("json")?
+        .call_method("dumps", (tree,), Some(&kwargs))
+        .map_err(|e| error(format!("tree: not JSON data: {e}")))?
+        .extract()?;
+    let out = run(py, || {
+        let node = parse_csg(&text)?;
+        evaluate_csg(&node, CsgOptions { triangulate }).map(|r| r.mesh)
+    })?;
+    Mesh::wrap(py, out)
+}
+
+/// Panics inside an operation, for the test that no panic crosses into
+/// Python (it must raise ``UmbraError("internal error ...")``).
+#[pyfunction]
+#[pyo3(name = "_panic_for_tests")]
+pub fn panic_for_tests(py: Python<'_>) -> PyResult<()> {
+    run(py, || -> Result<(), String> {
+        panic!("deliberate panic of the test hook")
+    })
+}

@@ -1,0 +1,196 @@
+//! The 2D operations on polygons in their plain Python form: a list of
+//! polygons, each a list of rings (the exterior first, then holes), each
+//! ring an (k, 2) float64 array-like, closed or not. The Python layer turns
+//! shapely geometries into this form and back.
+
+use crate::arrays::{points, points_array};
+use crate::ops::parse_op;
+use crate::{error, run};
+use geo_types::{Coord, LineString, MultiPolygon, Polygon};
+use pyo3::prelude::*;
+use pyo3::types::PyList;
+use umbra::{
+    boolean, boolean_via_simplify, fill_rule_name, from_geo, layout_polygons,
+    simplify as simplify_set, FillRule, PolygonSet2, Polygons, RingOrientation, UmbraError, Via,
+};
+
+/// The ring convention of `keep_orientation`.
+pub fn orientation(keep: bool) -> RingOrientation {
+    if keep {
+        RingOrientation::AsWritten
+    } else {
+        RingOrientation::ByRole
+    }
+}
+
+/// The polygons of a Python value as rings of points (`what` names it).
+fn rings_of(obj: &Bound<'_, PyAny>, what: &str) -> PyResult<Vec<Vec<Vec<[f64; 2]>>>> {
+    let expected = "a list of polygons, each a list of (k, 2) rings";
+    let mut polys = Vec::new();
+    let items = obj
+        .try_iter()
+        .map_err(|_| error(format!("{what}: expected {expected}")))?;
+    for (i, p) in items.enumerate() {
+        let p = p?;
+        let mut rings = Vec::new();
+        let ring_items = p
+            .try_iter()
+            .map_err(|_| error(format!("{what}[{i}]: expected a list of (k, 2) rings")))?;
+        for (j, r) in ring_items.enumerate() {
+            rings.push(points::<2>(&r?, &format!("{what}[{i}][{j}]"))?);
+        }
+        polys.push(rings);
+    }
+    Ok(polys)
+}
+
+/// Renames the facade's `<geo-types>` source in an error to `what`.
+fn rename(e: UmbraError, what: &str) -> UmbraError {
+    let file = what.to_string();
+    match e {
+        UmbraError::BadCoordinate {
+            location,
+            axis,
+            source,
+            ..
+        } => UmbraError::BadCoordinate {
+            file,
+            location,
+            axis,
+            source,
+        },
+        UmbraError::InvalidShape { source, .. } => UmbraError::InvalidShape { file, source },
+        UmbraError::Parse { message, .. } => UmbraError::Parse { file, message },
+        other => other,
+    }
+}
+
+/// A polygon set from rings (coordinates checked, rings oriented by role
+/// or kept as written).
+pub fn set_of(
+    rings: &[Vec<Vec<[f64; 2]>>],
+    orientation: RingOrientation,
+    what: &str,
+) -> Result<PolygonSet2, UmbraError> {
+    let ls = |r: &Vec<[f64; 2]>| LineString(r.iter().map(|p| Coord { x: p[0], y: p[1] }).collect());
+    let multi = MultiPolygon(
+        rings
+            .iter()
+            .filter(|p| !p.is_empty())
+            .map(|p| Polygon::new(ls(&p[0]), p[1..].iter().map(ls).collect()))
+            .collect(),
+    );
+    from_geo(&multi, orientation).map_err(|e| rename(e, what))
+}
+
+/// The polygons of a Python value as a set, converted with the GIL held
+/// (copies) and built without it.
+pub fn input_set(
+    py: Python<'_>,
+    obj: &Bound<'_, PyAny>,
+    keep: bool,
+    what: &str,
+) -> PyResult<PolygonSet2> {
+    let rings = rings_of(obj, what)?;
+    run(py, || set_of(&rings, orientation(keep), what))
+}
+
+/// The Python form of a set's polygons (open rings, no closing point).
+pub fn polygons_to_py<'py>(py: Python<'py>, polygons: &Polygons) -> PyResult<Bound<'py, PyAny>> {
+    let out = PyList::empty(py);
+    for p in polygons {
+        let rings = PyList::empty(py);
+        for r in p {
+            rings.append(points_array(py, r)?)?;
+        }
+        out.append(rings)?;
+    }
+    Ok(out.into_any())
+}
+
+/// The layout of a result in the requested ring convention.
+fn output<'py>(py: Python<'py>, set: PolygonSet2, keep: bool) -> PyResult<Bound<'py, PyAny>> {
+    let layout = run(py, || layout_polygons(&set, orientation(keep), "<result>"))?;
+    polygons_to_py(py, &layout.polygons)
+}
+
+/// The 2D Boolean of two polygon lists (see the Python docstring).
+#[pyfunction]
+#[pyo3(signature = (a, b, op, *, via = "basic", keep_orientation = false))]
+pub fn boolean_2d<'py>(
+    py: Python<'py>,
+    a: &Bound<'py, PyAny>,
+    b: &Bound<'py, PyAny>,
+    op: &str,
+    via: &str,
+    keep_orientation: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let op = parse_op(op)?;
+    let via = match via {
+        "basic" => Via::Basic,
+        "simplify" => Via::Simplify,
+        other => {
+            return Err(error(format!(
+                "unknown algorithm '{other}' (expected basic or simplify)"
+            )))
+        }
+    };
+    let a = input_set(py, a, keep_orientation, "a")?;
+    let b = input_set(py, b, keep_orientation, "b")?;
+    let shape = run(py, || match via {
+        Via::Basic => boolean(&a, &b, op)
+            .map(|o| o.shape)
+            .map_err(|source| UmbraError::Boolean {
+                file: String::new(),
+                source,
+            }),
+        Via::Simplify => boolean_via_simplify(&a, &b, op)
+            .map(|o| o.shape)
+            .map_err(|source| UmbraError::Simplify {
+                file: String::new(),
+                source,
+            }),
+    })?;
+    output(py, shape, keep_orientation)
+}
+
+/// The fill rule named `rule`.
+fn parse_rule(rule: &str) -> PyResult<FillRule> {
+    [
+        FillRule::Positive,
+        FillRule::NonZero,
+        FillRule::EvenOdd,
+        FillRule::Negative,
+        FillRule::AtLeast2,
+    ]
+    .into_iter()
+    .find(|r| fill_rule_name(*r) == rule)
+    .ok_or_else(|| {
+        error(format!(
+            "unknown fill rule '{rule}' (expected positive, nonzero, evenodd, negative or at-least-2)"
+        ))
+    })
+}
+
+/// The simplification of a polygon list by a fill rule (see the Python
+/// docstring).
+#[pyfunction]
+#[pyo3(signature = (geom, rule = "positive", *, keep_orientation = false))]
+pub fn simplify<'py>(
+    py: Python<'py>,
+    geom: &Bound<'py, PyAny>,
+    rule: &str,
+    keep_orientation: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let rule = parse_rule(rule)?;
+    let set = input_set(py, geom, keep_orientation, "geom")?;
+    let shape = run(py, || {
+        simplify_set(&set, rule)
+            .map(|o| o.shape)
+            .map_err(|source| UmbraError::Simplify {
+                file: String::new(),
+                source,
+            })
+    })?;
+    output(py, shape, keep_orientation)
+}

@@ -1,0 +1,122 @@
+"""3D Booleans, n-ary unions and CSG trees against analytic volumes, with
+every operand left untouched and every bad argument refused."""
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import umbra
+from conftest import cube
+
+
+def close(x, y, tol=1e-12):
+    return abs(x - y) <= tol * max(1.0, abs(y))
+
+
+@pytest.mark.parametrize("triangulate", [False, True])
+@pytest.mark.parametrize(
+    "shift, union, inter",
+    [
+        ((0.5, 0.5, 0.5), 1.875, 0.125),  # general position
+        ((0.5, 0.0, 0.0), 1.5, 0.5),  # coplanar facets (degenerate)
+        ((1.0, 0.0, 0.0), 2.0, 0.0),  # touching along a facet
+        ((3.0, 0.0, 0.0), 2.0, 0.0),  # disjoint
+        ((0.0, 0.0, 0.0), 1.0, 1.0),  # identical
+    ],
+)
+def test_two_cubes_analytic(shift, union, inter, triangulate):
+    a, b = cube(), cube(shift)
+    a_before, b_before = pickle.dumps(a), pickle.dumps(b)
+    results = {
+        op: umbra.boolean(a, b, op, triangulate=triangulate)
+        for op in ("union", "intersection", "difference")
+    }
+    for op, m in results.items():
+        assert m.is_valid(), op
+        assert m.check()["topologically_valid"]
+        if triangulate:
+            assert isinstance(m.faces, np.ndarray) and m.faces.shape[1] == 3
+    assert close(results["union"].volume(), union)
+    assert close(results["intersection"].volume(), inter)
+    assert close(results["difference"].volume(), 1.0 - inter)
+    assert pickle.dumps(a) == a_before and pickle.dumps(b) == b_before
+
+
+def test_bad_operations():
+    a, b = cube(), cube((0.5, 0.5, 0.5))
+    with pytest.raises(umbra.UmbraError, match=r"unknown operation 'unoin' \(expected union"):
+        umbra.boolean(a, b, "unoin")
+    with pytest.raises(umbra.UmbraError, match="supports union, intersection and difference, not xor"):
+        umbra.boolean(a, b, "xor")
+    with pytest.raises(TypeError):
+        umbra.boolean(a, "cube.obj", "union")
+
+
+def test_union_all_balanced_tree():
+    row = [cube((0.5 * i, 0.0, 0.0)) for i in range(7)]  # overlapping chain
+    u = umbra.union_all(row)
+    assert u.is_valid() and close(u.volume(), 4.0)
+    assert u.check()["two_manifold"]
+    grid = [cube((2.0 * i, 2.0 * j, 0.0)) for i in range(3) for j in range(3)]
+    assert close(umbra.union_all(iter(grid)).volume(), 9.0)
+    tri = umbra.union_all(row, triangulate=True)
+    assert tri.faces.shape[1] == 3 and close(tri.volume(), 4.0)
+    one = cube()
+    assert umbra.union_all([one]) == one
+    assert umbra.union_all([]).volume() == 0.0
+    open_box = umbra.Mesh(one.vertices, one.faces[1:])
+    with pytest.raises(umbra.UmbraError, match=r"meshes\[2\]: invalid shape"):
+        umbra.union_all([one, one, open_box])
+    with pytest.raises(umbra.UmbraError, match=r"meshes\[1\]: expected an umbra.Mesh"):
+        umbra.union_all([one, 3])
+
+
+def test_csg_tree_dict():
+    tree = {
+        "op": "difference",
+        "children": [
+            {"box": {"size": [2, 2, 2], "center": True}},
+            {"cylinder": {"radius": 0.5, "height": 3, "segments": 8, "center": True}},
+        ],
+    }
+    m = umbra.csg(tree)
+    prism = 2.0 * 4.0 * 0.25 * math.sin(math.tau / 8.0)
+    assert m.is_valid() and close(m.volume(), 8.0 - prism)
+    t = umbra.csg(tree, triangulate=True)
+    assert t.faces.shape[1] == 3 and close(t.volume(), 8.0 - prism)
+    # Transforms: a unit cube scaled by 3 and moved keeps volume 27.
+    moved = umbra.csg({"box": {"size": 1}, "scale": 3, "translate": [5, 0, 0], "rotate": [0, 0, 30]})
+    assert close(moved.volume(), 27.0, 1e-9)
+    # The same tree as nested Booleans in Python.
+    box = umbra.csg(tree["children"][0])
+    cyl = umbra.csg(tree["children"][1])
+    assert umbra.boolean(box, cyl, "difference") == m
+
+
+@pytest.mark.parametrize(
+    "tree, match",
+    [
+        ({"sphere": {"radius": -1}}, "radius"),
+        ({"op": "union", "children": []}, "at least one child"),
+        ({"pyramid": {}}, "root"),
+        ({"box": {"size": [1, 1, float("nan")]}}, "not JSON data"),
+        ([{"box": {"size": 1}}], "expected a dict"),
+        ({"file": "no/such/file.obj"}, "no/such/file.obj"),
+    ],
+)
+def test_bad_csg_trees(tree, match):
+    with pytest.raises(umbra.UmbraError, match=match):
+        umbra.csg(tree)
+
+
+def test_csg_file_leaves_are_read_from_the_working_directory(tmp_path, monkeypatch):
+    umbra.write(cube((0.0, 0.0, 0.0), 2.0), tmp_path / "block.off")
+    monkeypatch.chdir(tmp_path)
+    tree = {
+        "op": "difference",
+        "children": [{"file": "block.off"}, {"box": {"size": 1}, "translate": [1.5, 1.5, 1.5]}],
+    }
+    m = umbra.csg(tree)
+    assert m.is_valid() and close(m.volume(), 8.0 - 0.125)

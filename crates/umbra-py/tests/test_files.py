@@ -1,0 +1,133 @@
+"""Round trips through every file format of the command-line tool, and the
+tool's messages for files that cannot be read or written."""
+
+import numpy as np
+import pytest
+
+import umbra
+from conftest import cube
+
+MESH_EXACT = ["obj", "off", "ply"]  # every f64 bit and every polygon kept
+
+
+@pytest.mark.parametrize("ext", MESH_EXACT)
+@pytest.mark.parametrize("ascii", [False, True])
+def test_polygon_formats_keep_the_mesh_exactly(tmp_path, ext, ascii):
+    c = cube((0.1, -0.3, 1e-7), 0.3)  # coordinates with long binary expansions
+    path = tmp_path / f"cube.{ext}"
+    umbra.write(c, path, ascii=ascii)
+    assert umbra.read(path) == c
+    assert umbra.read(str(path)) == c
+
+
+@pytest.mark.parametrize("name", ["out.stl", "out.STL"])
+@pytest.mark.parametrize("ascii", [False, True])
+def test_stl_welds_triangles(tmp_path, name, ascii):
+    # Coordinates exact in float32, so binary STL keeps them.
+    b = umbra.boolean(cube(), cube((0.5, 0.25, 0.5)), "union")
+    path = tmp_path / name
+    umbra.write(b, path, ascii=ascii)
+    back = umbra.read(path)
+    assert back.is_valid() and back.volume() == b.volume()
+    assert back.faces.shape == b.triangles.shape
+    assert len(back.vertices) == len(b.vertices)
+
+
+@pytest.mark.parametrize("ext", MESH_EXACT + ["stl"])
+def test_boolean_results_round_trip(tmp_path, ext):
+    d = umbra.boolean(cube(), cube((0.5, 0.5, 0.5)), "difference")
+    path = tmp_path / f"d.{ext}"
+    umbra.write(d, path, ascii=True)
+    back = umbra.read(path)
+    assert back.is_valid() and back.volume() == d.volume()
+    assert back.check()["two_manifold"]
+
+
+@pytest.mark.parametrize("ext", ["3mf", "glb"])
+def test_write_only_mesh_formats(tmp_path, ext):
+    path = tmp_path / f"cube.{ext}"
+    umbra.write(cube(), path)
+    assert path.stat().st_size > 100
+    with pytest.raises(umbra.UmbraError, match="can be written but not read"):
+        umbra.read(path)
+
+
+def test_open_and_nan_mesh_files(tmp_path):
+    path = tmp_path / "open.obj"
+    c = cube()
+    umbra.write(umbra.Mesh(c.vertices, c.faces[:5]), path)
+    with pytest.raises(umbra.UmbraError, match=r"open\.obj: invalid shape"):
+        umbra.read(path)
+    m = umbra.read(path, check=False)
+    assert not m.is_valid() and not m.check()["topologically_valid"]
+    nan = tmp_path / "nan.off"
+    nan.write_text("OFF\n3 1 0\n0 0 0\n1 nan 0\n0 1 0\n3 0 1 2\n")
+    with pytest.raises(umbra.UmbraError, match=r"nan\.off"):
+        umbra.read(nan)
+    r = umbra.read(nan, check=False).check()
+    assert not r["coordinates_valid"]
+
+
+def test_file_errors(tmp_path):
+    with pytest.raises(umbra.UmbraError, match=r"unknown extension '\.txt'"):
+        umbra.read(tmp_path / "a.txt")
+    with pytest.raises(umbra.UmbraError, match="cannot read the file"):
+        umbra.read(tmp_path / "missing.obj")
+    with pytest.raises(umbra.UmbraError, match=r"cube\.wkt: unsupported file type: expected a 3D"):
+        umbra.write(cube(), tmp_path / "cube.wkt")
+    square = [[np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]])]]
+    with pytest.raises(umbra.UmbraError, match=r"square\.obj: unsupported file type: expected a 2D"):
+        umbra.write(square, tmp_path / "square.obj")
+    bad = tmp_path / "bad.wkt"
+    bad.write_text("POLYGON ((0 0, 1 0,")
+    with pytest.raises(umbra.UmbraError, match=r"bad\.wkt: malformed WKT"):
+        umbra.read(bad)
+    with pytest.raises(umbra.UmbraError, match=r"cannot write the file"):
+        umbra.write(cube(), tmp_path / "no" / "dir" / "cube.obj")
+
+
+@pytest.mark.parametrize("ext", ["wkt", "geojson"])
+def test_polygons_round_trip_plain(tmp_path, ext, monkeypatch):
+    # Without shapely: the plain form in and out.
+    monkeypatch.setattr(umbra, "_shapely", lambda: None)
+    frame = [
+        [
+            np.array([[0.0, 0.0], [4.0, 0.0], [4.0, 4.0], [0.0, 4.0]]),
+            np.array([[1.0, 1.0], [1.0, 3.0], [3.0, 3.0], [3.0, 1.0]]),
+        ],
+        [np.array([[10.0, 0.1], [11.0, 0.1], [10.5, 0.7]])],
+    ]
+    path = tmp_path / f"frame.{ext}"
+    umbra.write(frame, path)
+    back = umbra.read(path)
+    assert isinstance(back, list) and len(back) == 2
+    assert sorted(len(p) for p in back) == [1, 2]
+    assert sorted(map(len, (r for p in back for r in p))) == [3, 4, 4]
+    # Written again, the bytes are the same.
+    again = tmp_path / f"again.{ext}"
+    umbra.write(back, again)
+    assert again.read_bytes() == path.read_bytes()
+
+
+def test_svg_is_written(tmp_path):
+    path = tmp_path / "square.svg"
+    umbra.write([[np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0]])]], path)
+    assert "<svg" in path.read_text()
+    with pytest.raises(umbra.UmbraError, match="can be written but not read"):
+        umbra.read(path)
+
+
+@pytest.mark.parametrize("ext", ["wkt", "geojson"])
+def test_polygons_round_trip_shapely(tmp_path, ext):
+    shapely = pytest.importorskip("shapely")
+    g = shapely.MultiPolygon(
+        [
+            shapely.box(0, 0, 4, 4).difference(shapely.box(1, 1, 3, 3)),
+            shapely.Polygon([(10, 0.1), (11, 0.1), (10.5, 0.7)]),
+        ]
+    )
+    path = tmp_path / f"g.{ext}"
+    umbra.write(g, path)
+    back = umbra.read(path)
+    assert isinstance(back, shapely.MultiPolygon)
+    assert back.normalize().equals_exact(g.normalize(), 0.0)
