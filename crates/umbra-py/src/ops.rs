@@ -7,8 +7,8 @@ use crate::{error, run};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use umbra::{
-    boolean_solid, evaluate_csg, parse_csg, BooleanOp, CsgOptions, MeshVariant, PolygonMesh,
-    UmbraError,
+    as_triangle_mesh, boolean_solid, default_mesh_tolerance, evaluate_csg, parse_csg,
+    smooth_solid, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, UmbraError,
 };
 
 /// The operation named `op`: every name of the facade (`union`,
@@ -41,23 +41,73 @@ fn solid(
         })
 }
 
+/// Smooths `mesh` in `variant` at `tolerance` (Appendix A), with the
+/// command-line tool's message on failure.
+fn smoothed(
+    mesh: &PolygonMesh,
+    variant: MeshVariant,
+    tolerance: f64,
+) -> Result<PolygonMesh, UmbraError> {
+    smooth_solid(mesh, variant, &SmoothOptions::new(tolerance))
+        .map(|out| out.shape)
+        .map_err(|source| UmbraError::Smooth {
+            file: String::new(),
+            source,
+        })
+}
+
 /// The 3D Boolean ``op`` ("union", "intersection" or "difference") of
 /// two meshes (section 4 of the dissertation): the result is always
 /// topologically valid. ``triangulate=True`` runs the triangle-mesh variant
 /// (section 4.8): operands are triangulated first and the output is
-/// triangles. Both operands must be valid (``Mesh.is_valid()``).
+/// triangles. ``smooth=T`` smooths the result at tolerance ``T``
+/// (Appendix A: vertices closer than ``T`` merge, slivers and coincident
+/// opposing facets go); ``None`` (the default) or 0 returns the basic
+/// Boolean's raw output. Both operands must be valid (``Mesh.is_valid()``).
 #[pyfunction]
-#[pyo3(signature = (a, b, op, *, triangulate = false))]
+#[pyo3(signature = (a, b, op, *, triangulate = false, smooth = None))]
 pub fn boolean<'py>(
     py: Python<'py>,
     a: &Bound<'py, Mesh>,
     b: &Bound<'py, Mesh>,
     op: &str,
     triangulate: bool,
+    smooth: Option<f64>,
 ) -> PyResult<Bound<'py, Mesh>> {
     let op = parse_op(op)?;
     let (a, b) = (&a.get().mesh, &b.get().mesh);
-    let out = run(py, || solid(a, b, op, variant(triangulate)))?;
+    let variant = variant(triangulate);
+    let out = run(py, || {
+        let raw = solid(a, b, op, variant)?;
+        match smooth {
+            Some(t) if t == 0.0 => Ok(raw),
+            Some(t) => smoothed(&raw, variant, t),
+            None => Ok(raw),
+        }
+    })?;
+    Mesh::wrap(py, out)
+}
+
+/// Smooths a mesh (Appendix A) at ``tolerance``, by default 1e-9 times
+/// the largest extent of its bounding box (the rule of ``umbra smooth``).
+/// A triangle mesh stays a triangle mesh. The mesh must be valid.
+#[pyfunction]
+#[pyo3(signature = (mesh, tolerance = None))]
+pub fn smooth<'py>(
+    py: Python<'py>,
+    mesh: &Bound<'py, Mesh>,
+    tolerance: Option<f64>,
+) -> PyResult<Bound<'py, Mesh>> {
+    let mesh = &mesh.get().mesh;
+    let out = run(py, || {
+        let tol = tolerance.unwrap_or_else(|| default_mesh_tolerance(mesh));
+        let variant = if as_triangle_mesh(mesh).is_some() {
+            MeshVariant::TriangleMesh
+        } else {
+            MeshVariant::PolygonMesh
+        };
+        smoothed(mesh, variant, tol)
+    })?;
     Mesh::wrap(py, out)
 }
 

@@ -27,7 +27,7 @@ threads run operations in parallel.
 from __future__ import annotations
 
 import os
-from typing import Any, Iterable, List, Union
+from typing import Any, Iterable, List, Optional, Union
 
 import numpy as np
 
@@ -42,6 +42,7 @@ __all__ = [
     "csg",
     "read",
     "simplify",
+    "smooth",
     "union_all",
     "write",
     "__version__",
@@ -159,16 +160,37 @@ def write(
         )
 
 
-def boolean(a: Mesh, b: Mesh, op: str, *, triangulate: bool = False) -> Mesh:
+def boolean(
+    a: Mesh,
+    b: Mesh,
+    op: str,
+    *,
+    triangulate: bool = False,
+    smooth: Optional[float] = None,
+) -> Mesh:
     """The 3D Boolean ``op`` ("union", "intersection" or "difference").
 
     The result is always topologically valid. ``triangulate=True`` runs the
     triangle-mesh variant (section 4.8): operands are triangulated by
-    internal edges first, and the result is triangles. Both operands must
-    be valid (``Mesh.is_valid()``); otherwise ``UmbraError`` names the
-    operand and the violated constraint.
+    internal edges first, and the result is triangles. ``smooth=T`` smooths
+    the result at tolerance ``T`` (Appendix A: vertices closer than ``T``
+    merge, slivers, gaps and coincident opposing facets go); ``None`` or 0
+    returns the basic Boolean's raw output. Both operands must be valid
+    (``Mesh.is_valid()``); otherwise ``UmbraError`` names the operand and
+    the violated constraint.
     """
-    return _umbra.boolean(a, b, op, triangulate=triangulate)
+    return _umbra.boolean(a, b, op, triangulate=triangulate, smooth=smooth)
+
+
+def smooth(mesh: Mesh, tolerance: Optional[float] = None) -> Mesh:
+    """The mesh smoothed (Appendix A) at ``tolerance``.
+
+    By default ``tolerance`` is 1e-9 times the largest extent of the mesh's
+    bounding box, the rule of ``umbra smooth``. A triangle mesh stays a
+    triangle mesh; every vertex moves by at most a small multiple of the
+    tolerance.
+    """
+    return _umbra.smooth(mesh, tolerance)
 
 
 def union_all(meshes: Iterable[Mesh], *, triangulate: bool = False) -> Mesh:
