@@ -18,7 +18,9 @@
 //!   [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
 //! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
 //!   (triangle meshes), [`triangulate_mesh`], and [`boolean_solid`], which
-//!   runs either [`MeshVariant`] on any valid operands.
+//!   runs either [`MeshVariant`] on any valid operands; n-ary in one call,
+//!   as a balanced parallel tree: [`boolean_solids`], [`union_all_solids`]
+//!   and [`difference_all_solids`].
 //! - Reports: [`Boolean2Report`], [`SimplifyReport`], [`Boolean3Report`]
 //!   and their parts, `serde::Serialize`, built from an operation's output.
 //! - WKT: [`read_wkt_file`], [`read_wkt_str`], [`write_wkt_file`],
@@ -81,6 +83,7 @@ mod error;
 #[cfg(feature = "io")]
 mod io;
 mod model;
+mod nary;
 mod ops;
 #[cfg(feature = "render")]
 mod render;
@@ -96,6 +99,9 @@ pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
 pub use model::*;
+pub use nary::{
+    boolean_solids, difference_all_solids, union_all_solids, SolidsError, SolidsOutput,
+};
 pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 #[cfg(feature = "render")]
 pub use render::*;
