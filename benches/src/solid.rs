@@ -2,8 +2,9 @@
 //! (the 3D bench of issue 3), as UV spheres in two variants (triangles;
 //! quadrilaterals with triangle fans at the poles), run on Umbra's
 //! triangle-mesh Boolean (triangles), its polygon-mesh Boolean (on the
-//! triangles, and on the quadrilaterals) and on `manifold-rust` 0.19 (a
-//! Rust port of Manifold) with identical coordinates. Every peer is handed
+//! triangles, and on the quadrilaterals), on `manifold-rust` 0.19 (a
+//! Rust port of Manifold) and on `boolmesh` 0.2 (a pure-Rust mesh Boolean
+//! after Manifold's design) with identical coordinates. Every peer is handed
 //! the triangle spheres; the quadrilateral peer merges them back into the
 //! quadrilaterals they split ([`quads_of_uv_sphere`]), so that all run on
 //! the same vertices and the same surface.
@@ -253,6 +254,66 @@ impl SolidPeer for ManifoldRust {
     }
 }
 
+/// `boolmesh` 0.2 (feature `rayon`): `Manifold::new` of each operand (not
+/// timed; it welds, sorts and checks the mesh), then `compute_boolean`
+/// with `OpType::Subtract` (timed).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Boolmesh;
+
+/// A triangle mesh as a `boolmesh` manifold, or its refusal.
+pub fn boolmesh_of(m: &TriangleMesh) -> Result<boolmesh::prelude::Manifold, String> {
+    let pos: Vec<f64> = m.vertices.iter().flatten().copied().collect();
+    let idx: Vec<usize> = m.triangles.iter().flatten().map(|&v| v as usize).collect();
+    boolmesh::prelude::Manifold::new(&pos, &idx)
+}
+
+/// Triangle count, volume and closedness of a `boolmesh` result.
+pub fn boolmesh_stats(m: &boolmesh::prelude::Manifold) -> SolidStats {
+    let p = |i: usize| {
+        let v = m.ps[i];
+        [v.x, v.y, v.z]
+    };
+    let volume =
+        m.hs.chunks(3)
+            .map(|t| {
+                let (a, b, c) = (p(t[0].tail), p(t[1].tail), p(t[2].tail));
+                (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                    + a[2] * (b[0] * c[1] - b[1] * c[0]))
+                    / 6.0
+            })
+            .sum();
+    SolidStats {
+        facets: m.hs.len() / 3,
+        volume,
+        valid: m.is_manifold(),
+    }
+}
+
+impl SolidPeer for Boolmesh {
+    type Input = Option<(boolmesh::prelude::Manifold, boolmesh::prelude::Manifold)>;
+    type Output = Option<boolmesh::prelude::Manifold>;
+    fn name(&self) -> &'static str {
+        "boolmesh"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        Some((boolmesh_of(a).ok()?, boolmesh_of(b).ok()?))
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        let (a, b) = input.as_ref()?;
+        boolmesh::compute_boolean(a, b, boolmesh::prelude::OpType::Subtract).ok()
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        out.as_ref().map_or(
+            SolidStats {
+                facets: 0,
+                volume: f64::NAN,
+                valid: false,
+            },
+            boolmesh_stats,
+        )
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -292,10 +353,12 @@ mod tests {
         let p = UmbraPolygons.stats(&UmbraPolygons.difference(&UmbraPolygons.prepare(&a, &b)));
         let q = UmbraQuads.stats(&UmbraQuads.difference(&UmbraQuads.prepare(&a, &b)));
         let m = ManifoldRust.stats(&ManifoldRust.difference(&ManifoldRust.prepare(&a, &b)));
+        let bm = Boolmesh.stats(&Boolmesh.difference(&Boolmesh.prepare(&a, &b)));
         assert!(
-            u.valid && p.valid && q.valid && m.valid,
-            "{u:?} {p:?} {q:?} {m:?}"
+            u.valid && p.valid && q.valid && m.valid && bm.valid,
+            "{u:?} {p:?} {q:?} {m:?} {bm:?}"
         );
+        assert!((u.volume - bm.volume).abs() < 1e-9, "{u:?} {bm:?}");
         assert!((u.volume - p.volume).abs() < 1e-12, "{u:?} {p:?}");
         // The quadrilaterals are the triangle pairs' union: nearly the same
         // surface (each quadrilateral is planar up to rounding), fewer
