@@ -63,7 +63,8 @@ def read_ply(path):
     faces = np.frombuffer(data, dtype=face_dtype, count=nf, offset=end + 24 * nv)
     if nf and not (faces["n"] == 3).all():
         raise ValueError(f"{path}: every face must be a triangle")
-    return np.ascontiguousarray(verts), np.ascontiguousarray(faces["i"].astype(np.uint64))
+    # Writable native-order copies (nanobind refuses read-only buffers).
+    return np.array(verts, dtype=np.float64), np.array(faces["i"], dtype=np.uint64)
 
 
 def manifold_of(m3d, path):

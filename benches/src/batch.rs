@@ -2,9 +2,11 @@
 //! a slab minus many boxes, each in one call, on Umbra's
 //! `union_all_solids` / `difference_all_solids` (a balanced tree of binary
 //! Booleans in parallel, both variants) beside the peers' batch
-//! operations: `manifold-rust` 0.19 `Manifold::batch_boolean` (which the
-//! port runs as a left fold) for the union and `Manifold::compose` of the
-//! disjoint boxes followed by one `difference` for the slab, and
+//! operations: `manifold-rust` 0.19, the union by rayon's parallel
+//! `reduce_with` over `Manifold::union` (the port's own
+//! `Manifold::batch_boolean` is a left fold, slower by far: the
+//! `manifold-rust-fold` peer) and the slab as one `difference` with
+//! `Manifold::compose` of the disjoint boxes, and
 //! `boolmesh` 0.2, which has no batch operation, with rayon's parallel
 //! `reduce_with` over `compute_boolean` (a tree of the same kind as
 //! Umbra's). Conversions into each library's types are not timed.
@@ -167,18 +169,26 @@ fn manifold_of(m: &TriangleMesh) -> Manifold {
     })
 }
 
-/// `manifold-rust` 0.19: the union by `Manifold::batch_boolean(_, Add)`;
-/// the difference as `a.difference(&Manifold::compose(bs))` (valid here:
-/// the boxes are disjoint, which is what Manifold's own batch union
-/// exploits).
+/// `manifold-rust` 0.19: the union by rayon's parallel `reduce_with` over
+/// `Manifold::union`, or with `fold` by the port's
+/// `Manifold::batch_boolean(_, Add)` (a left fold); the difference as
+/// `a.difference(&Manifold::compose(bs))` (valid here: the boxes are
+/// disjoint, which is what the C++ Manifold's batch union exploits).
 #[derive(Clone, Copy, Debug, Default)]
-pub struct ManifoldRustBatch;
+pub struct ManifoldRustBatch {
+    /// Unite by `batch_boolean` (a left fold) instead of a parallel tree.
+    pub fold: bool,
+}
 
 impl BatchPeer for ManifoldRustBatch {
     type Input = (Option<Manifold>, Vec<Manifold>);
     type Output = Manifold;
     fn name(&self) -> &'static str {
-        "manifold-rust"
+        if self.fold {
+            "manifold-rust-fold"
+        } else {
+            "manifold-rust"
+        }
     }
     fn prepare(&self, case: &BatchCase) -> Option<Self::Input> {
         Some((
@@ -189,7 +199,13 @@ impl BatchPeer for ManifoldRustBatch {
     fn run(&self, input: &Self::Input) -> Self::Output {
         let out = match &input.0 {
             Some(a) => a.difference(&Manifold::compose(&input.1)),
-            None => Manifold::batch_boolean(&input.1, OpType::Add),
+            None if self.fold => Manifold::batch_boolean(&input.1, OpType::Add),
+            None => input
+                .1
+                .par_iter()
+                .cloned()
+                .reduce_with(|a, b| a.union(&b))
+                .unwrap_or_else(Manifold::empty),
         };
         std::hint::black_box(out.num_tri());
         out
@@ -269,7 +285,7 @@ mod tests {
         for s in [
             run(&UmbraBatch(MeshVariant::PolygonMesh), &case),
             run(&UmbraBatch(MeshVariant::TriangleMesh), &case),
-            run(&ManifoldRustBatch, &case),
+            run(&ManifoldRustBatch { fold: false }, &case),
             run(&BoolmeshBatch, &case),
         ] {
             assert!(s.valid, "{s:?}");
@@ -288,7 +304,8 @@ mod tests {
         assert!(u.volume > one && u.volume < 8.0 * one, "{u:?}");
         for s in [
             run(&UmbraBatch(MeshVariant::TriangleMesh), &case),
-            run(&ManifoldRustBatch, &case),
+            run(&ManifoldRustBatch { fold: false }, &case),
+            run(&ManifoldRustBatch { fold: true }, &case),
             run(&BoolmeshBatch, &case),
         ] {
             assert!(s.valid, "{s:?}");

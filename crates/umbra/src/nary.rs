@@ -371,7 +371,7 @@ mod tests {
     fn the_leftmost_error_is_reported() {
         let items: Vec<u32> = (0..8).collect();
         let combine = |a: u32, b: u32| {
-            if a >= 4 && a % 2 == 0 {
+            if a >= 4 && a.is_multiple_of(2) {
                 Err(a)
             } else {
                 Ok(a + b)
@@ -512,7 +512,7 @@ mod tests {
             );
             let msg = err.map(|e| e.to_string()).unwrap_or_default();
             assert!(msg.starts_with("operand 2: "), "{msg}");
-            let err = difference_all_solids(&open, &[good.clone()], variant).err();
+            let err = difference_all_solids(&open, std::slice::from_ref(&good), variant).err();
             assert!(matches!(
                 err,
                 Some(SolidsError::InvalidOperand { index: 0, .. })
