@@ -11,10 +11,10 @@
 //! `reduce_with` over `compute_boolean` (a tree of the same kind as
 //! Umbra's). Conversions into each library's types are not timed.
 
-use crate::solid::{boolmesh_of, boolmesh_stats, SolidStats};
+use crate::solid::{boolmesh_of, boolmesh_stats, manifold_of, manifold_stats, SolidStats};
 use boolmesh::prelude::{compute_boolean, Manifold as Boolmesh, OpType as BoolmeshOp};
 use manifold_rust::manifold::Manifold;
-use manifold_rust::types::{MeshGL64, OpType};
+use manifold_rust::types::OpType;
 use rayon::prelude::*;
 use test_support::rng::SplitMix64;
 use test_support::shapes::{box_triangles, uv_sphere};
@@ -140,33 +140,8 @@ impl BatchPeer for UmbraBatch {
         out.ok().map(|o| o.mesh)
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        out.as_ref().map_or(
-            SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
-            |m| SolidStats {
-                facets: m.facets.len(),
-                volume: m.signed_volume(),
-                valid: m.check_topology().is_ok(),
-            },
-        )
+        out.as_ref().map_or(SolidStats::FAILED, SolidStats::of_mesh)
     }
-}
-
-fn manifold_of(m: &TriangleMesh) -> Manifold {
-    Manifold::from_mesh_gl64(&MeshGL64 {
-        num_prop: 3,
-        vert_properties: m.vertices.iter().flatten().copied().collect(),
-        tri_verts: m
-            .triangles
-            .iter()
-            .flatten()
-            .map(|&v| u64::from(v))
-            .collect(),
-        ..MeshGL64::default()
-    })
 }
 
 /// `manifold-rust` 0.19: the union by rayon's parallel `reduce_with` over
@@ -211,11 +186,7 @@ impl BatchPeer for ManifoldRustBatch {
         out
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        SolidStats {
-            facets: out.num_tri(),
-            volume: out.volume(),
-            valid: format!("{:?}", out.status()) == "NoError",
-        }
+        manifold_stats(out)
     }
 }
 
@@ -255,14 +226,7 @@ impl BatchPeer for BoolmeshBatch {
         }
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        out.as_ref().map_or(
-            SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
-            boolmesh_stats,
-        )
+        out.as_ref().map_or(SolidStats::FAILED, boolmesh_stats)
     }
 }
 

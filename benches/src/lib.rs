@@ -47,3 +47,12 @@ pub use generate::{random_star_polygon, regular_ngon, rotated_ngon_pair, Case, R
 pub use peers::{
     exact_union_area, Clipper2, Clipper2Rust, Geo, IOverlay, IOverlay64, Peer, RingStats, Umbra,
 };
+
+/// The value after the command-line flag `name` in `args`, if any (the
+/// benchmark binaries' `--flag value` arguments).
+pub fn flag_value(args: &[String], name: &str) -> Option<String> {
+    args.iter()
+        .position(|a| a == name)
+        .and_then(|i| args.get(i + 1))
+        .cloned()
+}

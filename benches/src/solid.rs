@@ -98,6 +98,26 @@ pub struct SolidStats {
     pub valid: bool,
 }
 
+impl SolidStats {
+    /// What a library that returned no result gets: no facets, a NaN
+    /// volume, not valid.
+    pub const FAILED: SolidStats = SolidStats {
+        facets: 0,
+        volume: f64::NAN,
+        valid: false,
+    };
+
+    /// The statistics of a polygon-mesh result: facets, volume and shape
+    /// closure (section 4.2).
+    pub fn of_mesh(m: &PolygonMesh) -> SolidStats {
+        SolidStats {
+            facets: m.facets.len(),
+            volume: polygon_volume(m),
+            valid: m.check_topology().is_ok(),
+        }
+    }
+}
+
 /// A 3D library under test: `prepare` converts (not timed), `difference`
 /// runs `A - B` (timed), `stats` reads the result (not timed).
 pub trait SolidPeer {
@@ -140,11 +160,7 @@ impl SolidPeer for UmbraTriangles {
                 volume: triangle_volume(m),
                 valid: m.check_topology().is_ok(),
             },
-            None => SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
+            None => SolidStats::FAILED,
         }
     }
 }
@@ -169,16 +185,8 @@ impl SolidPeer for UmbraPolygons {
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
         match out {
-            Some(m) => SolidStats {
-                facets: m.facets.len(),
-                volume: polygon_volume(m),
-                valid: m.check_topology().is_ok(),
-            },
-            None => SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
+            Some(m) => SolidStats::of_mesh(m),
+            None => SolidStats::FAILED,
         }
     }
 }
@@ -212,9 +220,18 @@ impl SolidPeer for UmbraQuads {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ManifoldRust;
 
-/// A triangle mesh as Manifold's `MeshGL64`.
-fn mesh_gl64(m: &TriangleMesh) -> MeshGL64 {
-    MeshGL64 {
+/// Triangle count, volume and status of a `manifold-rust` result.
+pub fn manifold_stats(m: &Manifold) -> SolidStats {
+    SolidStats {
+        facets: m.num_tri(),
+        volume: m.volume(),
+        valid: format!("{:?}", m.status()) == "NoError",
+    }
+}
+
+/// A triangle mesh as a `manifold-rust` manifold (through `MeshGL64`).
+pub fn manifold_of(m: &TriangleMesh) -> Manifold {
+    Manifold::from_mesh_gl64(&MeshGL64 {
         num_prop: 3,
         vert_properties: m.vertices.iter().flatten().copied().collect(),
         tri_verts: m
@@ -224,7 +241,7 @@ fn mesh_gl64(m: &TriangleMesh) -> MeshGL64 {
             .map(|&v| u64::from(v))
             .collect(),
         ..MeshGL64::default()
-    }
+    })
 }
 
 impl SolidPeer for ManifoldRust {
@@ -234,10 +251,7 @@ impl SolidPeer for ManifoldRust {
         "manifold-rust"
     }
     fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
-        (
-            Manifold::from_mesh_gl64(&mesh_gl64(a)),
-            Manifold::from_mesh_gl64(&mesh_gl64(b)),
-        )
+        (manifold_of(a), manifold_of(b))
     }
     fn difference(&self, input: &Self::Input) -> Self::Output {
         let out = input.0.difference(&input.1);
@@ -246,11 +260,7 @@ impl SolidPeer for ManifoldRust {
         out
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        SolidStats {
-            facets: out.num_tri(),
-            volume: out.volume(),
-            valid: format!("{:?}", out.status()) == "NoError",
-        }
+        manifold_stats(out)
     }
 }
 
@@ -303,14 +313,7 @@ impl SolidPeer for Boolmesh {
         boolmesh::compute_boolean(a, b, boolmesh::prelude::OpType::Subtract).ok()
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        out.as_ref().map_or(
-            SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
-            boolmesh_stats,
-        )
+        out.as_ref().map_or(SolidStats::FAILED, boolmesh_stats)
     }
 }
 

@@ -333,12 +333,7 @@ fn human(x: f64) -> String {
 
 fn run() -> Result<(), String> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let value = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .cloned()
-    };
+    let value = |name: &str| umbra_benches::flag_value(&args, name);
     let number = |name: &str, default: usize| {
         value(name).map_or(Ok(default), |v| {
             v.parse().map_err(|e| format!("{name}: {e}"))

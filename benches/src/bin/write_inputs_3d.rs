@@ -40,12 +40,7 @@ fn write(dir: &Path, name: &str, mesh: &PolygonMesh) -> Result<(), String> {
 
 fn run() -> Result<(), String> {
     let args: Vec<String> = std::env::args().skip(1).collect();
-    let value = |name: &str| {
-        args.iter()
-            .position(|a| a == name)
-            .and_then(|i| args.get(i + 1))
-            .cloned()
-    };
+    let value = |name: &str| umbra_benches::flag_value(&args, name);
     let sizes: Vec<usize> = value("--sizes")
         .unwrap_or_else(|| "2000,20000,200000,1000000".into())
         .split(',')
