@@ -1,6 +1,7 @@
 //! Criterion benchmarks of the 2D Boolean beside its peers: the union of a
 //! regular n-gon with a copy rotated by alpha degrees, every row of the
-//! dissertation's Table 7.4 (section 7.6), on Umbra, `i_overlay` 9 (32- and
+//! dissertation's Table 7.4 (section 7.6), on Umbra, the C++ Clipper2
+//! (`clipper2`), its Rust port (`clipper2-rust`), `i_overlay` 9 (32- and
 //! 64-bit engines) and `geo` 0.33 with identical coordinates.
 //!
 //! ```text
@@ -11,15 +12,19 @@
 //! Inputs are converted to each peer's native type before timing; only the
 //! union is measured. Sample counts and measurement times shrink as `n`
 //! grows so that the whole group takes a few minutes on two cores. Every
-//! peer's result is checked once before timing and a wrong combinatorics
-//! (not one ring of `4n` vertices) is printed to stderr, not hidden.
+//! peer's result is checked once before timing and a wrong result (not one
+//! ring of `4n` vertices of the exact area) is printed to stderr, not
+//! hidden.
 
 use criterion::{
     criterion_group, criterion_main, BenchmarkId, Criterion, SamplingMode, Throughput,
 };
 use std::hint::black_box;
 use std::time::Duration;
-use umbra_benches::{rotated_ngon_pair, Case, Geo, IOverlay, IOverlay64, Peer, Umbra, TABLE_7_4};
+use umbra_benches::{
+    exact_union_area, rotated_ngon_pair, Case, Clipper2, Clipper2Rust, Geo, IOverlay, IOverlay64,
+    Peer, Umbra, TABLE_7_4,
+};
 
 /// Sample size and measurement time for a row of `n` vertices.
 fn budget(n: usize) -> (usize, Duration) {
@@ -34,15 +39,17 @@ fn budget(n: usize) -> (usize, Duration) {
 /// Prints a note when `peer` does not get the exact combinatorics.
 fn check<P: Peer>(peer: &P, case: &Case, input: &P::Input) {
     match peer.stats(&peer.union(input)) {
-        Ok(s) if s.is_single_ring_with(case.expected_vertices()) => {}
+        Ok(s) if s.is_exact_union(case) => {}
         Ok(s) => eprintln!(
-            "note: {} on {}: {} rings, {} vertices, {} zero-length edges (expected 1 ring, {} vertices)",
+            "note: {} on {}: {} rings, {} vertices, {} zero-length edges, area {} (expected 1 ring, {} vertices, area {})",
             peer.name(),
             case.label(),
             s.rings,
             s.vertices,
             s.zero_length_edges,
-            case.expected_vertices()
+            s.area,
+            case.expected_vertices(),
+            exact_union_area(case.n, case.alpha_deg)
         ),
         Err(e) => eprintln!("note: {} on {}: {e}", peer.name(), case.label()),
     }
@@ -81,6 +88,8 @@ fn rotated_ngon_union(c: &mut Criterion) {
         group.measurement_time(time);
         group.throughput(Throughput::Elements(2 * case.n as u64));
         bench_peer(&mut group, &Umbra, case);
+        bench_peer(&mut group, &Clipper2, case);
+        bench_peer(&mut group, &Clipper2Rust, case);
         bench_peer(&mut group, &IOverlay, case);
         bench_peer(&mut group, &IOverlay64, case);
         bench_peer(&mut group, &Geo, case);

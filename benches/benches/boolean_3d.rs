@@ -2,8 +2,8 @@
 //! minus a sphere shifted by half its radius (issue 3), UV spheres of 2k
 //! to 200k triangles per operand, Umbra's triangle-mesh variant, its
 //! polygon-mesh variant on the same triangles (`umbra-poly`) and on the
-//! quadrilateral spheres they split (`umbra-quads`, the same vertices), and
-//! `manifold-rust` 0.19 on the triangles. Larger sizes
+//! quadrilateral spheres they split (`umbra-quads`, the same vertices),
+//! `manifold-rust` 0.19 and `boolmesh` 0.2 on the triangles. Larger sizes
 //! (to 2M), one-thread runs and peak memory are in the `perf-table-3d`
 //! binary.
 //!
@@ -16,7 +16,7 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use std::hint::black_box;
 use std::time::Duration;
 use umbra_benches::solid::{
-    sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
+    sphere_pair, Boolmesh, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
 };
 
 fn bench_peer<P: SolidPeer>(
@@ -45,6 +45,7 @@ fn spheres(c: &mut Criterion) {
         bench_peer(&mut group, &UmbraPolygons, size);
         bench_peer(&mut group, &UmbraQuads, size);
         bench_peer(&mut group, &ManifoldRust, size);
+        bench_peer(&mut group, &Boolmesh, size);
     }
     group.finish();
 }

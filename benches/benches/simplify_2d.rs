@@ -1,5 +1,5 @@
-//! Criterion benchmarks of simplification beside `i_overlay` and `geo`
-//! (issue 4): every row of `umbra_benches::sweep::sweep_cases(5000)` with
+//! Criterion benchmarks of simplification beside the C++ Clipper2
+//! (`clipper2`), `clipper2-rust`, `i_overlay` and `geo` (issue 4): every row of `umbra_benches::sweep::sweep_cases(5000)` with
 //! identical coordinates: the ten rotated n-gon unions of Table 7.4 (up to
 //! n = 20,000, alpha = 9.88e-7 degrees; with `i_overlay`'s Boolean and
 //! `geo`'s union beside the simplifications), random topological polygons
@@ -28,7 +28,8 @@ use criterion::{
 use std::hint::black_box;
 use std::time::Duration;
 use umbra_benches::sweep::{
-    sweep_cases, GeoSweep, IOverlayBoolSweep, IOverlaySweep, SweepCase, SweepPeer, UmbraSweep,
+    sweep_cases, Clipper2RustSweep, Clipper2Sweep, GeoSweep, IOverlayBoolSweep, IOverlaySweep,
+    SweepCase, SweepPeer, UmbraSweep,
 };
 
 /// Warm-up time, sample size and measurement time for a row with `work`
@@ -110,6 +111,8 @@ fn simplification(c: &mut Criterion) {
         let vertices: usize = case.rings.iter().map(Vec::len).sum();
         group.throughput(Throughput::Elements(vertices as u64));
         bench_peer(&mut group, &UmbraSweep, &case);
+        bench_peer(&mut group, &Clipper2Sweep, &case);
+        bench_peer(&mut group, &Clipper2RustSweep, &case);
         bench_peer(&mut group, &IOverlaySweep { wide: false }, &case);
         bench_peer(&mut group, &IOverlaySweep { wide: true }, &case);
         bench_peer(&mut group, &IOverlayBoolSweep { wide: false }, &case);

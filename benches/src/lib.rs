@@ -1,6 +1,7 @@
 //! Inputs and peers for Umbra's benchmarks: deterministic input generators
 //! and a [`Peer`] trait with one implementation per library under test
-//! (Umbra's 2D Boolean, `i_overlay` 9 and `geo` 0.33), so that every
+//! (Umbra's 2D Boolean, the C++ Clipper2 through the `clipper2` crate, its
+//! Rust port `clipper2-rust`, `i_overlay` 9 and `geo` 0.33), so that every
 //! library runs the same operation on the same coordinates in one process.
 //! [`solid`] holds the 3D rows (beside `manifold-rust`) and [`sweep`] the
 //! simplification rows (beside `i_overlay`'s `simplify_shape` and `geo`).
@@ -33,6 +34,8 @@
 #![forbid(unsafe_code)]
 #![warn(missing_docs)]
 
+pub mod batch;
+pub mod clipper;
 mod error;
 mod generate;
 mod peers;
@@ -41,4 +44,15 @@ pub mod sweep;
 
 pub use error::BenchError;
 pub use generate::{random_star_polygon, regular_ngon, rotated_ngon_pair, Case, Ring, TABLE_7_4};
-pub use peers::{Geo, IOverlay, IOverlay64, Peer, RingStats, Umbra};
+pub use peers::{
+    exact_union_area, Clipper2, Clipper2Rust, Geo, IOverlay, IOverlay64, Peer, RingStats, Umbra,
+};
+
+/// The value after the command-line flag `name` in `args`, if any (the
+/// benchmark binaries' `--flag value` arguments).
+pub fn flag_value(args: &[String], name: &str) -> Option<String> {
+    args.iter()
+        .position(|a| a == name)
+        .and_then(|i| args.get(i + 1))
+        .cloned()
+}

@@ -1,7 +1,10 @@
-//! The [`Peer`] trait and its implementations: Umbra's 2D Boolean and the
-//! two Rust peers, `i_overlay` 9 (float API, 32- and 64-bit integer
-//! engines) and `geo` 0.33 (`BooleanOps`, itself built on `i_overlay` 4).
+//! The [`Peer`] trait and its implementations: Umbra's 2D Boolean, the C++
+//! Clipper2 (`clipper2` crate) and its pure-Rust port (`clipper2-rust`),
+//! both on Clipper2's `i64` engine at the grid of [`crate::clipper`],
+//! `i_overlay` 9 (float API, 32- and 64-bit integer engines) and `geo` 0.33
+//! (`BooleanOps`, itself built on `i_overlay` 4).
 
+use crate::clipper::{cpp_paths, cpp_rings, rust_paths, rust_rings, Fine};
 use crate::{BenchError, Ring};
 use boolean_2d::{boolean, BooleanError, BooleanOp, BooleanOutput};
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon};
@@ -10,8 +13,9 @@ use i_overlay::core::overlay_rule::OverlayRule;
 use i_overlay::float::single::SingleFloatOverlay;
 use topology::PolygonSet2;
 
-/// The shape of a result: how many rings and how many vertices in all.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+/// The shape of a result: how many rings and how many vertices in all, and
+/// the area they enclose.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct RingStats {
     /// The number of rings (outer boundaries and holes alike).
     pub rings: usize,
@@ -21,6 +25,24 @@ pub struct RingStats {
     /// same coordinates, the closing edge included); they are counted in
     /// `vertices`.
     pub zero_length_edges: usize,
+    /// The sum of the rings' signed areas (shoelace formula).
+    pub area: f64,
+}
+
+/// The exact area of the union of a Table 7.4 pair: two regular `n`-gons
+/// of circumradius 1, the second rotated by `alpha_deg` degrees (less than
+/// one edge's angle). Both are the intersections of `n` half-planes at the
+/// apothem `a = cos(pi / n)` from the centre, so their intersection is the
+/// `2n`-gon circumscribed about the circle of radius `a` whose edge normals
+/// are `alpha` and `2 pi / n - alpha` apart, alternately, of area
+/// `n a^2 (tan(alpha / 2) + tan(pi / n - alpha / 2))`; each n-gon has area
+/// `n a^2 tan(pi / n)`, and the union is twice that less the intersection.
+pub fn exact_union_area(n: usize, alpha_deg: f64) -> f64 {
+    let nf = n as f64;
+    let half = std::f64::consts::PI / nf;
+    let alpha = alpha_deg.to_radians();
+    let a2 = half.cos() * half.cos();
+    nf * a2 * (2.0 * half.tan() - (alpha / 2.0).tan() - (half - alpha / 2.0).tan())
 }
 
 impl RingStats {
@@ -34,8 +56,24 @@ impl RingStats {
             stats.vertices += ring.len();
             let next = ring.iter().skip(1).chain(ring.first());
             stats.zero_length_edges += ring.iter().zip(next).filter(|(p, q)| p == q).count();
+            let next = ring.iter().skip(1).chain(ring.first());
+            stats.area += ring
+                .iter()
+                .zip(next)
+                .map(|(p, q)| p[0] * q[1] - q[0] * p[1])
+                .sum::<f64>()
+                / 2.0;
         }
         stats
+    }
+
+    /// True when the result is the exact union of the Table 7.4 row
+    /// `case`: one ring of `4n` vertices, no zero-length edge, and the area
+    /// of [`exact_union_area`] to 1e-9 relative (either orientation).
+    pub fn is_exact_union(&self, case: &crate::Case) -> bool {
+        let want = exact_union_area(case.n, case.alpha_deg);
+        self.is_single_ring_with(case.expected_vertices())
+            && (self.area.abs() - want).abs() <= 1e-9 * want
     }
 
     /// True when the result is exactly one ring of `vertices` vertices with
@@ -245,6 +283,69 @@ impl Peer for Geo {
     }
 }
 
+/// The C++ Clipper2 through the `clipper2` crate: `clipper2::union` of the
+/// two operands (subject and clip) by the nonzero rule, on its `i64`
+/// engine with 2^50 grid units per unit ([`crate::clipper`]). The API
+/// takes its paths by value and copies them into the C++ structures, so
+/// the timed call includes one copy of the input (a `Vec` clone and the
+/// crate's own conversion).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clipper2;
+
+impl Peer for Clipper2 {
+    type Input = (clipper2::Paths<Fine>, clipper2::Paths<Fine>);
+    type Output = Result<clipper2::Paths<Fine>, clipper2::ClipperError>;
+
+    fn name(&self) -> &'static str {
+        "clipper2"
+    }
+
+    fn prepare(&self, a: &[Ring], b: &[Ring]) -> Self::Input {
+        (cpp_paths(a), cpp_paths(b))
+    }
+
+    fn union(&self, input: &Self::Input) -> Self::Output {
+        clipper2::union(
+            input.0.clone(),
+            input.1.clone(),
+            clipper2::FillRule::NonZero,
+        )
+    }
+
+    fn rings(&self, output: &Self::Output) -> Result<Vec<Ring>, BenchError> {
+        output
+            .as_ref()
+            .map(cpp_rings)
+            .map_err(|e| BenchError::Peer(format!("clipper2: {e}")))
+    }
+}
+
+/// `clipper2-rust`, the pure-Rust port of Clipper2: `union_64` of the two
+/// operands by the nonzero rule, on the same `i64` grid as [`Clipper2`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clipper2Rust;
+
+impl Peer for Clipper2Rust {
+    type Input = (clipper2_rust::Paths64, clipper2_rust::Paths64);
+    type Output = clipper2_rust::Paths64;
+
+    fn name(&self) -> &'static str {
+        "clipper2-rust"
+    }
+
+    fn prepare(&self, a: &[Ring], b: &[Ring]) -> Self::Input {
+        (rust_paths(a), rust_paths(b))
+    }
+
+    fn union(&self, input: &Self::Input) -> Self::Output {
+        clipper2_rust::union_64(&input.0, &input.1, clipper2_rust::FillRule::NonZero)
+    }
+
+    fn rings(&self, output: &Self::Output) -> Result<Vec<Ring>, BenchError> {
+        Ok(rust_rings(output))
+    }
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -269,10 +370,55 @@ mod tests {
             ("i_overlay", check(&IOverlay, n, 1.0e-2)),
             ("i_overlay-i64", check(&IOverlay64, n, 1.0e-2)),
             ("geo", check(&Geo, n, 1.0e-2)),
+            ("clipper2", check(&Clipper2, n, 1.0e-2)),
+            ("clipper2-rust", check(&Clipper2Rust, n, 1.0e-2)),
         ];
         for (name, s) in stats {
             assert!(s.is_single_ring_with(expected), "{name}: {s:?}");
         }
+    }
+
+    #[test]
+    fn the_exact_union_area_is_the_shoelace_area_of_umbras_ring() {
+        for (n, alpha) in [
+            (3, 30.0),
+            (4, 10.0),
+            (100, 1.0e-2),
+            (1000, 1.0e-4),
+            (20000, 9.88e-7),
+        ] {
+            let (a, b) = rotated_ngon_pair(n, alpha);
+            let out = Umbra.union(&Umbra.prepare(&[a], &[b]));
+            let s = Umbra.stats(&out).unwrap_or_default();
+            let want = exact_union_area(n, alpha);
+            assert!(
+                (s.area - want).abs() <= 1e-12 * want,
+                "n={n}: {} vs {want}",
+                s.area
+            );
+            assert!(
+                s.is_exact_union(&crate::Case {
+                    n,
+                    alpha_deg: alpha
+                }),
+                "n={n}"
+            );
+        }
+        // Two squares rotated by 45 degrees: the octagram of area
+        // 2 * 2 - (the regular octagon of apothem sqrt(1/2)) = 4 - 4 (sqrt 2 - 1).
+        let want = 4.0 - 4.0 * (2f64.sqrt() - 1.0);
+        assert!((exact_union_area(4, 45.0) - want).abs() < 1e-12);
+        // A result of the right counts but the wrong area is not exact.
+        let wrong = RingStats {
+            rings: 1,
+            vertices: 400,
+            zero_length_edges: 0,
+            area: 1.0,
+        };
+        assert!(!wrong.is_exact_union(&crate::Case {
+            n: 100,
+            alpha_deg: 1.0e-2
+        }));
     }
 
     #[test]

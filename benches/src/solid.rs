@@ -2,8 +2,9 @@
 //! (the 3D bench of issue 3), as UV spheres in two variants (triangles;
 //! quadrilaterals with triangle fans at the poles), run on Umbra's
 //! triangle-mesh Boolean (triangles), its polygon-mesh Boolean (on the
-//! triangles, and on the quadrilaterals) and on `manifold-rust` 0.19 (a
-//! Rust port of Manifold) with identical coordinates. Every peer is handed
+//! triangles, and on the quadrilaterals), on `manifold-rust` 0.19 (a
+//! Rust port of Manifold) and on `boolmesh` 0.2 (a pure-Rust mesh Boolean
+//! after Manifold's design) with identical coordinates. Every peer is handed
 //! the triangle spheres; the quadrilateral peer merges them back into the
 //! quadrilaterals they split ([`quads_of_uv_sphere`]), so that all run on
 //! the same vertices and the same surface.
@@ -97,6 +98,26 @@ pub struct SolidStats {
     pub valid: bool,
 }
 
+impl SolidStats {
+    /// What a library that returned no result gets: no facets, a NaN
+    /// volume, not valid.
+    pub const FAILED: SolidStats = SolidStats {
+        facets: 0,
+        volume: f64::NAN,
+        valid: false,
+    };
+
+    /// The statistics of a polygon-mesh result: facets, volume and shape
+    /// closure (section 4.2).
+    pub fn of_mesh(m: &PolygonMesh) -> SolidStats {
+        SolidStats {
+            facets: m.facets.len(),
+            volume: polygon_volume(m),
+            valid: m.check_topology().is_ok(),
+        }
+    }
+}
+
 /// A 3D library under test: `prepare` converts (not timed), `difference`
 /// runs `A - B` (timed), `stats` reads the result (not timed).
 pub trait SolidPeer {
@@ -139,11 +160,7 @@ impl SolidPeer for UmbraTriangles {
                 volume: triangle_volume(m),
                 valid: m.check_topology().is_ok(),
             },
-            None => SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
+            None => SolidStats::FAILED,
         }
     }
 }
@@ -168,16 +185,8 @@ impl SolidPeer for UmbraPolygons {
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
         match out {
-            Some(m) => SolidStats {
-                facets: m.facets.len(),
-                volume: polygon_volume(m),
-                valid: m.check_topology().is_ok(),
-            },
-            None => SolidStats {
-                facets: 0,
-                volume: f64::NAN,
-                valid: false,
-            },
+            Some(m) => SolidStats::of_mesh(m),
+            None => SolidStats::FAILED,
         }
     }
 }
@@ -211,9 +220,18 @@ impl SolidPeer for UmbraQuads {
 #[derive(Clone, Copy, Debug, Default)]
 pub struct ManifoldRust;
 
-/// A triangle mesh as Manifold's `MeshGL64`.
-fn mesh_gl64(m: &TriangleMesh) -> MeshGL64 {
-    MeshGL64 {
+/// Triangle count, volume and status of a `manifold-rust` result.
+pub fn manifold_stats(m: &Manifold) -> SolidStats {
+    SolidStats {
+        facets: m.num_tri(),
+        volume: m.volume(),
+        valid: format!("{:?}", m.status()) == "NoError",
+    }
+}
+
+/// A triangle mesh as a `manifold-rust` manifold (through `MeshGL64`).
+pub fn manifold_of(m: &TriangleMesh) -> Manifold {
+    Manifold::from_mesh_gl64(&MeshGL64 {
         num_prop: 3,
         vert_properties: m.vertices.iter().flatten().copied().collect(),
         tri_verts: m
@@ -223,7 +241,7 @@ fn mesh_gl64(m: &TriangleMesh) -> MeshGL64 {
             .map(|&v| u64::from(v))
             .collect(),
         ..MeshGL64::default()
-    }
+    })
 }
 
 impl SolidPeer for ManifoldRust {
@@ -233,10 +251,7 @@ impl SolidPeer for ManifoldRust {
         "manifold-rust"
     }
     fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
-        (
-            Manifold::from_mesh_gl64(&mesh_gl64(a)),
-            Manifold::from_mesh_gl64(&mesh_gl64(b)),
-        )
+        (manifold_of(a), manifold_of(b))
     }
     fn difference(&self, input: &Self::Input) -> Self::Output {
         let out = input.0.difference(&input.1);
@@ -245,11 +260,60 @@ impl SolidPeer for ManifoldRust {
         out
     }
     fn stats(&self, out: &Self::Output) -> SolidStats {
-        SolidStats {
-            facets: out.num_tri(),
-            volume: out.volume(),
-            valid: format!("{:?}", out.status()) == "NoError",
-        }
+        manifold_stats(out)
+    }
+}
+
+/// `boolmesh` 0.2 (feature `rayon`): `Manifold::new` of each operand (not
+/// timed; it welds, sorts and checks the mesh), then `compute_boolean`
+/// with `OpType::Subtract` (timed).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Boolmesh;
+
+/// A triangle mesh as a `boolmesh` manifold, or its refusal.
+pub fn boolmesh_of(m: &TriangleMesh) -> Result<boolmesh::prelude::Manifold, String> {
+    let pos: Vec<f64> = m.vertices.iter().flatten().copied().collect();
+    let idx: Vec<usize> = m.triangles.iter().flatten().map(|&v| v as usize).collect();
+    boolmesh::prelude::Manifold::new(&pos, &idx)
+}
+
+/// Triangle count, volume and closedness of a `boolmesh` result.
+pub fn boolmesh_stats(m: &boolmesh::prelude::Manifold) -> SolidStats {
+    let p = |i: usize| {
+        let v = m.ps[i];
+        [v.x, v.y, v.z]
+    };
+    let volume =
+        m.hs.chunks(3)
+            .map(|t| {
+                let (a, b, c) = (p(t[0].tail), p(t[1].tail), p(t[2].tail));
+                (a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
+                    + a[2] * (b[0] * c[1] - b[1] * c[0]))
+                    / 6.0
+            })
+            .sum();
+    SolidStats {
+        facets: m.hs.len() / 3,
+        volume,
+        valid: m.is_manifold(),
+    }
+}
+
+impl SolidPeer for Boolmesh {
+    type Input = Option<(boolmesh::prelude::Manifold, boolmesh::prelude::Manifold)>;
+    type Output = Option<boolmesh::prelude::Manifold>;
+    fn name(&self) -> &'static str {
+        "boolmesh"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        Some((boolmesh_of(a).ok()?, boolmesh_of(b).ok()?))
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        let (a, b) = input.as_ref()?;
+        boolmesh::compute_boolean(a, b, boolmesh::prelude::OpType::Subtract).ok()
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        out.as_ref().map_or(SolidStats::FAILED, boolmesh_stats)
     }
 }
 
@@ -292,10 +356,12 @@ mod tests {
         let p = UmbraPolygons.stats(&UmbraPolygons.difference(&UmbraPolygons.prepare(&a, &b)));
         let q = UmbraQuads.stats(&UmbraQuads.difference(&UmbraQuads.prepare(&a, &b)));
         let m = ManifoldRust.stats(&ManifoldRust.difference(&ManifoldRust.prepare(&a, &b)));
+        let bm = Boolmesh.stats(&Boolmesh.difference(&Boolmesh.prepare(&a, &b)));
         assert!(
-            u.valid && p.valid && q.valid && m.valid,
-            "{u:?} {p:?} {q:?} {m:?}"
+            u.valid && p.valid && q.valid && m.valid && bm.valid,
+            "{u:?} {p:?} {q:?} {m:?} {bm:?}"
         );
+        assert!((u.volume - bm.volume).abs() < 1e-9, "{u:?} {bm:?}");
         assert!((u.volume - p.volume).abs() < 1e-12, "{u:?} {p:?}");
         // The quadrilaterals are the triangle pairs' union: nearly the same
         // surface (each quadrilateral is planar up to rounding), fewer

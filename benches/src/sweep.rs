@@ -1,6 +1,9 @@
 //! Inputs and peers for simplification (the bench of issue 4): Umbra's
-//! sweep (`simplify_2d`, chapters 6-7) beside `i_overlay` 9
-//! (`simplify_shape`, 32- and 64-bit engines) with the matching fill rule,
+//! sweep (`simplify_2d`, chapters 6-7) beside the C++ Clipper2 (`clipper2`)
+//! and its Rust port (`clipper2-rust`), each the union of all rings as
+//! subjects by the matching fill rule on the grid of [`crate::clipper`],
+//! `i_overlay` 9 (`simplify_shape`, 32- and 64-bit engines) with the
+//! matching fill rule,
 //! `i_overlay`'s Boolean (the union of the two rings as subject and clip,
 //! with the matching fill rule) on the n-gon rows, and `geo` 0.33 where it
 //! has the operation (the n-gon union rows).
@@ -14,6 +17,7 @@
 //! input: two checkerboards offset by half a cell, a spiral strip against
 //! its rotated copy, and nested squares of alternating orientation.
 
+use crate::clipper::{cpp_paths, cpp_rings, rust_paths, rust_rings, Fine};
 use crate::{rotated_ngon_pair, Case, Ring, TABLE_7_4};
 use geo::{BooleanOps, Coord, LineString, MultiPolygon, Polygon};
 use i_overlay::core::fill_rule::FillRule;
@@ -54,6 +58,24 @@ impl SweepRule {
             SweepRule::NonZero => FillRule::NonZero,
             SweepRule::EvenOdd => FillRule::EvenOdd,
             SweepRule::Positive => FillRule::Positive,
+        }
+    }
+
+    /// Clipper2's fill rule (the C++ library's, through `clipper2`).
+    pub fn clipper2(self) -> clipper2::FillRule {
+        match self {
+            SweepRule::NonZero => clipper2::FillRule::NonZero,
+            SweepRule::EvenOdd => clipper2::FillRule::EvenOdd,
+            SweepRule::Positive => clipper2::FillRule::Positive,
+        }
+    }
+
+    /// `clipper2-rust`'s fill rule.
+    pub fn clipper2_rust(self) -> clipper2_rust::FillRule {
+        match self {
+            SweepRule::NonZero => clipper2_rust::FillRule::NonZero,
+            SweepRule::EvenOdd => clipper2_rust::FillRule::EvenOdd,
+            SweepRule::Positive => clipper2_rust::FillRule::Positive,
         }
     }
 
@@ -342,6 +364,58 @@ impl SweepPeer for IOverlaySweep {
     }
 }
 
+/// The C++ Clipper2 (`clipper2` crate): the union of every ring as a
+/// subject (no clip) by the row's fill rule, which is Clipper2's
+/// simplification; on its `i64` engine at the grid of [`crate::clipper`].
+/// The timed call includes one copy of the input paths (the API takes
+/// them by value and copies them into the C++ structures).
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clipper2Sweep;
+
+impl SweepPeer for Clipper2Sweep {
+    type Input = (clipper2::Paths<Fine>, clipper2::FillRule);
+    type Output = Result<clipper2::Paths<Fine>, clipper2::ClipperError>;
+    fn name(&self) -> &'static str {
+        "clipper2"
+    }
+    fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
+        Some((cpp_paths(&case.rings), case.rule.clipper2()))
+    }
+    fn run(&self, input: &Self::Input) -> Self::Output {
+        clipper2::union(
+            input.0.clone(),
+            clipper2::Paths::<Fine>::new(Vec::new()),
+            input.1,
+        )
+    }
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
+        let paths = out.as_ref().map_err(|e| format!("clipper2: {e}"))?;
+        Ok(stats_of(&cpp_rings(paths)))
+    }
+}
+
+/// `clipper2-rust`: `union_subjects_64` of every ring by the row's fill
+/// rule, on the same grid as [`Clipper2Sweep`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct Clipper2RustSweep;
+
+impl SweepPeer for Clipper2RustSweep {
+    type Input = (clipper2_rust::Paths64, clipper2_rust::FillRule);
+    type Output = clipper2_rust::Paths64;
+    fn name(&self) -> &'static str {
+        "clipper2-rust"
+    }
+    fn prepare(&self, case: &SweepCase) -> Option<Self::Input> {
+        Some((rust_paths(&case.rings), case.rule.clipper2_rust()))
+    }
+    fn run(&self, input: &Self::Input) -> Self::Output {
+        clipper2_rust::union_subjects_64(&input.0, input.1)
+    }
+    fn stats(&self, out: &Self::Output) -> Result<SweepStats, String> {
+        Ok(stats_of(&rust_rings(out)))
+    }
+}
+
 /// `i_overlay` 9's Boolean with the matching fill rule on the n-gon rows:
 /// `SingleFloatOverlay::overlay` of the first n-gon (subject) and the
 /// second (clip) with `OverlayRule::Union` and the row's fill rule, on the
@@ -462,6 +536,24 @@ mod tests {
             let u = run(&UmbraSweep, case);
             let i = run(&IOverlaySweep { wide: true }, case);
             assert!(close(u.area, i.area), "{}: {u:?} {i:?}", case.label);
+            let c = run(&Clipper2Sweep, case);
+            let r = run(&Clipper2RustSweep, case);
+            assert!(
+                close(u.area.abs(), c.area.abs()),
+                "{}: {u:?} {c:?}",
+                case.label
+            );
+            assert!(
+                close(u.area.abs(), r.area.abs()),
+                "{}: {u:?} {r:?}",
+                case.label
+            );
+            assert_eq!(
+                (c.rings, c.vertices),
+                (r.rings, r.vertices),
+                "{}",
+                case.label
+            );
             if let Some((rings, vertices)) = case.expected {
                 assert_eq!(u.rings, rings, "{}", case.label);
                 if let Some(v) = vertices {
@@ -518,6 +610,10 @@ mod tests {
             let i = run(&IOverlaySweep { wide: true }, &case);
             assert!(close(u.area, area), "umbra {rule:?}: {u:?}");
             assert!(close(i.area, area), "i_overlay {rule:?}: {i:?}");
+            let c = run(&Clipper2Sweep, &case);
+            let r = run(&Clipper2RustSweep, &case);
+            assert!(close(c.area.abs(), area), "clipper2 {rule:?}: {c:?}");
+            assert!(close(r.area.abs(), area), "clipper2-rust {rule:?}: {r:?}");
         }
         // Positive and nonzero differ once a loop is clockwise outside.
         let mut cw = square(10.0, 10.0, 1.0);

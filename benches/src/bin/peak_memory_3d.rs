@@ -8,7 +8,7 @@
 
 use peak_alloc::PeakAlloc;
 use umbra_benches::solid::{
-    sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
+    sphere_pair, Boolmesh, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads, UmbraTriangles,
 };
 
 #[global_allocator]
@@ -28,7 +28,7 @@ fn measure<P: SolidPeer>(peer: &P, size: usize) {
 fn main() {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let (Some(peer), Some(size)) = (args.first(), args.get(1).and_then(|s| s.parse().ok())) else {
-        eprintln!("usage: peak-memory-3d umbra-tri|umbra-poly|umbra-quads|manifold-rust TRIANGLES");
+        eprintln!("usage: peak-memory-3d umbra-tri|umbra-poly|umbra-quads|manifold-rust|boolmesh TRIANGLES");
         std::process::exit(2);
     };
     match peer.as_str() {
@@ -36,6 +36,7 @@ fn main() {
         "umbra-poly" => measure(&UmbraPolygons, size),
         "umbra-quads" => measure(&UmbraQuads, size),
         "manifold-rust" => measure(&ManifoldRust, size),
+        "boolmesh" => measure(&Boolmesh, size),
         other => {
             eprintln!("unknown peer {other}");
             std::process::exit(2);

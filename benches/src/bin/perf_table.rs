@@ -2,8 +2,9 @@
 //! regular n-gon with a copy rotated by alpha degrees) on Umbra and its
 //! peers in one process and prints markdown tables for
 //! `docs/performance.md`: the median time of the union alone, the result's
-//! ring and vertex counts and whether they are the exact combinatorics (one
-//! ring, `4n` vertices), and each peer's time over Umbra's.
+//! ring and vertex counts and whether they are the exact union (one ring,
+//! `4n` vertices, the exact area to 1e-9), and each peer's time over
+//! Umbra's.
 //!
 //! ```text
 //! cargo run --release -p umbra-benches --bin perf-table -- [--budget-ms 1500] [--max-runs 101] [--rows 0,3,9] [--peers umbra,geo]
@@ -17,7 +18,8 @@
 
 use std::time::{Duration, Instant, SystemTime, UNIX_EPOCH};
 use umbra_benches::{
-    rotated_ngon_pair, Case, Geo, IOverlay, IOverlay64, Peer, RingStats, Umbra, TABLE_7_4,
+    rotated_ngon_pair, Case, Clipper2, Clipper2Rust, Geo, IOverlay, IOverlay64, Peer, RingStats,
+    Umbra, TABLE_7_4,
 };
 
 /// Command-line settings.
@@ -29,7 +31,14 @@ struct Config {
 }
 
 /// The peers in table order.
-const PEERS: [&str; 4] = ["umbra", "i_overlay", "i_overlay-i64", "geo"];
+const PEERS: [&str; 6] = [
+    "umbra",
+    "clipper2",
+    "clipper2-rust",
+    "i_overlay",
+    "i_overlay-i64",
+    "geo",
+];
 
 fn parse_args() -> Result<Config, String> {
     let mut config = Config {
@@ -71,7 +80,7 @@ fn parse_args() -> Result<Config, String> {
             }
             "-h" | "--help" => {
                 return Err(
-                    "usage: perf-table [--budget-ms MS] [--max-runs K] [--rows I,J,...] [--peers umbra,i_overlay,i_overlay-i64,geo]".into(),
+                    "usage: perf-table [--budget-ms MS] [--max-runs K] [--rows I,J,...] [--peers umbra,clipper2,clipper2-rust,i_overlay,i_overlay-i64,geo]".into(),
                 )
             }
             other => return Err(format!("unknown argument {other}")),
@@ -158,10 +167,23 @@ fn ms(d: Duration) -> String {
     }
 }
 
+/// The relative area error of a result against the exact union.
+fn area_err(s: &RingStats, case: &Case) -> f64 {
+    let want = umbra_benches::exact_union_area(case.n, case.alpha_deg);
+    (s.area.abs() - want) / want
+}
+
 fn verdict(m: &Measurement, case: &Case) -> String {
     match &m.stats {
-        Ok(s) if s.is_single_ring_with(case.expected_vertices()) => {
+        Ok(s) if s.is_exact_union(case) => {
             format!("1 ring, {} v, correct", s.vertices)
+        }
+        Ok(s) if s.is_single_ring_with(case.expected_vertices()) => {
+            format!(
+                "1 ring, {} v, area {:.3e} off, **incorrect**",
+                s.vertices,
+                area_err(s, case)
+            )
         }
         Ok(s) => {
             let zero = if s.zero_length_edges > 0 {
@@ -170,10 +192,11 @@ fn verdict(m: &Measurement, case: &Case) -> String {
                 String::new()
             };
             format!(
-                "{} ring{}, {} v{zero}, **incorrect**",
+                "{} ring{}, {} v{zero}, area {:.3e} off, **incorrect**",
                 s.rings,
                 if s.rings == 1 { "" } else { "s" },
-                s.vertices
+                s.vertices,
+                area_err(s, case)
             )
         }
         Err(e) => format!("error: {e}"),
@@ -228,6 +251,8 @@ fn main() {
                 "umbra" => measure(&Umbra, &case, &config),
                 "i_overlay" => measure(&IOverlay, &case, &config),
                 "i_overlay-i64" => measure(&IOverlay64, &case, &config),
+                "clipper2" => measure(&Clipper2, &case, &config),
+                "clipper2-rust" => measure(&Clipper2Rust, &case, &config),
                 _ => measure(&Geo, &case, &config),
             })
             .collect();
@@ -266,7 +291,7 @@ fn main() {
         print!("| {} | {:e} |", case.n, case.alpha_deg);
         let mut wrong = Vec::new();
         for m in row {
-            let ok = matches!(&m.stats, Ok(s) if s.is_single_ring_with(case.expected_vertices()));
+            let ok = matches!(&m.stats, Ok(s) if s.is_exact_union(case));
             if !ok {
                 wrong.push(m.peer);
             }
@@ -290,7 +315,7 @@ fn main() {
     println!();
 
     // Details: one line per row and peer.
-    println!("| n | alpha (deg) | peer | median ms | runs | result (expected 1 ring, 4n v) |");
+    println!("| n | alpha (deg) | peer | median ms | runs | result (expected 1 ring, 4n v, exact area) |");
     println!("|---:|---:|---|---:|---:|---|");
     for (case, row, _) in &rows {
         for m in row {

@@ -2,7 +2,8 @@
 //! 3), Umbra's triangle-mesh variant, its polygon-mesh variant on the same
 //! triangles (`umbra-poly`) and on the quadrilateral spheres the triangles
 //! split (`umbra-quads`: the same vertices, UV quadrilaterals with triangle
-//! fans at the poles), beside `manifold-rust` 0.19 on the triangles, with
+//! fans at the poles), beside `manifold-rust` 0.19 and `boolmesh` 0.2 on
+//! the triangles, with
 //! one thread and all threads, printing a markdown table for `docs/performance.md`: best time
 //! of the difference alone, peak extra resident memory during it, result
 //! size, volume against the analytic lens volume, validity, and ratios.
@@ -24,12 +25,18 @@
 use std::process::Command;
 use std::time::Instant;
 use umbra_benches::solid::{
-    analytic_difference_volume, sphere_pair, ManifoldRust, SolidPeer, UmbraPolygons, UmbraQuads,
-    UmbraTriangles,
+    analytic_difference_volume, sphere_pair, Boolmesh, ManifoldRust, SolidPeer, UmbraPolygons,
+    UmbraQuads, UmbraTriangles,
 };
 
 /// The peers, in table order (`cells` below indexes them).
-const PEERS: [&str; 4] = ["umbra-tri", "umbra-poly", "umbra-quads", "manifold-rust"];
+const PEERS: [&str; 5] = [
+    "umbra-tri",
+    "umbra-poly",
+    "umbra-quads",
+    "manifold-rust",
+    "boolmesh",
+];
 
 fn status_kb(field: &str) -> Option<u64> {
     let text = std::fs::read_to_string("/proc/self/status").ok()?;
@@ -71,6 +78,7 @@ fn child(args: &[String]) {
         "umbra-poly" => child_run(&UmbraPolygons, size, runs),
         "umbra-quads" => child_run(&UmbraQuads, size, runs),
         "manifold-rust" => child_run(&ManifoldRust, size, runs),
+        "boolmesh" => child_run(&Boolmesh, size, runs),
         other => panic!("unknown peer {other}"),
     }
 }
@@ -156,8 +164,8 @@ fn main() {
     println!(
         "<!-- perf-table-3d | {cores} logical cores | best of 3 runs (1 run at >= 1M triangles) | peak = VmHWM - VmRSS before the Boolean -->\n"
     );
-    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | umbra-quads ms | manifold-rust ms | manifold / umbra-tri | manifold / umbra-quads | heap peak MB (u-tri, u-poly, u-quads, manifold) | RSS growth MB (u-tri, u-quads, manifold) | umbra volume err (tri, quads) | manifold volume err | valid (u-tri, u-poly, u-quads, manifold) |");
-    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
+    println!("| triangles / operand | threads | umbra-tri ms | umbra-poly ms | umbra-quads ms | manifold-rust ms | boolmesh ms | manifold / umbra-tri | boolmesh / umbra-tri | manifold / umbra-quads | heap peak MB (u-tri, u-poly, u-quads, manifold, boolmesh) | RSS growth MB (u-tri, u-quads, manifold, boolmesh) | umbra volume err (tri, quads) | peers' volume err (manifold, boolmesh) | valid (u-tri, u-poly, u-quads, manifold, boolmesh) |");
+    println!("|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---|");
     for &size in &sizes {
         for &t in &threads {
             let cells: Vec<Option<Cell>> = PEERS.iter().map(|p| run_cell(p, size, t)).collect();
@@ -183,12 +191,23 @@ fn main() {
                 .iter()
                 .map(|c| {
                     c.as_ref().map_or("failed".into(), |c| {
-                        format!("{} ({} f)", if c.valid { "yes" } else { "NO" }, c.facets)
+                        // Correct: the library's validity check, and the
+                        // volume of Umbra's triangle variant (the same
+                        // polyhedral lens) to 1e-9 relative.
+                        let same = cells[0]
+                            .as_ref()
+                            .is_some_and(|u| (c.volume - u.volume).abs() <= 1e-9 * u.volume.abs());
+                        let verdict = match (c.valid, same) {
+                            (true, true) => "yes",
+                            (true, false) => "**volume differs**",
+                            _ => "**NO**",
+                        };
+                        format!("{verdict} ({} f)", c.facets)
                     })
                 })
                 .collect();
             println!(
-                "| {size} | {} | {} | {} | {} | {} | {} | {} | {}, {}, {}, {} | {}, {}, {} | {}, {} | {} | {} |",
+                "| {size} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {}, {}, {}, {}, {} | {}, {}, {}, {} | {}, {} | {}, {} | {} |",
                 if t == 0 {
                     format!("all ({cores})")
                 } else {
@@ -198,18 +217,23 @@ fn main() {
                 ms(&cells[1]),
                 ms(&cells[2]),
                 ms(&cells[3]),
+                ms(&cells[4]),
                 ratio(&cells[0], &cells[3]),
+                ratio(&cells[0], &cells[4]),
                 ratio(&cells[2], &cells[3]),
                 heap(&cells[0]),
                 heap(&cells[1]),
                 heap(&cells[2]),
                 heap(&cells[3]),
+                heap(&cells[4]),
                 mb(&cells[0]),
                 mb(&cells[2]),
                 mb(&cells[3]),
+                mb(&cells[4]),
                 err(&cells[0]),
                 err(&cells[2]),
                 err(&cells[3]),
+                err(&cells[4]),
                 valid.join(", ")
             );
         }

@@ -1,4 +1,6 @@
 //! `perf-table-simplify`: simplification (issue 4) on Umbra's sweep beside
+//! the C++ Clipper2 (`clipper2`) and its Rust port (`clipper2-rust`), each
+//! the union of all rings as subjects by the matching fill rule,
 //! `i_overlay` 9 `simplify_shape` (32- and 64-bit engines) with the
 //! matching fill rule, `i_overlay`'s Boolean (the union of the two n-gons
 //! as subject and clip, matching fill rule, both engines) and `geo` 0.33
@@ -29,8 +31,8 @@
 
 use std::time::{Duration, Instant};
 use umbra_benches::sweep::{
-    sweep_cases, GeoSweep, IOverlayBoolSweep, IOverlaySweep, SweepCase, SweepPeer, SweepStats,
-    UmbraSweep,
+    sweep_cases, Clipper2RustSweep, Clipper2Sweep, GeoSweep, IOverlayBoolSweep, IOverlaySweep,
+    SweepCase, SweepPeer, SweepStats, UmbraSweep,
 };
 
 /// Command-line settings.
@@ -229,8 +231,8 @@ fn main() {
     println!(
         "<!-- perf-table-simplify | {cores} logical cores | median of runs within the budget, the peers of a row taking turns | (x) = peer time / umbra time -->\n"
     );
-    println!("| row | rule | umbra ms | i_overlay ms (x) | i_overlay-i64 ms (x) | i_overlay-bool ms (x) | i_overlay-bool-i64 ms (x) | geo ms (x) | correct (umbra, i_overlay, i64, bool, bool-i64, geo) | umbra rings / vertices |");
-    println!("|---|---|---:|---:|---:|---:|---:|---:|---|---:|");
+    println!("| row | rule | umbra ms | i_overlay ms (x) | i_overlay-i64 ms (x) | i_overlay-bool ms (x) | i_overlay-bool-i64 ms (x) | geo ms (x) | clipper2 ms (x) | clipper2-rust ms (x) | correct (umbra, i_overlay, i64, bool, bool-i64, geo, clipper2, clipper2-rust) | umbra rings / vertices |");
+    println!("|---|---|---:|---:|---:|---:|---:|---:|---:|---:|---|---:|");
     let rows = sweep_cases(config.max_random)
         .into_iter()
         .filter(|c| config.rows.is_empty() || config.rows.iter().any(|s| c.label.contains(s)));
@@ -253,6 +255,8 @@ fn main() {
             start(&bool32, &case),
             start(&bool64, &case),
             start(&geo, &case),
+            start(&Clipper2Sweep, &case),
+            start(&Clipper2RustSweep, &case),
         ];
         time_in_turns(&mut started, config.budget);
         let mut outcomes = started.into_iter().map(|s| s.outcome);

@@ -18,7 +18,9 @@
 //!   [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
 //! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
 //!   (triangle meshes), [`triangulate_mesh`], and [`boolean_solid`], which
-//!   runs either [`MeshVariant`] on any valid operands.
+//!   runs either [`MeshVariant`] on any valid operands; n-ary in one call,
+//!   as a balanced parallel tree: [`boolean_solids`], [`union_all_solids`]
+//!   and [`difference_all_solids`].
 //! - Smoothing (chapter 5, Appendix A): [`smooth_mesh`],
 //!   [`smooth_triangles`], [`smooth_polygon_set`] and [`smooth_solid`] (by
 //!   variant) with [`SmoothOptions`]; [`default_mesh_tolerance`] is the
@@ -85,6 +87,7 @@ mod error;
 #[cfg(feature = "io")]
 mod io;
 mod model;
+mod nary;
 mod ops;
 #[cfg(feature = "render")]
 mod render;
@@ -101,6 +104,9 @@ pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
 pub use model::*;
+pub use nary::{
+    boolean_solids, difference_all_solids, union_all_solids, SolidsError, SolidsOutput,
+};
 pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
 #[cfg(feature = "render")]
 pub use render::*;

@@ -7,6 +7,7 @@ use super::error::ModelError;
 use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
 use super::tree::{path_string, CsgNode, CsgShape, MAX_DEPTH};
+use crate::nary::reduce_op;
 use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
 use glam::DVec3;
 use rayon::prelude::*;
@@ -205,34 +206,22 @@ impl Ctx<'_> {
         Ok(out)
     }
 
-    /// The balanced pairwise reduction of `items` by `op`: round by round,
-    /// neighbours combined in parallel; the pairing depends only on the
-    /// count, so the result does not depend on the schedule.
+    /// The n-ary `op` of `items` as a balanced tree of binary Booleans
+    /// ([`crate::nary::reduce_op`], the reduction of the n-ary facade
+    /// functions): the pairing depends only on the count, so the result
+    /// does not depend on the schedule.
     fn reduce(
         &self,
-        mut items: Vec<Solid>,
+        items: Vec<Solid>,
         op: BooleanOp,
         path: &[usize],
     ) -> Result<Solid, ModelError> {
-        while items.len() > 1 {
-            let mut pairs = Vec::with_capacity(items.len().div_ceil(2));
-            let mut it = items.into_iter();
-            while let Some(a) = it.next() {
-                pairs.push((a, it.next()));
+        reduce_op(items, op, &|a, b, op| self.boolean(a, b, op, path))?.ok_or_else(|| {
+            ModelError::Script {
+                file: String::new(),
+                node: path_string(path),
+                message: "an operation needs at least one child".into(),
             }
-            let results: Vec<Result<Solid, ModelError>> = pairs
-                .into_par_iter()
-                .map(|(a, b)| match b {
-                    Some(b) => self.boolean(a, b, op, path),
-                    None => Ok(a),
-                })
-                .collect();
-            items = results.into_iter().collect::<Result<_, _>>()?;
-        }
-        items.pop().ok_or_else(|| ModelError::Script {
-            file: String::new(),
-            node: path_string(path),
-            message: "an operation needs at least one child".into(),
         })
     }
 
@@ -287,26 +276,9 @@ impl Ctx<'_> {
                 let operand_facets = solids.iter().map(Solid::facets).collect();
                 let start = Instant::now();
                 let booleans = solids.len().saturating_sub(1);
-                let solid = match op {
-                    // Xor reaches the 3D Boolean, which refuses it with an
-                    // error naming the node.
-                    BooleanOp::Union | BooleanOp::Intersection | BooleanOp::Xor => {
-                        self.reduce(solids, *op, path)?
-                    }
-                    BooleanOp::Difference => {
-                        let mut it = solids.into_iter();
-                        let first = it.next();
-                        let rest: Vec<Solid> = it.collect();
-                        match first {
-                            None => self.reduce(Vec::new(), BooleanOp::Union, path)?,
-                            Some(a) if rest.is_empty() => a,
-                            Some(a) => {
-                                let b = self.reduce(rest, BooleanOp::Union, path)?;
-                                self.boolean(a, b, BooleanOp::Difference, path)?
-                            }
-                        }
-                    }
-                };
+                // Xor reaches the 3D Boolean, which refuses it with an
+                // error naming the node.
+                let solid = self.reduce(solids, *op, path)?;
                 (solid, booleans, operand_facets, start.elapsed())
             }
             _ => {

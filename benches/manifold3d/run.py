@@ -1,0 +1,152 @@
+#!/usr/bin/env python3
+"""Times the C++ Manifold (the registry's Python package `manifold3d`) on
+the 3D bench inputs that `write-inputs-3d` writes, in-process, and prints
+a CSV row per operation.
+
+Optional and outside CI. Usage (from the repository root):
+
+    pip install manifold3d numpy
+    cargo run --release -p umbra-benches --bin write-inputs-3d
+    python3 benches/manifold3d/run.py [--dir target/bench-inputs] [--cpus 1]
+        [--sizes 2000,20000,200000,1000000] [--csv docs/images/manifold3d.csv]
+
+Each operand is read from binary PLY (double coordinates, the same f64
+bits the Rust benches use) and turned into a `Manifold` through `Mesh64`
+before any timing. Timed: `a - b` (the sphere difference of
+`perf-table-3d`), `Manifold.batch_boolean(spheres, Add)` (the union of the
+1,000 spheres of `perf-table-nary`) and `Manifold.batch_boolean([slab] +
+boxes, Subtract)` (the slab minus 1,000 boxes); Manifold evaluates lazily,
+so each timing ends with `num_tri()`, which forces the Boolean. Time is
+the best of 3 runs (1 run at >= 1M triangles per operand).
+
+Threads: the package runs its Booleans on TBB, which uses the CPUs the
+process may run on. `--cpus K` restricts the process to the first K CPUs
+(`os.sched_setaffinity`) before `manifold3d` is imported; the package has
+no thread-count setting of its own.
+"""
+
+import argparse
+import csv
+import os
+import sys
+import time
+
+
+def read_ply(path):
+    """Vertices (n x 3 float64) and triangles (m x 3 uint64) of a binary
+    little-endian PLY as `umbra::write_mesh` writes it (double x y z; a
+    face list of uchar or uint counts with uint indices)."""
+    import numpy as np
+
+    with open(path, "rb") as f:
+        data = f.read()
+    end = data.index(b"end_header\n") + len(b"end_header\n")
+    header = data[:end].decode("ascii").splitlines()
+    if header[1] != "format binary_little_endian 1.0":
+        raise ValueError(f"{path}: not binary little-endian PLY")
+    nv = nf = 0
+    count_type = "u1"
+    for line in header:
+        parts = line.split()
+        if parts[:2] == ["element", "vertex"]:
+            nv = int(parts[2])
+        elif parts[:2] == ["element", "face"]:
+            nf = int(parts[2])
+        elif parts[:2] == ["property", "list"]:
+            count_type = {"uchar": "u1", "uint": "<u4"}[parts[2]]
+            if parts[3] != "uint":
+                raise ValueError(f"{path}: face indices must be uint")
+        elif parts[:1] == ["property"] and parts[1] != "double":
+            raise ValueError(f"{path}: vertex properties must be double")
+    verts = np.frombuffer(data, dtype="<f8", count=3 * nv, offset=end).reshape(nv, 3)
+    face_dtype = np.dtype([("n", count_type), ("i", "<u4", (3,))])
+    faces = np.frombuffer(data, dtype=face_dtype, count=nf, offset=end + 24 * nv)
+    if nf and not (faces["n"] == 3).all():
+        raise ValueError(f"{path}: every face must be a triangle")
+    # Writable native-order copies (nanobind refuses read-only buffers).
+    return np.array(verts, dtype=np.float64), np.array(faces["i"], dtype=np.uint64)
+
+
+def manifold_of(m3d, path):
+    verts, tris = read_ply(path)
+    solid = m3d.Manifold(m3d.Mesh64(vert_properties=verts, tri_verts=tris))
+    if str(solid.status()) not in ("Error.NoError", "NoError"):
+        raise ValueError(f"{path}: manifold3d refused the mesh: {solid.status()}")
+    return solid
+
+
+def best_of(runs, op):
+    best, out = float("inf"), None
+    for _ in range(runs):
+        t = time.perf_counter()
+        out = op()
+        out.num_tri()
+        best = min(best, (time.perf_counter() - t) * 1e3)
+    return best, out
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--dir", default="target/bench-inputs")
+    ap.add_argument("--sizes", default="2000,20000,200000,1000000")
+    ap.add_argument("--cpus", type=int, default=0, help="run on the first K CPUs only")
+    ap.add_argument("--csv", default="", help="append the rows to this CSV file too")
+    ap.add_argument("--skip-batch", action="store_true", help="only the sphere differences")
+    args = ap.parse_args()
+    if args.cpus > 0:
+        cpus = sorted(os.sched_getaffinity(0))[: args.cpus]
+        os.sched_setaffinity(0, cpus)
+    import manifold3d as m3d  # after the affinity is set: TBB sizes its pool then
+
+    cpus = len(os.sched_getaffinity(0))
+    version = getattr(m3d, "__version__", "")
+    rows = []
+
+    def record(op, size, ms, out, inputs):
+        rows.append(
+            {
+                "library": "manifold3d" + (f" {version}" if version else ""),
+                "op": op,
+                "size": size,
+                "cpus": cpus,
+                "ms": f"{ms:.3f}",
+                "triangles": out.num_tri(),
+                "volume": repr(out.volume()),
+                "input_triangles": inputs,
+            }
+        )
+        print(f"{op} {size}: {ms:.1f} ms, {out.num_tri()} triangles, volume {out.volume():.9f}", file=sys.stderr)
+
+    for size in [int(s) for s in args.sizes.split(",") if s.strip()]:
+        a = manifold_of(m3d, os.path.join(args.dir, f"sphere-a-{size}.ply"))
+        b = manifold_of(m3d, os.path.join(args.dir, f"sphere-b-{size}.ply"))
+        runs = 1 if size >= 1_000_000 else 3
+        ms, out = best_of(runs, lambda: a - b)
+        record("sphere-difference", size, ms, out, a.num_tri() + b.num_tri())
+
+    if not args.skip_batch:
+        spheres = manifold_of(m3d, os.path.join(args.dir, "spheres-1000.ply")).decompose()
+        ms, out = best_of(1, lambda: m3d.Manifold.batch_boolean(spheres, m3d.OpType.Add))
+        record("union-1000-spheres", len(spheres), ms, out, sum(s.num_tri() for s in spheres))
+        slab = manifold_of(m3d, os.path.join(args.dir, "slab.ply"))
+        boxes = manifold_of(m3d, os.path.join(args.dir, "boxes-1000.ply")).decompose()
+        ms, out = best_of(
+            1, lambda: m3d.Manifold.batch_boolean([slab] + boxes, m3d.OpType.Subtract)
+        )
+        record("slab-minus-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes))
+
+    fields = ["library", "op", "size", "cpus", "ms", "triangles", "volume", "input_triangles"]
+    writer = csv.DictWriter(sys.stdout, fieldnames=fields)
+    writer.writeheader()
+    writer.writerows(rows)
+    if args.csv:
+        new = not os.path.exists(args.csv)
+        with open(args.csv, "a", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields)
+            if new:
+                w.writeheader()
+            w.writerows(rows)
+
+
+if __name__ == "__main__":
+    main()
