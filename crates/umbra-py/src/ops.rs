@@ -1,14 +1,15 @@
-//! The 3D operations: the Boolean of two meshes, the union of many (a
-//! balanced tree of Booleans), and CSG trees in the JSON form of `umbra
-//! csg`.
+//! The 3D operations: the Boolean of two meshes (optionally smoothed),
+//! smoothing, the union of many (the facade's n-ary union), and CSG trees
+//! in the JSON form of `umbra csg`.
 
 use crate::mesh::Mesh;
 use crate::{error, run};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use umbra::{
-    as_triangle_mesh, boolean_solid, default_mesh_tolerance, evaluate_csg, parse_csg,
-    smooth_solid, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, UmbraError,
+    as_triangle_mesh, boolean_solid, default_mesh_tolerance, evaluate_csg, parse_csg, smooth_solid,
+    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError,
+    UmbraError,
 };
 
 /// The operation named `op`: every name of the facade (`union`,
@@ -80,9 +81,8 @@ pub fn boolean<'py>(
     let out = run(py, || {
         let raw = solid(a, b, op, variant)?;
         match smooth {
-            Some(t) if t == 0.0 => Ok(raw),
-            Some(t) => smoothed(&raw, variant, t),
-            None => Ok(raw),
+            Some(t) if t != 0.0 => smoothed(&raw, variant, t),
+            _ => Ok(raw),
         }
     })?;
     Mesh::wrap(py, out)
@@ -111,9 +111,10 @@ pub fn smooth<'py>(
     Mesh::wrap(py, out)
 }
 
-/// The union of every mesh of ``meshes`` as a balanced tree of binary
-/// Booleans (pairs, then pairs of pairs), so operand sizes stay even; one
-/// mesh is returned as it is, none gives the empty mesh.
+/// The union of every mesh of ``meshes`` in one call
+/// (`umbra::union_all_solids`): a balanced tree of binary Booleans whose
+/// independent branches run in parallel, the same result whatever the
+/// thread count; one mesh is returned as it is, none gives the empty mesh.
 #[pyfunction]
 #[pyo3(signature = (meshes, *, triangulate = false))]
 pub fn union_all<'py>(
@@ -121,56 +122,29 @@ pub fn union_all<'py>(
     meshes: &Bound<'py, PyAny>,
     triangulate: bool,
 ) -> PyResult<Bound<'py, Mesh>> {
-    let mut items: Vec<Bound<'py, Mesh>> = Vec::new();
+    let mut items: Vec<PolygonMesh> = Vec::new();
     for (i, m) in meshes.try_iter()?.enumerate() {
         let m = m?;
-        items.push(
-            m.cast_into::<Mesh>()
-                .map_err(|_| error(format!("meshes[{i}]: expected an umbra.Mesh")))?,
-        );
+        let m = m
+            .cast_into::<Mesh>()
+            .map_err(|_| error(format!("meshes[{i}]: expected an umbra.Mesh")))?;
+        items.push(m.get().mesh.clone());
     }
-    let refs: Vec<&PolygonMesh> = items.iter().map(|m| &m.get().mesh).collect();
-    let out = run(py, || balanced_union(&refs, variant(triangulate)))?;
+    let variant = variant(triangulate);
+    let out = run(py, || {
+        union_all_solids(&items, variant)
+            .map(|out| out.mesh)
+            .map_err(|e| match e {
+                // The operand named as the Python argument.
+                SolidsError::InvalidOperand { index, source } => UmbraError::InvalidShape {
+                    file: format!("meshes[{index}]"),
+                    source,
+                }
+                .to_string(),
+                other => other.to_string(),
+            })
+    })?;
     Mesh::wrap(py, out)
-}
-
-/// The union of `meshes` as a balanced tree of Booleans. An operand's
-/// error names it by its position (`meshes[3]`).
-fn balanced_union(
-    meshes: &[&PolygonMesh],
-    variant: MeshVariant,
-) -> Result<PolygonMesh, UmbraError> {
-    for (i, m) in meshes.iter().enumerate() {
-        if let Err(source) = m.check_topology().and_then(|()| m.validate_coordinates()) {
-            return Err(UmbraError::InvalidShape {
-                file: format!("meshes[{i}]"),
-                source,
-            });
-        }
-    }
-    if let [one] = meshes {
-        return Ok((*one).clone());
-    }
-    // The first level reads the caller's meshes; later levels own theirs.
-    let mut level = Vec::with_capacity(meshes.len().div_ceil(2));
-    for pair in meshes.chunks(2) {
-        level.push(match pair {
-            [a, b] => solid(a, b, BooleanOp::Union, variant)?,
-            single => single[0].clone(),
-        });
-    }
-    while level.len() > 1 {
-        let mut next = Vec::with_capacity(level.len().div_ceil(2));
-        let mut it = level.into_iter();
-        while let Some(a) = it.next() {
-            next.push(match it.next() {
-                Some(b) => solid(&a, &b, BooleanOp::Union, variant)?,
-                None => a,
-            });
-        }
-        level = next;
-    }
-    Ok(level.pop().unwrap_or_default())
 }
 
 /// The mesh of a CSG tree given as a dict in the JSON form of ``umbra

@@ -19,14 +19,21 @@ def run(cli, *args):
 
 @pytest.mark.parametrize("op", ["union", "intersection", "difference"])
 @pytest.mark.parametrize("triangulate", [False, True])
-def test_3d_boolean_equals_the_cli(cli, tmp_path, op, triangulate):
+@pytest.mark.parametrize("smooth", [None, 1e-6])
+def test_3d_boolean_equals_the_cli(cli, tmp_path, op, triangulate, smooth):
+    # The CLI smooths 3D results by default; the library only when asked:
+    # `--smooth 0` is the raw result, `--smooth T` is `smooth=T`.
     a, b = EXAMPLES / "cube.obj", EXAMPLES / "cube_shifted.off"
     out = tmp_path / "cli.obj"
     flags = ["--triangulate"] if triangulate else []
+    flags += ["--smooth", str(smooth or 0)]
     r = run(cli, "boolean", op, str(a), str(b), "-o", str(out), *flags)
     assert r.returncode == 0, r.stderr
     mine = tmp_path / "py.obj"
-    umbra.write(umbra.boolean(umbra.read(a), umbra.read(b), op, triangulate=triangulate), mine)
+    result = umbra.boolean(
+        umbra.read(a), umbra.read(b), op, triangulate=triangulate, smooth=smooth
+    )
+    umbra.write(result, mine)
     assert mine.read_bytes() == out.read_bytes()
 
 
