@@ -20,7 +20,8 @@ use umbra_benches::chain::{expected_volume, run_chain, MAX_BOXES};
 type Result<T> = std::result::Result<T, Box<dyn std::error::Error>>;
 
 fn next(args: &mut impl Iterator<Item = String>, what: &str) -> Result<String> {
-    args.next().ok_or_else(|| format!("{what}: missing value").into())
+    args.next()
+        .ok_or_else(|| format!("{what}: missing value").into())
 }
 
 fn main() -> Result<()> {

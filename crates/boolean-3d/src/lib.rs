@@ -56,7 +56,9 @@ mod composite;
 mod construct;
 mod error;
 mod level3;
+mod merge;
 mod mesh;
+mod retriangulate;
 
 pub use api::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,

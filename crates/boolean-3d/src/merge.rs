@@ -1,0 +1,190 @@
+//! The coplanar merge of the triangle-mesh variant: edge-adjacent input
+//! triangles that are exactly coplanar and face the same way are merged
+//! into one polygon facet before the Boolean, so that a planar region is
+//! cut and re-triangulated as a whole (section 4.8), not piece by piece.
+//!
+//! Two triangles `(u, v, c1)` and `(v, u, c2)` sharing the edge `{u, v}`
+//! are merged across it when the edge has exactly these two half-edges
+//! (one each way, `u != v`), both triangles are non-degenerate, the four
+//! points are coplanar by the exact `orient3d`, and `c1`, `c2` lie strictly
+//! on opposite sides of the line `uv` in the plane (exact `orient2d` in a
+//! coordinate projection where the first triangle is non-degenerate, which
+//! maps the common plane affinely and so keeps both signs). A merged facet
+//! holds every half-edge of its triangles except the merged pairs. Each
+//! triangle is closed and a merged pair is a half-edge and its opposite,
+//! so facet boundary closure holds for every merged facet and shape
+//! boundary closure is unchanged (section 4.2), whatever the geometry:
+//! the exact tests only decide where merging keeps the facets planar.
+
+use crate::mesh::Flat;
+use rayon::prelude::*;
+use robust_arith::{orient2d, orient3d, Point3};
+use std::cmp::Ordering;
+use topology::TopologyError;
+
+/// No partner / no facet.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// A triangle mesh's triangles grouped into merged facets.
+pub(crate) struct Merged {
+    /// `tri_off[f]..tri_off[f + 1]` index `tris`: the input triangles of
+    /// facet `f`, in input order.
+    pub tri_off: Vec<u32>,
+    /// Input triangle indices grouped by facet.
+    pub tris: Vec<u32>,
+    /// For every input half-edge `3t + k`, the half-edge it was merged
+    /// with, or [`NONE`].
+    pub partner: Vec<u32>,
+    /// Whether any two triangles were merged.
+    pub any: bool,
+}
+
+/// Whether the triangle `a, b, c` is non-degenerate, and then the first
+/// coordinate plane (dropping axis 0, 1, 2) in which it is, with the sign
+/// of its orientation there.
+fn plane_of(a: Point3, b: Point3, c: Point3) -> Option<(usize, Ordering)> {
+    (0..3).find_map(|axis| {
+        let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
+        (o != Ordering::Equal).then_some((axis, o))
+    })
+}
+
+#[inline]
+fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
+    match axis {
+        0 => [p[1], p[2]],
+        1 => [p[2], p[0]],
+        _ => [p[0], p[1]],
+    }
+}
+
+/// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
+/// triangle mesh's flat form may be merged across their edge.
+fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
+    let (t1, t2) = (h1 / 3, h2 / 3);
+    if t1 == t2 {
+        return false;
+    }
+    let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
+    let (u, v) = flat.he[h1 as usize];
+    let (c1, c2) = (opposite(h1), opposite(h2));
+    let p = |i: u32| flat.pos[i as usize];
+    let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
+    if orient3d(pu, pv, p1, p2) != Ordering::Equal {
+        return false;
+    }
+    let Some((axis, s1)) = plane_of(pu, pv, p1) else {
+        return false;
+    };
+    // Triangle 2 is (v, u, c2): the same orientation as triangle 1 in the
+    // common plane means c2 on the other side of u->v.
+    orient2d(
+        drop_axis(pv, axis),
+        drop_axis(pu, axis),
+        drop_axis(p2, axis),
+    ) == s1
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let up = parent[parent[x as usize] as usize];
+        parent[x as usize] = up;
+        x = up;
+    }
+    x
+}
+
+impl Merged {
+    /// Merges the triangles of `flat` (the flat form of a triangle mesh);
+    /// returns the merge and the merged facets' flat form (`flat` itself
+    /// when nothing merges).
+    pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
+        let n_he = flat.he.len();
+        let n_t = n_he / 3;
+        // Candidate edges: exactly two half-edges, one each way.
+        let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
+            .into_par_iter()
+            .filter_map(|e| {
+                let hs = flat.edge_half_edges(e);
+                if hs.len() != 2 {
+                    return None;
+                }
+                let (h1, h2) = (hs[0], hs[1]);
+                let (s1, e1) = flat.he[h1 as usize];
+                let (s2, e2) = flat.he[h2 as usize];
+                if s1 == e1 || s1 != e2 || e1 != s2 {
+                    return None;
+                }
+                mergeable(&flat, h1, h2).then_some((h1, h2))
+            })
+            .collect();
+        let mut partner = vec![NONE; n_he];
+        let mut parent: Vec<u32> = (0..n_t as u32).collect();
+        for &(h1, h2) in &pairs {
+            partner[h1 as usize] = h2;
+            partner[h2 as usize] = h1;
+            let (r1, r2) = (find(&mut parent, h1 / 3), find(&mut parent, h2 / 3));
+            if r1 != r2 {
+                // The smaller root wins, so roots are first triangles.
+                let (lo, hi) = if r1 < r2 { (r1, r2) } else { (r2, r1) };
+                parent[hi as usize] = lo;
+            }
+        }
+        // Facets numbered by their first triangle; triangles grouped by a
+        // counting sort, in input order within a facet.
+        let mut facet_of = vec![NONE; n_t];
+        let mut n_f = 0u32;
+        for t in 0..n_t as u32 {
+            let r = find(&mut parent, t);
+            if r == t {
+                facet_of[t as usize] = n_f;
+                n_f += 1;
+            } else {
+                facet_of[t as usize] = facet_of[r as usize];
+            }
+        }
+        let mut tri_off = vec![0u32; n_f as usize + 1];
+        for &f in &facet_of {
+            tri_off[f as usize + 1] += 1;
+        }
+        for f in 0..n_f as usize {
+            tri_off[f + 1] += tri_off[f];
+        }
+        let mut fill = tri_off.clone();
+        let mut tris = vec![0u32; n_t];
+        for (t, &f) in facet_of.iter().enumerate() {
+            tris[fill[f as usize] as usize] = t as u32;
+            fill[f as usize] += 1;
+        }
+        let merged = Merged {
+            tri_off,
+            tris,
+            partner,
+            any: !pairs.is_empty(),
+        };
+        if !merged.any {
+            return Ok((merged, flat));
+        }
+        let (tri_off, tris, partner) = (&merged.tri_off, &merged.tris, &merged.partner);
+        let mut he = Vec::with_capacity(n_he - 2 * pairs.len());
+        let mut facet_off = Vec::with_capacity(n_f as usize + 1);
+        facet_off.push(0u32);
+        for f in 0..n_f as usize {
+            for &t in &tris[tri_off[f] as usize..tri_off[f + 1] as usize] {
+                for h in 3 * t..3 * t + 3 {
+                    if partner[h as usize] == NONE {
+                        he.push(flat.he[h as usize]);
+                    }
+                }
+            }
+            facet_off.push(he.len() as u32);
+        }
+        let out = Flat::from_merged(flat.pos, he, facet_off)?;
+        Ok((merged, out))
+    }
+
+    /// The input triangles of merged facet `f`.
+    pub fn triangles(&self, f: u32) -> &[u32] {
+        &self.tris[self.tri_off[f as usize] as usize..self.tri_off[f as usize + 1] as usize]
+    }
+}
