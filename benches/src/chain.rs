@@ -88,3 +88,22 @@ pub fn run_chain(
     }
     Ok(shape)
 }
+
+/// The chain on triangle meshes straight through
+/// `boolean_3d::boolean_triangles` (STL in, STL out, no conversion to
+/// polygon meshes between steps): returns the summed time (milliseconds)
+/// and the final mesh.
+pub fn run_chain_triangles(
+    n: usize,
+) -> Result<(f64, topology::TriangleMesh), boolean_3d::Boolean3Error> {
+    let mut shape = boolean_3d::triangulate_mesh(&slab());
+    let mut total = 0.0;
+    for hole in holes(n) {
+        let hole = boolean_3d::triangulate_mesh(&hole);
+        let t = Instant::now();
+        let out = boolean_3d::boolean_triangles(&shape, &hole, BooleanOp::Difference)?;
+        total += t.elapsed().as_secs_f64() * 1e3;
+        shape = out.mesh;
+    }
+    Ok((total, shape))
+}

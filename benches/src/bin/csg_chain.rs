@@ -40,6 +40,15 @@ fn main() -> Result<()> {
                     v => return Err(format!("unknown variant {v:?} (both, tri or poly)").into()),
                 }
             }
+            "--direct" => {
+                let (ms, m) = umbra_benches::chain::run_chain_triangles(boxes)?;
+                println!(
+                    "direct boolean_triangles: {:.3} s, {} triangles",
+                    ms / 1e3,
+                    m.triangles.len()
+                );
+                return Ok(());
+            }
             "--csv" => csv_path = Some(next(&mut args, "--csv PATH")?),
             _ => return Err(format!("unknown argument {a:?}").into()),
         }

@@ -39,14 +39,36 @@ pub(crate) struct Merged {
     pub any: bool,
 }
 
-/// Whether the triangle `a, b, c` is non-degenerate, and then the first
-/// coordinate plane (dropping axis 0, 1, 2) in which it is, with the sign
-/// of its orientation there.
+/// Whether the triangle `a, b, c` is non-degenerate, and then a
+/// coordinate plane (dropping axis 0, 1 or 2) in which it is, with the
+/// sign of its orientation there. The planes are tried in the order of
+/// the approximate normal's components, largest first, so that the exact
+/// `orient2d` is decided by its fast filter in the usual case; the answer
+/// is exact whatever the order.
 fn plane_of(a: Point3, b: Point3, c: Point3) -> Option<(usize, Ordering)> {
-    (0..3).find_map(|axis| {
+    let (d, e) = (
+        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+        [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+    );
+    let n = [
+        (d[1] * e[2] - d[2] * e[1]).abs(),
+        (d[2] * e[0] - d[0] * e[2]).abs(),
+        (d[0] * e[1] - d[1] * e[0]).abs(),
+    ];
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&i, &j| n[j].total_cmp(&n[i]));
+    order.into_iter().find_map(|axis| {
         let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
         (o != Ordering::Equal).then_some((axis, o))
     })
+}
+
+/// Whether four points are exactly coplanar: the same coordinate on one
+/// axis (the common case of axis-aligned facets, decided without
+/// arithmetic), else the exact `orient3d`.
+fn coplanar(a: Point3, b: Point3, c: Point3, d: Point3) -> bool {
+    (0..3).any(|k| a[k] == b[k] && a[k] == c[k] && a[k] == d[k])
+        || orient3d(a, b, c, d) == Ordering::Equal
 }
 
 #[inline]
@@ -70,12 +92,12 @@ fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
     let (c1, c2) = (opposite(h1), opposite(h2));
     let p = |i: u32| flat.pos[i as usize];
     let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
-    if orient3d(pu, pv, p1, p2) != Ordering::Equal {
-        return false;
-    }
     let Some((axis, s1)) = plane_of(pu, pv, p1) else {
         return false;
     };
+    if !coplanar(pu, pv, p1, p2) {
+        return false;
+    }
     // Triangle 2 is (v, u, c2): the same orientation as triangle 1 in the
     // common plane means c2 on the other side of u->v.
     orient2d(
@@ -186,5 +208,90 @@ impl Merged {
     /// The input triangles of merged facet `f`.
     pub fn triangles(&self, f: u32) -> &[u32] {
         &self.tris[self.tri_off[f as usize] as usize..self.tri_off[f as usize + 1] as usize]
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topology::TriangleMesh;
+
+    fn merged(v: Vec<Point3>, t: Vec<[u32; 3]>) -> (bool, usize, Vec<u32>) {
+        let m = TriangleMesh::new(v, t);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let (merge, f) = Merged::new(flat).unwrap();
+        (merge.any, f.facet_count(), merge.partner)
+    }
+
+    /// A square pyramid whose base (facing down) is split along 0-2, base
+    /// corner 3 at `p`: 6 triangles.
+    fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            p,
+            [0.5, 0.5, 1.0],
+        ];
+        let t = vec![
+            [0, 2, 1],
+            [0, 3, 2],
+            [0, 1, 4],
+            [1, 2, 4],
+            [2, 3, 4],
+            [3, 0, 4],
+        ];
+        merged(v, t)
+    }
+
+    #[test]
+    fn exactly_coplanar_co_oriented_triangles_merge() {
+        let (any, facets, partner) = pyramid([0.0, 1.0, 0.0]);
+        assert!(any);
+        assert_eq!(facets, 5);
+        // Half-edge 0 (0->2) of triangle 0 and half-edge 5 (2->0) of
+        // triangle 1.
+        assert_eq!(partner[0], 5);
+        assert_eq!(partner[5], 0);
+        assert_eq!(partner.iter().filter(|&&p| p != NONE).count(), 2);
+    }
+
+    #[test]
+    fn bent_folded_or_degenerate_triangles_do_not_merge() {
+        // Bent by the smallest subnormal out of the plane.
+        assert!(!pyramid([0.0, 1.0, f64::from_bits(1)]).0);
+        // The second base triangle degenerate (corner 3 on the diagonal):
+        // the base does not merge (two sides, now in the plane x = y, do).
+        let (_, facets, partner) = pyramid([0.5, 0.5, 0.0]);
+        assert_eq!((partner[0], partner[5]), (NONE, NONE));
+        assert_eq!(facets, 5);
+        // A triangle and its reverse (a closed two-sided sheet): every edge
+        // joins coplanar triangles folded onto each other.
+        let v = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        assert!(!merged(v, vec![[0, 1, 2], [1, 0, 2]]).0);
+    }
+
+    #[test]
+    fn a_non_manifold_edge_is_not_merged_across() {
+        // Four coplanar triangles on the edge 0-1 (two sheets).
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.5, -1.0, 0.0],
+        ];
+        let t = vec![
+            [0, 1, 2],
+            [1, 0, 3],
+            [0, 2, 1],
+            [1, 3, 0],
+            [0, 1, 2],
+            [1, 0, 3],
+            [0, 2, 1],
+            [1, 3, 0],
+        ];
+        let (any, facets, _) = merged(v, t);
+        assert!(!any);
+        assert_eq!(facets, 8);
     }
 }
