@@ -201,6 +201,7 @@ impl Merged {
             }
             facet_off.push(he.len() as u32);
         }
+        let (he, facet_off) = drop_straight_vertices(flat.pos, he, facet_off);
         let out = Flat::from_merged(flat.pos, he, facet_off)?;
         Ok((merged, out))
     }
@@ -209,6 +210,134 @@ impl Merged {
     pub fn triangles(&self, f: u32) -> &[u32] {
         &self.tris[self.tri_off[f as usize] as usize..self.tri_off[f as usize + 1] as usize]
     }
+}
+
+/// Whether `v` lies strictly inside the segment `u w` exactly: the three
+/// points collinear by the exact `orient2d` in every coordinate plane, and
+/// `v` between `u` and `w` on every axis, not at either end.
+fn strictly_between(u: Point3, v: Point3, w: Point3) -> bool {
+    if v == u || v == w {
+        return false;
+    }
+    (0..3).all(|k| u[k].min(w[k]) <= v[k] && v[k] <= u[k].max(w[k]))
+        && (0..3).all(|axis| {
+            orient2d(drop_axis(u, axis), drop_axis(v, axis), drop_axis(w, axis)) == Ordering::Equal
+        })
+}
+
+/// Drops the vertices that only subdivide a straight edge: a vertex `v`
+/// whose only half-edges are `u->v`, `v->w` in one facet and `w->v`,
+/// `v->u` in another, with `v` strictly inside the segment `u w`. The two
+/// pairs become `u->w` and `w->u`: each facet loses one half-edge ending
+/// and one starting at `v` and keeps its balance at `u` and `w` (facet
+/// boundary closure), and the shape loses `u->v, v->u, v->w, w->v` and
+/// gains `u->w, w->u` (shape boundary closure), so the constraints of
+/// section 4.2 hold whatever the test decides; the exact test keeps the
+/// geometry (the facets' regions are unchanged). Runs of such vertices on
+/// one segment go one after another, in vertex order.
+fn drop_straight_vertices(
+    pos: &[Point3],
+    mut he: Vec<(u32, u32)>,
+    facet_off: Vec<u32>,
+) -> (Vec<(u32, u32)>, Vec<u32>) {
+    let n_v = pos.len();
+    // Half-edges starting and ending at each vertex (saturating at 3).
+    let mut starts = vec![0u8; n_v];
+    let mut ends = vec![0u8; n_v];
+    for &(s, e) in &he {
+        starts[s as usize] = starts[s as usize].saturating_add(1).min(3);
+        ends[e as usize] = ends[e as usize].saturating_add(1).min(3);
+    }
+    let candidate = |v: usize| starts[v] == 2 && ends[v] == 2;
+    if !(0..n_v).any(candidate) {
+        return (he, facet_off);
+    }
+    let mut facet = vec![0u32; he.len()];
+    for f in 0..facet_off.len() - 1 {
+        for h in facet_off[f]..facet_off[f + 1] {
+            facet[h as usize] = f as u32;
+        }
+    }
+    // The two incoming and two outgoing half-edges of each candidate.
+    let mut inc = vec![[NONE; 2]; n_v];
+    let mut out = vec![[NONE; 2]; n_v];
+    let put = |slot: &mut [u32; 2], h: u32| {
+        if slot[0] == NONE {
+            slot[0] = h;
+        } else {
+            slot[1] = h;
+        }
+    };
+    for (h, &(s, e)) in he.iter().enumerate() {
+        if candidate(s as usize) {
+            put(&mut out[s as usize], h as u32);
+        }
+        if candidate(e as usize) {
+            put(&mut inc[e as usize], h as u32);
+        }
+    }
+    let mut alive = vec![true; he.len()];
+    let mut dropped = false;
+    for v in 0..n_v {
+        if !candidate(v) {
+            continue;
+        }
+        let [o1, o2] = out[v];
+        let [a, b] = inc[v];
+        // i1: the incoming half-edge in o1's facet.
+        let (i1, i2) = if facet[a as usize] == facet[o1 as usize] {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        let (f1, f2) = (facet[o1 as usize], facet[o2 as usize]);
+        if f1 == f2 || facet[i1 as usize] != f1 || facet[i2 as usize] != f2 {
+            continue;
+        }
+        let u = he[i1 as usize].0;
+        let w = he[o1 as usize].1;
+        let v32 = v as u32;
+        if u == w
+            || u == v32
+            || w == v32
+            || he[i2 as usize].0 != w
+            || he[o2 as usize].1 != u
+            || !strictly_between(pos[u as usize], pos[v], pos[w as usize])
+        {
+            continue;
+        }
+        // f1: u->v, v->w becomes u->w (kept in i1); f2: w->v, v->u becomes
+        // w->u (kept in i2).
+        he[i1 as usize] = (u, w);
+        he[i2 as usize] = (w, u);
+        alive[o1 as usize] = false;
+        alive[o2 as usize] = false;
+        dropped = true;
+        // w's incoming o1 is now i1; u's incoming o2 is now i2 (when they
+        // are candidates still to come).
+        for (x, old, new) in [(w, o1, i1), (u, o2, i2)] {
+            for slot in &mut inc[x as usize] {
+                if *slot == old {
+                    *slot = new;
+                }
+            }
+        }
+    }
+    if !dropped {
+        return (he, facet_off);
+    }
+    let mut kept = Vec::with_capacity(he.len());
+    let mut off = Vec::with_capacity(facet_off.len());
+    off.push(0u32);
+    for f in 0..facet_off.len() - 1 {
+        for h in facet_off[f]..facet_off[f + 1] {
+            if alive[h as usize] {
+                kept.push(he[h as usize]);
+            }
+        }
+        off.push(kept.len() as u32);
+    }
+    (kept, off)
 }
 
 #[cfg(test)]

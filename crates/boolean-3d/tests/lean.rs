@@ -124,6 +124,44 @@ fn interior_vertices_of_coplanar_regions_are_dropped() {
     assert_eq!(out.mesh.triangles.len(), 3 * 2 + 3 * 4 + 3 * 2);
 }
 
+#[test]
+fn vertices_that_only_subdivide_a_straight_edge_are_dropped() {
+    // A 2 x 1 x 1 box whose four long faces are each two unit squares (the
+    // vertices at x = 1 subdivide the long edges): 20 triangles. Their
+    // faces merge into rectangles, the four middle vertices go, and a
+    // union with a disjoint cube gives two boxes of 12 triangles each.
+    let mut v = Vec::new();
+    for x in [0.0, 1.0, 2.0] {
+        for (y, z) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            v.push([x, y, z]);
+        }
+    }
+    // Vertex 4 i + k: x = i, (y, z) corner k going round the x axis.
+    let mut tris = Vec::new();
+    for i in 0..2u32 {
+        for k in 0..4u32 {
+            let (a, b) = (4 * i + k, 4 * i + (k + 1) % 4);
+            let (c, d) = (a + 4, b + 4);
+            tris.push([a, b, d]);
+            tris.push([a, d, c]);
+        }
+    }
+    tris.extend([[0, 3, 2], [0, 2, 1], [8, 9, 10], [8, 10, 11]]);
+    let a = TriangleMesh::new(v, tris);
+    assert_eq!(a.check_topology(), Ok(()));
+    assert_eq!(exact_volume(&a), 2.0);
+    let b = box_triangles([5.0; 3], [6.0; 3]);
+    let (out, audit) = boolean_triangles_audit(&a, &b, BooleanOp::Union).unwrap();
+    audit.verify().unwrap();
+    check_step(&out.mesh, 3.0, "union");
+    assert_eq!(out.mesh.triangles.len(), 24);
+    for t in &out.mesh.triangles {
+        for &i in t {
+            assert_ne!(out.mesh.vertices[i as usize][0], 1.0, "{t:?}");
+        }
+    }
+}
+
 /// One step of a random chain: a through-box or an icosphere cavity in
 /// grid cell `cell` of the 8 x 4 slab.
 #[derive(Clone, Debug)]
