@@ -64,7 +64,7 @@ fn main() -> Result<()> {
         let mut total = 0.0;
         let mut last = None;
         let mut failure = None;
-        run_chain(variant, boxes, |s, mesh| {
+        let final_mesh = run_chain(variant, boxes, |s, mesh| {
             total += s.ms;
             let _ = writeln!(
                 csv,
@@ -85,6 +85,19 @@ fn main() -> Result<()> {
             }
             last = Some(*s);
         })?;
+        if variant == MeshVariant::PolygonMesh {
+            // The triangulation of the final polygon mesh (its top and
+            // bottom faces have `boxes` holes each), section 4.8.
+            let t = std::time::Instant::now();
+            let tri = umbra::triangulate_mesh(&final_mesh);
+            println!(
+                "triangulate_mesh of the polygon result: {:.3} s, {} triangles, volume {}, {:?}",
+                t.elapsed().as_secs_f64(),
+                tri.triangles.len(),
+                tri.signed_volume(),
+                tri.check_topology()
+            );
+        }
         if let Some(f) = failure {
             return Err(format!("{name}: {f}").into());
         }
