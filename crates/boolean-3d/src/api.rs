@@ -388,8 +388,15 @@ fn boolean_mesh_impl(
 }
 
 /// The Boolean `op` of two triangle meshes (the triangle-mesh variant):
-/// as [`boolean_mesh`], then every retained facet is triangulated by adding
-/// internal edges only (section 4.8).
+/// edge-adjacent triangles that are exactly coplanar and face the same way
+/// are merged into polygon facets, vertices that only subdivide a straight
+/// edge between two such facets are dropped, the Boolean runs as
+/// [`boolean_mesh`] on those facets, and every retained facet is
+/// triangulated by adding internal edges only (section 4.8), re-using the
+/// input triangles outside the region the Boolean changed. Merging and
+/// dropping remove only opposite half-edge pairs, so the result is
+/// topologically valid whatever the coordinates, and a chain of operations
+/// keeps the triangle count of the shape's real complexity.
 pub fn boolean_triangles(
     a: &TriangleMesh,
     b: &TriangleMesh,
