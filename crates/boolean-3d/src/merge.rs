@@ -63,14 +63,6 @@ fn plane_of(a: Point3, b: Point3, c: Point3) -> Option<(usize, Ordering)> {
     })
 }
 
-/// Whether four points are exactly coplanar: the same coordinate on one
-/// axis (the common case of axis-aligned facets, decided without
-/// arithmetic), else the exact `orient3d`.
-fn coplanar(a: Point3, b: Point3, c: Point3, d: Point3) -> bool {
-    (0..3).any(|k| a[k] == b[k] && a[k] == c[k] && a[k] == d[k])
-        || orient3d(a, b, c, d) == Ordering::Equal
-}
-
 #[inline]
 fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
     match axis {
@@ -92,12 +84,25 @@ fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
     let (c1, c2) = (opposite(h1), opposite(h2));
     let p = |i: u32| flat.pos[i as usize];
     let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
-    let Some((axis, s1)) = plane_of(pu, pv, p1) else {
-        return false;
-    };
-    if !coplanar(pu, pv, p1, p2) {
+    // Coplanar: the same coordinate on one axis (the common case of
+    // axis-aligned facets, decided without arithmetic; that axis's
+    // coordinate plane is then the one to project on), else the exact
+    // orient3d.
+    let shared = (0..3).find(|&k| pu[k] == pv[k] && pu[k] == p1[k] && pu[k] == p2[k]);
+    if shared.is_none() && orient3d(pu, pv, p1, p2) != Ordering::Equal {
         return false;
     }
+    let first = shared.and_then(|axis| {
+        let o = orient2d(
+            drop_axis(pu, axis),
+            drop_axis(pv, axis),
+            drop_axis(p1, axis),
+        );
+        (o != Ordering::Equal).then_some((axis, o))
+    });
+    let Some((axis, s1)) = first.or_else(|| plane_of(pu, pv, p1)) else {
+        return false;
+    };
     // Triangle 2 is (v, u, c2): the same orientation as triangle 1 in the
     // common plane means c2 on the other side of u->v.
     orient2d(
