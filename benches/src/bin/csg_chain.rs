@@ -8,7 +8,8 @@
 //! cargo run --release -p umbra-benches --bin csg-chain -- [--boxes 1000] [--variant both|tri|poly] [--csv docs/data/csg_chain.csv]
 //! ```
 //!
-//! Every step's result is checked (topological validity, and the volume
+//! Every step's result is checked (topological validity, every facet one
+//! loop of 3 for the triangle-mesh variant, and the volume
 //! `1000 - k / 4` within 1e-9 relative); a failed check ends the run with
 //! an error. The last column says whether the final f64 volume is exactly
 //! 750 (it is whenever every vertex stays on the boxes' dyadic grid).
@@ -71,9 +72,16 @@ fn main() -> Result<()> {
                 "{},{name},{:.3},{},{},{}",
                 s.step, s.ms, s.facets, s.vertices, s.volume
             );
+            if s.step % 100 == 0 {
+                eprintln!("{name}: step {} {} facets", s.step, s.facets);
+            }
             if failure.is_none() {
                 if let Err(e) = mesh.check_topology() {
                     failure = Some(format!("step {}: {e}", s.step));
+                } else if variant == MeshVariant::TriangleMesh
+                    && umbra::as_triangle_mesh(mesh).is_none()
+                {
+                    failure = Some(format!("step {}: a facet is not one loop of 3", s.step));
                 } else if (s.volume - expected_volume(s.step)).abs() > 1e-9 * 1000.0 {
                     failure = Some(format!(
                         "step {}: volume {} instead of {}",
