@@ -36,6 +36,7 @@
 
 pub mod batch;
 pub mod clipper;
+pub mod chain;
 mod error;
 mod generate;
 mod peers;

@@ -3,11 +3,12 @@
 
 use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
 use crate::level3::{level3 as level3_fast, level3_brute, Level3Data, Winding};
+use crate::merge::Merged;
 use crate::mesh::Flat;
+use crate::retriangulate::{to_triangle_mesh, Source};
 use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
 use std::collections::HashMap;
-use topology::triangulate_facet;
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
 
 /// The result of the polygon-mesh variant.
@@ -325,25 +326,6 @@ fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
     PolygonMesh::new(r.vertices.clone(), facets)
 }
 
-/// Triangulates every retained facet (section 4.8), chunk by chunk in
-/// parallel, concatenated in order.
-fn to_triangle_mesh(r: Retained) -> TriangleMesh {
-    let parts: Vec<Vec<[u32; 3]>> = r
-        .chunks
-        .par_iter()
-        .map(|(_, hes, list)| {
-            let mut tris = Vec::with_capacity(hes.len() / 3 + list.len());
-            let mut k = 0usize;
-            for &(_, n) in list {
-                triangulate_facet(&r.vertices, &hes[k..k + n as usize], &mut tris);
-                k += n as usize;
-            }
-            tris
-        })
-        .collect();
-    TriangleMesh::new(r.vertices, parts.concat())
-}
-
 /// The Boolean `op` of two polygon meshes (the polygon-mesh variant of
 /// chapter 4): levels 3-6 with inclusion values (eq. 4.7-4.13), composite
 /// edges (eq. 4.14-4.16) and retained facets (section 4.6).
@@ -406,8 +388,15 @@ fn boolean_mesh_impl(
 }
 
 /// The Boolean `op` of two triangle meshes (the triangle-mesh variant):
-/// as [`boolean_mesh`], then every retained facet is triangulated by adding
-/// internal edges only (section 4.8).
+/// edge-adjacent triangles that are exactly coplanar and face the same way
+/// are merged into polygon facets, vertices that only subdivide a straight
+/// edge between two such facets are dropped, the Boolean runs as
+/// [`boolean_mesh`] on those facets, and every retained facet is
+/// triangulated by adding internal edges only (section 4.8), re-using the
+/// input triangles outside the region the Boolean changed. Merging and
+/// dropping remove only opposite half-edge pairs, so the result is
+/// topologically valid whatever the coordinates, and a chain of operations
+/// keeps the triangle count of the shape's real complexity.
 pub fn boolean_triangles(
     a: &TriangleMesh,
     b: &TriangleMesh,
@@ -436,13 +425,45 @@ fn boolean_triangles_impl(
     audit: bool,
 ) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
     supported(op)?;
-    let (fa, fb) = flat_pair(a, b, flat_triangles)?;
-    let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let (ta, tb) = flat_pair(a, b, flat_triangles)?;
+    // The coplanar merge (module `merge`): the Boolean runs on the merged
+    // facets; an operand without any merge keeps its triangle form.
+    let internal =
+        |e: TopologyError| Boolean3Error::Internal(format!("coplanar merge broke closure: {e}"));
+    let (ma, mb) = rayon::join(|| Merged::new(ta), || Merged::new(tb));
+    let ((ma, fa), (mb, fb)) = (ma.map_err(internal)?, mb.map_err(internal)?);
+    let (r, l3, mut audit) = run(&fa, &fb, op, audit)?;
     let intersections = l3.x12.len() + l3.x21.len();
-    // As in `boolean_mesh_impl`: free what the output does not need first.
-    drop((fa, fb, l3));
+    drop(l3);
+    let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
+    let mesh = to_triangle_mesh(
+        r,
+        [
+            Source {
+                triangles: &a.triangles,
+                pos: &a.vertices,
+                merged: &ma,
+                facets: &fa,
+                sigma: 1,
+            },
+            Source {
+                triangles: &b.triangles,
+                pos: &b.vertices,
+                merged: &mb,
+                facets: &fb,
+                sigma: sigma_b,
+            },
+        ],
+    );
+    if let Some(au) = audit.as_mut() {
+        // Theorem 4 on the polygon result the Boolean built, then shape
+        // boundary closure of its triangulation.
+        if au.shape_closure.is_ok() {
+            au.shape_closure = mesh.check_topology();
+        }
+    }
     let out = TriangleOutput {
-        mesh: to_triangle_mesh(r),
+        mesh,
         intersections,
     };
     Ok((out, audit))

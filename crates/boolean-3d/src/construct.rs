@@ -52,6 +52,18 @@ pub(crate) struct Retained {
     /// `(operand, half-edges, [(facet, half-edge count)])` per chunk.
     pub chunks: Vec<RetainedChunk>,
     pub composites: Vec<CompositeRecord>,
+    /// For each operand (A, B): the result vertex of each input vertex
+    /// (`u32::MAX` when not retained), its inclusion value (eq. 4.7,
+    /// 4.10), and the range of result vertex ids copied from it.
+    pub maps: [VertexMap; 2],
+}
+
+/// Where one operand's vertices went in the result (the triangle-mesh
+/// variant re-uses the input triangulation of untouched regions with it).
+pub(crate) struct VertexMap {
+    pub vid: Vec<u32>,
+    pub incl: Vec<i32>,
+    pub own: std::ops::Range<u32>,
 }
 
 impl Retained {
@@ -264,6 +276,7 @@ pub(crate) fn construct(
     vertices.extend(l3.x12.iter().map(|h| h.point));
     let base21 = vertices.len() as u32;
     vertices.extend(l3.x21.iter().map(|h| h.point));
+    let base_b = vertices.len() as u32;
     let mut vid_b = vec![NONE; b.pos.len()];
     for v in 0..b.pos.len() {
         if i30[v] != 0 {
@@ -383,10 +396,23 @@ pub(crate) fn construct(
         .map(|(h, l)| (Operand::A, h, l))
         .chain(facets_b.into_iter().map(|(h, l)| (Operand::B, h, l)))
         .collect();
+    let total = vertices.len() as u32;
     Ok(Retained {
         vertices,
         chunks,
         composites,
+        maps: [
+            VertexMap {
+                vid: vid_a,
+                incl: i03,
+                own: 0..base12,
+            },
+            VertexMap {
+                vid: vid_b,
+                incl: i30,
+                own: base_b..total,
+            },
+        ],
     })
 }
 

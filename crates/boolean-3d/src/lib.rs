@@ -14,8 +14,13 @@
 //!   net end-vertex counts of section 4.6, paired along their direction
 //!   (eq. 4.14-4.16, [`CompositeEdge3`]).
 //! - Level 5: retained facets (which may gain holes); level 6: the shape.
-//! - The triangle-mesh variant triangulates each retained facet by adding
-//!   internal edges only (section 4.8, [`triangulate_facet`]).
+//! - The triangle-mesh variant merges exactly coplanar, co-oriented
+//!   edge-adjacent input triangles into polygon facets (and drops vertices
+//!   that only subdivide a straight edge) before the Boolean, then
+//!   triangulates each retained facet by adding internal edges only
+//!   (section 4.8, [`triangulate_facet`]), keeping the input triangles of
+//!   the regions the Boolean left untouched; a chain of operations thus
+//!   keeps the shape's real complexity (`docs/algorithms/boolean-3d.md`).
 //!
 //! Theorems 1-4 of section 4.9 are checkable through the audit variants
 //! ([`boolean_mesh_audit`], [`Audit::verify`]). Inputs are validated first
@@ -56,7 +61,9 @@ mod composite;
 mod construct;
 mod error;
 mod level3;
+mod merge;
 mod mesh;
+mod retriangulate;
 
 pub use api::{
     boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,

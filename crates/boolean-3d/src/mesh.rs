@@ -60,6 +60,16 @@ impl<'a> Flat<'a> {
         Self::build(&m.vertices, he, facet_off, "triangle")
     }
 
+    /// The flat form of facets built by the coplanar merge from a
+    /// validated triangle mesh (closed by construction, see `merge`).
+    pub fn from_merged(
+        pos: &'a [Point3],
+        he: Vec<(u32, u32)>,
+        facet_off: Vec<u32>,
+    ) -> Result<Self, TopologyError> {
+        Self::build(pos, he, facet_off, "merged facet")
+    }
+
     fn build(
         pos: &'a [Point3],
         he: Vec<(u32, u32)>,

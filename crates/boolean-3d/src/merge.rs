@@ -1,0 +1,431 @@
+//! The coplanar merge of the triangle-mesh variant: edge-adjacent input
+//! triangles that are exactly coplanar and face the same way are merged
+//! into one polygon facet before the Boolean, so that a planar region is
+//! cut and re-triangulated as a whole (section 4.8), not piece by piece.
+//!
+//! Two triangles `(u, v, c1)` and `(v, u, c2)` sharing the edge `{u, v}`
+//! are merged across it when the edge has exactly these two half-edges
+//! (one each way, `u != v`), both triangles are non-degenerate, the four
+//! points are coplanar by the exact `orient3d`, and `c1`, `c2` lie strictly
+//! on opposite sides of the line `uv` in the plane (exact `orient2d` in a
+//! coordinate projection where the first triangle is non-degenerate, which
+//! maps the common plane affinely and so keeps both signs). A merged facet
+//! holds every half-edge of its triangles except the merged pairs. Each
+//! triangle is closed and a merged pair is a half-edge and its opposite,
+//! so facet boundary closure holds for every merged facet and shape
+//! boundary closure is unchanged (section 4.2), whatever the geometry:
+//! the exact tests only decide where merging keeps the facets planar.
+
+use crate::mesh::Flat;
+use rayon::prelude::*;
+use robust_arith::{orient2d, orient3d, Point3};
+use std::cmp::Ordering;
+use topology::TopologyError;
+
+/// No partner / no facet.
+pub(crate) const NONE: u32 = u32::MAX;
+
+/// A triangle mesh's triangles grouped into merged facets.
+pub(crate) struct Merged {
+    /// `tri_off[f]..tri_off[f + 1]` index `tris`: the input triangles of
+    /// facet `f`, in input order.
+    pub tri_off: Vec<u32>,
+    /// Input triangle indices grouped by facet.
+    pub tris: Vec<u32>,
+    /// For every input half-edge `3t + k`, the half-edge it was merged
+    /// with, or [`NONE`].
+    pub partner: Vec<u32>,
+    /// Whether any two triangles were merged.
+    pub any: bool,
+}
+
+/// Whether the triangle `a, b, c` is non-degenerate, and then a
+/// coordinate plane (dropping axis 0, 1 or 2) in which it is, with the
+/// sign of its orientation there. The planes are tried in the order of
+/// the approximate normal's components, largest first, so that the exact
+/// `orient2d` is decided by its fast filter in the usual case; the answer
+/// is exact whatever the order.
+fn plane_of(a: Point3, b: Point3, c: Point3) -> Option<(usize, Ordering)> {
+    let (d, e) = (
+        [b[0] - a[0], b[1] - a[1], b[2] - a[2]],
+        [c[0] - a[0], c[1] - a[1], c[2] - a[2]],
+    );
+    let n = [
+        (d[1] * e[2] - d[2] * e[1]).abs(),
+        (d[2] * e[0] - d[0] * e[2]).abs(),
+        (d[0] * e[1] - d[1] * e[0]).abs(),
+    ];
+    let mut order = [0usize, 1, 2];
+    order.sort_by(|&i, &j| n[j].total_cmp(&n[i]));
+    order.into_iter().find_map(|axis| {
+        let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
+        (o != Ordering::Equal).then_some((axis, o))
+    })
+}
+
+#[inline]
+fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
+    match axis {
+        0 => [p[1], p[2]],
+        1 => [p[2], p[0]],
+        _ => [p[0], p[1]],
+    }
+}
+
+/// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
+/// triangle mesh's flat form may be merged across their edge.
+fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
+    let (t1, t2) = (h1 / 3, h2 / 3);
+    if t1 == t2 {
+        return false;
+    }
+    let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
+    let (u, v) = flat.he[h1 as usize];
+    let (c1, c2) = (opposite(h1), opposite(h2));
+    let p = |i: u32| flat.pos[i as usize];
+    let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
+    // Coplanar: the same coordinate on one axis (the common case of
+    // axis-aligned facets, decided without arithmetic; that axis's
+    // coordinate plane is then the one to project on), else the exact
+    // orient3d.
+    let shared = (0..3).find(|&k| pu[k] == pv[k] && pu[k] == p1[k] && pu[k] == p2[k]);
+    if shared.is_none() && orient3d(pu, pv, p1, p2) != Ordering::Equal {
+        return false;
+    }
+    let first = shared.and_then(|axis| {
+        let o = orient2d(
+            drop_axis(pu, axis),
+            drop_axis(pv, axis),
+            drop_axis(p1, axis),
+        );
+        (o != Ordering::Equal).then_some((axis, o))
+    });
+    let Some((axis, s1)) = first.or_else(|| plane_of(pu, pv, p1)) else {
+        return false;
+    };
+    // Triangle 2 is (v, u, c2): the same orientation as triangle 1 in the
+    // common plane means c2 on the other side of u->v.
+    orient2d(
+        drop_axis(pv, axis),
+        drop_axis(pu, axis),
+        drop_axis(p2, axis),
+    ) == s1
+}
+
+fn find(parent: &mut [u32], mut x: u32) -> u32 {
+    while parent[x as usize] != x {
+        let up = parent[parent[x as usize] as usize];
+        parent[x as usize] = up;
+        x = up;
+    }
+    x
+}
+
+impl Merged {
+    /// Merges the triangles of `flat` (the flat form of a triangle mesh);
+    /// returns the merge and the merged facets' flat form (`flat` itself
+    /// when nothing merges).
+    pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
+        let n_he = flat.he.len();
+        let n_t = n_he / 3;
+        // Candidate edges: exactly two half-edges, one each way.
+        let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
+            .into_par_iter()
+            .filter_map(|e| {
+                let hs = flat.edge_half_edges(e);
+                if hs.len() != 2 {
+                    return None;
+                }
+                let (h1, h2) = (hs[0], hs[1]);
+                let (s1, e1) = flat.he[h1 as usize];
+                let (s2, e2) = flat.he[h2 as usize];
+                if s1 == e1 || s1 != e2 || e1 != s2 {
+                    return None;
+                }
+                mergeable(&flat, h1, h2).then_some((h1, h2))
+            })
+            .collect();
+        let mut partner = vec![NONE; n_he];
+        let mut parent: Vec<u32> = (0..n_t as u32).collect();
+        for &(h1, h2) in &pairs {
+            partner[h1 as usize] = h2;
+            partner[h2 as usize] = h1;
+            let (r1, r2) = (find(&mut parent, h1 / 3), find(&mut parent, h2 / 3));
+            if r1 != r2 {
+                // The smaller root wins, so roots are first triangles.
+                let (lo, hi) = if r1 < r2 { (r1, r2) } else { (r2, r1) };
+                parent[hi as usize] = lo;
+            }
+        }
+        // Facets numbered by their first triangle; triangles grouped by a
+        // counting sort, in input order within a facet.
+        let mut facet_of = vec![NONE; n_t];
+        let mut n_f = 0u32;
+        for t in 0..n_t as u32 {
+            let r = find(&mut parent, t);
+            if r == t {
+                facet_of[t as usize] = n_f;
+                n_f += 1;
+            } else {
+                facet_of[t as usize] = facet_of[r as usize];
+            }
+        }
+        let mut tri_off = vec![0u32; n_f as usize + 1];
+        for &f in &facet_of {
+            tri_off[f as usize + 1] += 1;
+        }
+        for f in 0..n_f as usize {
+            tri_off[f + 1] += tri_off[f];
+        }
+        let mut fill = tri_off.clone();
+        let mut tris = vec![0u32; n_t];
+        for (t, &f) in facet_of.iter().enumerate() {
+            tris[fill[f as usize] as usize] = t as u32;
+            fill[f as usize] += 1;
+        }
+        let merged = Merged {
+            tri_off,
+            tris,
+            partner,
+            any: !pairs.is_empty(),
+        };
+        if !merged.any {
+            return Ok((merged, flat));
+        }
+        let (tri_off, tris, partner) = (&merged.tri_off, &merged.tris, &merged.partner);
+        let mut he = Vec::with_capacity(n_he - 2 * pairs.len());
+        let mut facet_off = Vec::with_capacity(n_f as usize + 1);
+        facet_off.push(0u32);
+        for f in 0..n_f as usize {
+            for &t in &tris[tri_off[f] as usize..tri_off[f + 1] as usize] {
+                for h in 3 * t..3 * t + 3 {
+                    if partner[h as usize] == NONE {
+                        he.push(flat.he[h as usize]);
+                    }
+                }
+            }
+            facet_off.push(he.len() as u32);
+        }
+        let (he, facet_off) = drop_straight_vertices(flat.pos, he, facet_off);
+        let out = Flat::from_merged(flat.pos, he, facet_off)?;
+        Ok((merged, out))
+    }
+
+    /// The input triangles of merged facet `f`.
+    pub fn triangles(&self, f: u32) -> &[u32] {
+        &self.tris[self.tri_off[f as usize] as usize..self.tri_off[f as usize + 1] as usize]
+    }
+}
+
+/// Whether `v` lies strictly inside the segment `u w` exactly: the three
+/// points collinear by the exact `orient2d` in every coordinate plane, and
+/// `v` between `u` and `w` on every axis, not at either end.
+fn strictly_between(u: Point3, v: Point3, w: Point3) -> bool {
+    if v == u || v == w {
+        return false;
+    }
+    (0..3).all(|k| u[k].min(w[k]) <= v[k] && v[k] <= u[k].max(w[k]))
+        && (0..3).all(|axis| {
+            orient2d(drop_axis(u, axis), drop_axis(v, axis), drop_axis(w, axis)) == Ordering::Equal
+        })
+}
+
+/// Drops the vertices that only subdivide a straight edge: a vertex `v`
+/// whose only half-edges are `u->v`, `v->w` in one facet and `w->v`,
+/// `v->u` in another, with `v` strictly inside the segment `u w`. The two
+/// pairs become `u->w` and `w->u`: each facet loses one half-edge ending
+/// and one starting at `v` and keeps its balance at `u` and `w` (facet
+/// boundary closure), and the shape loses `u->v, v->u, v->w, w->v` and
+/// gains `u->w, w->u` (shape boundary closure), so the constraints of
+/// section 4.2 hold whatever the test decides; the exact test keeps the
+/// geometry (the facets' regions are unchanged). Runs of such vertices on
+/// one segment go one after another, in vertex order.
+fn drop_straight_vertices(
+    pos: &[Point3],
+    mut he: Vec<(u32, u32)>,
+    facet_off: Vec<u32>,
+) -> (Vec<(u32, u32)>, Vec<u32>) {
+    let n_v = pos.len();
+    // Half-edges starting and ending at each vertex (saturating at 3).
+    let mut starts = vec![0u8; n_v];
+    let mut ends = vec![0u8; n_v];
+    for &(s, e) in &he {
+        starts[s as usize] = starts[s as usize].saturating_add(1).min(3);
+        ends[e as usize] = ends[e as usize].saturating_add(1).min(3);
+    }
+    let candidate = |v: usize| starts[v] == 2 && ends[v] == 2;
+    if !(0..n_v).any(candidate) {
+        return (he, facet_off);
+    }
+    let mut facet = vec![0u32; he.len()];
+    for f in 0..facet_off.len() - 1 {
+        for h in facet_off[f]..facet_off[f + 1] {
+            facet[h as usize] = f as u32;
+        }
+    }
+    // The two incoming and two outgoing half-edges of each candidate.
+    let mut inc = vec![[NONE; 2]; n_v];
+    let mut out = vec![[NONE; 2]; n_v];
+    let put = |slot: &mut [u32; 2], h: u32| {
+        if slot[0] == NONE {
+            slot[0] = h;
+        } else {
+            slot[1] = h;
+        }
+    };
+    for (h, &(s, e)) in he.iter().enumerate() {
+        if candidate(s as usize) {
+            put(&mut out[s as usize], h as u32);
+        }
+        if candidate(e as usize) {
+            put(&mut inc[e as usize], h as u32);
+        }
+    }
+    let mut alive = vec![true; he.len()];
+    let mut dropped = false;
+    for v in 0..n_v {
+        if !candidate(v) {
+            continue;
+        }
+        let [o1, o2] = out[v];
+        let [a, b] = inc[v];
+        // i1: the incoming half-edge in o1's facet.
+        let (i1, i2) = if facet[a as usize] == facet[o1 as usize] {
+            (a, b)
+        } else {
+            (b, a)
+        };
+        let (f1, f2) = (facet[o1 as usize], facet[o2 as usize]);
+        if f1 == f2 || facet[i1 as usize] != f1 || facet[i2 as usize] != f2 {
+            continue;
+        }
+        let u = he[i1 as usize].0;
+        let w = he[o1 as usize].1;
+        let v32 = v as u32;
+        if u == w
+            || u == v32
+            || w == v32
+            || he[i2 as usize].0 != w
+            || he[o2 as usize].1 != u
+            || !strictly_between(pos[u as usize], pos[v], pos[w as usize])
+        {
+            continue;
+        }
+        // f1: u->v, v->w becomes u->w (kept in i1); f2: w->v, v->u becomes
+        // w->u (kept in i2).
+        he[i1 as usize] = (u, w);
+        he[i2 as usize] = (w, u);
+        alive[o1 as usize] = false;
+        alive[o2 as usize] = false;
+        dropped = true;
+        // w's incoming o1 is now i1; u's incoming o2 is now i2 (when they
+        // are candidates still to come).
+        for (x, old, new) in [(w, o1, i1), (u, o2, i2)] {
+            for slot in &mut inc[x as usize] {
+                if *slot == old {
+                    *slot = new;
+                }
+            }
+        }
+    }
+    if !dropped {
+        return (he, facet_off);
+    }
+    let mut kept = Vec::with_capacity(he.len());
+    let mut off = Vec::with_capacity(facet_off.len());
+    off.push(0u32);
+    for f in 0..facet_off.len() - 1 {
+        for h in facet_off[f]..facet_off[f + 1] {
+            if alive[h as usize] {
+                kept.push(he[h as usize]);
+            }
+        }
+        off.push(kept.len() as u32);
+    }
+    (kept, off)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topology::TriangleMesh;
+
+    fn merged(v: Vec<Point3>, t: Vec<[u32; 3]>) -> (bool, usize, Vec<u32>) {
+        let m = TriangleMesh::new(v, t);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let (merge, f) = Merged::new(flat).unwrap();
+        (merge.any, f.facet_count(), merge.partner)
+    }
+
+    /// A square pyramid whose base (facing down) is split along 0-2, base
+    /// corner 3 at `p`: 6 triangles.
+    fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            p,
+            [0.5, 0.5, 1.0],
+        ];
+        let t = vec![
+            [0, 2, 1],
+            [0, 3, 2],
+            [0, 1, 4],
+            [1, 2, 4],
+            [2, 3, 4],
+            [3, 0, 4],
+        ];
+        merged(v, t)
+    }
+
+    #[test]
+    fn exactly_coplanar_co_oriented_triangles_merge() {
+        let (any, facets, partner) = pyramid([0.0, 1.0, 0.0]);
+        assert!(any);
+        assert_eq!(facets, 5);
+        // Half-edge 0 (0->2) of triangle 0 and half-edge 5 (2->0) of
+        // triangle 1.
+        assert_eq!(partner[0], 5);
+        assert_eq!(partner[5], 0);
+        assert_eq!(partner.iter().filter(|&&p| p != NONE).count(), 2);
+    }
+
+    #[test]
+    fn bent_folded_or_degenerate_triangles_do_not_merge() {
+        // Bent by the smallest subnormal out of the plane.
+        assert!(!pyramid([0.0, 1.0, f64::from_bits(1)]).0);
+        // The second base triangle degenerate (corner 3 on the diagonal):
+        // the base does not merge (two sides, now in the plane x = y, do).
+        let (_, facets, partner) = pyramid([0.5, 0.5, 0.0]);
+        assert_eq!((partner[0], partner[5]), (NONE, NONE));
+        assert_eq!(facets, 5);
+        // A triangle and its reverse (a closed two-sided sheet): every edge
+        // joins coplanar triangles folded onto each other.
+        let v = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        assert!(!merged(v, vec![[0, 1, 2], [1, 0, 2]]).0);
+    }
+
+    #[test]
+    fn a_non_manifold_edge_is_not_merged_across() {
+        // Four coplanar triangles on the edge 0-1 (two sheets).
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.5, -1.0, 0.0],
+        ];
+        let t = vec![
+            [0, 1, 2],
+            [1, 0, 3],
+            [0, 2, 1],
+            [1, 3, 0],
+            [0, 1, 2],
+            [1, 0, 3],
+            [0, 2, 1],
+            [1, 3, 0],
+        ];
+        let (any, facets, _) = merged(v, t);
+        assert!(!any);
+        assert_eq!(facets, 8);
+    }
+}

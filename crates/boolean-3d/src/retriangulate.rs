@@ -1,0 +1,235 @@
+//! The triangles of the triangle-mesh variant's result: every retained
+//! facet (a merged coplanar region, cut by the Boolean) is triangulated by
+//! internal edges only (section 4.8), re-using the input triangles of the
+//! part of the region the Boolean left untouched.
+//!
+//! For a retained facet `F'` of merged facet `F`:
+//!
+//! - `F` of one triangle: [`triangulate_facet`] of `F'` (as before the
+//!   merge existed).
+//! - `F'` is `F` copied (or, for B in a difference, reversed) half-edge by
+//!   half-edge and every vertex of `F`'s triangles is retained with the
+//!   operand's inclusion value: the input triangles, mapped (reversed).
+//! - Otherwise the *cut box* bounds every vertex of `F'` that is not one of
+//!   the operand's retained vertices (intersection vertices) and every
+//!   vertex of `F`'s triangles that is not retained with the operand's
+//!   inclusion value. An input triangle with all vertices so retained and a
+//!   bounding box disjoint from the cut box is *kept*; the rest of `F'`,
+//!   the *residual* `F' - sum of the kept triangles' boundaries` (opposite
+//!   half-edge pairs cancelled), is triangulated by [`triangulate_facet`].
+//!
+//! Topology holds whatever the geometry: the residual is a sum of closed
+//! chains (F' by Theorem 3, each kept triangle reversed), so it satisfies
+//! facet boundary closure; its triangulation adds internal edges in
+//! opposite pairs; and the kept triangles plus the residual's triangles
+//! have, up to opposite pairs, exactly the half-edges of `F'`. The result
+//! thus satisfies shape boundary closure whenever the polygon result does
+//! (Theorem 4). Geometry: every new boundary of `F'` (intersection edges,
+//! cut parts of `F`'s edges, the parts around removed vertices) lies in
+//! the cut box, so a kept triangle lies inside `F'`, and the residual is
+//! the region the Boolean changed plus the input triangles around it.
+
+use crate::construct::{Retained, VertexMap};
+use crate::merge::{Merged, NONE};
+use crate::mesh::Flat;
+use rayon::prelude::*;
+use robust_arith::Point3;
+use topology::{triangulate_facet, TriangleMesh};
+
+/// One operand as the re-triangulation needs it.
+pub(crate) struct Source<'a> {
+    /// The input triangles.
+    pub triangles: &'a [[u32; 3]],
+    /// The input vertex positions.
+    pub pos: &'a [Point3],
+    /// The coplanar merge that built the Boolean's facets.
+    pub merged: &'a Merged,
+    /// The merged facets the Boolean ran on.
+    pub facets: &'a Flat<'a>,
+    /// The inclusion value of the operand's vertices retained outside the
+    /// other operand's boundary: 1, or -1 for B in a difference
+    /// (eq. 4.7-4.13 with `X = 0` for A and `X = 1` for B).
+    pub sigma: i32,
+}
+
+/// Triangulates every retained facet, chunk by chunk in parallel,
+/// concatenated in order.
+pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> TriangleMesh {
+    let parts: Vec<Vec<[u32; 3]>> = r
+        .chunks
+        .par_iter()
+        .map(|(operand, hes, list)| {
+            let k = *operand as usize;
+            let (src, map) = (&sources[k], &r.maps[k]);
+            let mut tris = Vec::with_capacity(hes.len() / 3 + list.len());
+            let mut scratch = Scratch::default();
+            let mut at = 0usize;
+            for &(f, n) in list {
+                let part = &hes[at..at + n as usize];
+                at += n as usize;
+                facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
+            }
+            tris
+        })
+        .collect();
+    TriangleMesh::new(r.vertices, parts.concat())
+}
+
+#[derive(Default)]
+struct Scratch {
+    kept: Vec<bool>,
+    residual: Vec<(u32, u32, i32)>,
+    hes: Vec<(u32, u32)>,
+}
+
+/// Triangulates the retained facet `part` of merged facet `f`.
+fn facet(
+    vertices: &[Point3],
+    src: &Source<'_>,
+    map: &VertexMap,
+    f: u32,
+    part: &[(u32, u32)],
+    s: &mut Scratch,
+    out: &mut Vec<[u32; 3]>,
+) {
+    let tris = src.merged.triangles(f);
+    if tris.len() <= 1 {
+        triangulate_facet(vertices, part, out);
+        return;
+    }
+    let sigma = src.sigma;
+    let vid = |v: u32| map.vid[v as usize];
+    let retained = |v: u32| map.incl[v as usize] == sigma;
+    // The input triangle, mapped and oriented as the operand's facets are
+    // retained.
+    let oriented = |t: u32| {
+        let [a, b, c] = src.triangles[t as usize].map(vid);
+        if sigma == 1 {
+            [a, b, c]
+        } else {
+            [a, c, b]
+        }
+    };
+    let all_retained = || {
+        tris.iter()
+            .all(|&t| src.triangles[t as usize].iter().all(|&v| retained(v)))
+    };
+    let whole = &src.facets.he[src.facets.facet_range(f)];
+    if part.len() == whole.len() {
+        let same = if sigma == 1 {
+            part.iter()
+                .zip(whole)
+                .all(|(&(s, e), &(s0, e0))| s == vid(s0) && e == vid(e0))
+        } else {
+            part.iter()
+                .zip(whole)
+                .all(|(&(s, e), &(s0, e0))| s == vid(e0) && e == vid(s0))
+        };
+        if same && all_retained() {
+            out.extend(tris.iter().map(|&t| oriented(t)));
+            return;
+        }
+    }
+    // The cut box.
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    let mut grow = |p: Point3| {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    };
+    for &(a, b) in part {
+        for v in [a, b] {
+            if !map.own.contains(&v) {
+                grow(vertices[v as usize]);
+            }
+        }
+    }
+    for &t in tris {
+        for v in src.triangles[t as usize] {
+            if !retained(v) {
+                grow(src.pos[v as usize]);
+            }
+        }
+    }
+    s.kept.clear();
+    s.kept.extend(tris.iter().map(|&t| {
+        let tri = src.triangles[t as usize];
+        if !tri.iter().all(|&v| retained(v)) {
+            return false;
+        }
+        (0..3).any(|c| {
+            let (mut tlo, mut thi) = (f64::INFINITY, f64::NEG_INFINITY);
+            for v in tri {
+                let x = src.pos[v as usize][c];
+                tlo = tlo.min(x);
+                thi = thi.max(x);
+            }
+            thi < lo[c] || tlo > hi[c]
+        })
+    }));
+    if !s.kept.iter().any(|&k| k) {
+        triangulate_facet(vertices, part, out);
+        return;
+    }
+    // `tris` is in input order, so a triangle's place is found by binary
+    // search.
+    let kept = |t: u32| tris.binary_search(&t).is_ok_and(|i| s.kept[i]);
+    // The residual as signed edges (lower id, higher id, +1 for lower to
+    // higher): F' plus the reversed boundary of the kept triangles, where
+    // pairs between two kept triangles are skipped (they cancel).
+    s.residual.clear();
+    let mut push = |a: u32, b: u32, sign: i32| {
+        if a < b {
+            s.residual.push((a, b, sign));
+        } else if a > b {
+            s.residual.push((b, a, -sign));
+        }
+    };
+    for &(a, b) in part {
+        push(a, b, 1);
+    }
+    for (i, &t) in tris.iter().enumerate() {
+        if !s.kept[i] {
+            continue;
+        }
+        let [a, b, c] = oriented(t);
+        for (k, (x, y)) in [(a, b), (b, c), (c, a)].into_iter().enumerate() {
+            // Input half-edge of this side: sigma = 1 keeps k, -1 reverses
+            // the triangle (a, c, b), whose sides are input sides 2, 1, 0.
+            let h = if sigma == 1 {
+                3 * t + k as u32
+            } else {
+                3 * t + 2 - k as u32
+            };
+            let p = src.merged.partner[h as usize];
+            if p != NONE && kept(p / 3) {
+                continue;
+            }
+            push(y, x, 1);
+        }
+    }
+    s.residual.sort_unstable_by_key(|&(a, b, _)| (a, b));
+    s.hes.clear();
+    let mut i = 0;
+    while i < s.residual.len() {
+        let (a, b, _) = s.residual[i];
+        let mut net = 0i32;
+        while i < s.residual.len() && s.residual[i].0 == a && s.residual[i].1 == b {
+            net += s.residual[i].2;
+            i += 1;
+        }
+        let he = if net > 0 { (a, b) } else { (b, a) };
+        for _ in 0..net.unsigned_abs() {
+            s.hes.push(he);
+        }
+    }
+    triangulate_facet(vertices, &s.hes, out);
+    out.extend(
+        tris.iter()
+            .zip(&s.kept)
+            .filter(|(_, &k)| k)
+            .map(|(&t, _)| oriented(t)),
+    );
+}

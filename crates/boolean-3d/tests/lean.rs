@@ -1,0 +1,228 @@
+//! The triangle-mesh variant stays lean over chains of operations
+//! (issue 13): coplanar input triangles are merged before the Boolean and
+//! untouched regions keep their triangles, so a slab carved by `k`
+//! through-holes has exactly the triangle count of its real complexity,
+//! the topology holds after every step, and volumes stay exact.
+//!
+//! The count is derived, not tuned: a planar region with `V` boundary
+//! vertices and `H` holes, triangulated by internal edges only (no Steiner
+//! points), has `V + 2H - 2` triangles (Euler). The slab's top and bottom
+//! faces after `k` box holes have `V = 4 + 4k`, `H = k`, so `6k + 2`
+//! triangles each; its four sides 2 each; each hole 4 rectangular walls of
+//! 2 triangles. Total `20k + 12`. A cavity left by a polyhedron wholly
+//! inside the slab adds exactly the polyhedron's own triangles.
+
+use boolean_3d::{boolean_triangles, boolean_triangles_audit, triangulate_mesh, BooleanOp};
+use proptest::prelude::*;
+use test_support::exact::triangle_mesh_volume as exact_volume;
+use test_support::shapes::{box_mesh, box_triangles, icosphere};
+use topology::TriangleMesh;
+
+/// Checks what every step of a chain must satisfy: shape boundary closure,
+/// every triangle on three distinct vertices facing its way (non-zero
+/// area), and the exact volume.
+fn check_step(m: &TriangleMesh, volume: f64, what: &str) {
+    assert_eq!(m.check_topology(), Ok(()), "{what}");
+    for t in &m.triangles {
+        assert!(
+            t[0] != t[1] && t[1] != t[2] && t[2] != t[0],
+            "{what}: triangle {t:?} repeats a vertex"
+        );
+        let [a, b, c] = t.map(|i| m.vertices[i as usize]);
+        let cross = [
+            (b[1] - a[1]) * (c[2] - a[2]) - (b[2] - a[2]) * (c[1] - a[1]),
+            (b[2] - a[2]) * (c[0] - a[0]) - (b[0] - a[0]) * (c[2] - a[2]),
+            (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]),
+        ];
+        assert!(
+            cross.iter().any(|&x| x != 0.0),
+            "{what}: degenerate triangle {t:?}"
+        );
+    }
+    let v = exact_volume(m);
+    assert!(
+        (v - volume).abs() <= 1e-12 * volume.abs().max(1.0),
+        "{what}: volume {v} vs {volume}"
+    );
+}
+
+/// A box hole through the slab `[0, w] x [0, h] x [0, 1]` in grid cell
+/// `(i, j)`, 0.5 x 0.5 x 2, shifted by a dyadic jitter.
+fn through_box(i: u32, j: u32, jx: i32, jy: i32) -> TriangleMesh {
+    let x = f64::from(i) + 0.25 + f64::from(jx) / 64.0;
+    let y = f64::from(j) + 0.25 + f64::from(jy) / 64.0;
+    box_triangles([x, y, -0.5], [x + 0.5, y + 0.5, 1.5])
+}
+
+#[test]
+fn slab_chain_of_50_holes_has_exactly_20k_plus_12_triangles() {
+    let mut shape = triangulate_mesh(&box_mesh([0.0; 3], [10.0, 5.0, 1.0]));
+    for k in 0..50u32 {
+        let jitter = ((k * 7) % 13) as i32 - 6;
+        let hole = through_box(k / 5, k % 5, jitter, -jitter / 2);
+        let (out, audit) = boolean_triangles_audit(&shape, &hole, BooleanOp::Difference).unwrap();
+        audit.verify().unwrap();
+        let holes = k as usize + 1;
+        check_step(
+            &out.mesh,
+            50.0 - 0.25 * holes as f64,
+            &format!("step {holes}"),
+        );
+        assert_eq!(out.mesh.triangles.len(), 20 * holes + 12, "step {holes}");
+        shape = out.mesh;
+    }
+}
+
+#[test]
+fn an_untouched_operand_keeps_its_triangles() {
+    // Disjoint operands: the union is both inputs' triangles, unchanged.
+    let a = box_triangles([0.0; 3], [1.0; 3]);
+    let b = box_triangles([2.0; 3], [3.0; 3]);
+    let out = boolean_triangles(&a, &b, BooleanOp::Union).unwrap();
+    assert_eq!(out.mesh.triangles.len(), 24);
+    check_step(&out.mesh, 2.0, "disjoint union");
+}
+
+#[test]
+fn interior_vertices_of_coplanar_regions_are_dropped() {
+    // A box whose every face is split into 4 triangles around the centre
+    // (an interior vertex per face): the merge drops the centres, so the
+    // difference with a small box in one corner has no triangle on them.
+    let c = test_support::shapes::box_corners([0.0; 3], [2.0; 3]);
+    let mut v = c.to_vec();
+    let mut tris = Vec::new();
+    for q in test_support::shapes::CUBE_FACES {
+        let mut m = [0.0; 3];
+        for &i in &q {
+            for (k, mk) in m.iter_mut().enumerate() {
+                *mk += c[i as usize][k] / 4.0;
+            }
+        }
+        let centre = v.len() as u32;
+        v.push(m);
+        for s in 0..4 {
+            tris.push([q[s], q[(s + 1) % 4], centre]);
+        }
+    }
+    let a = TriangleMesh::new(v, tris);
+    assert_eq!(a.check_topology(), Ok(()));
+    let b = box_triangles([-1.0; 3], [0.5; 3]);
+    let (out, audit) = boolean_triangles_audit(&a, &b, BooleanOp::Difference).unwrap();
+    audit.verify().unwrap();
+    check_step(&out.mesh, 8.0 - 0.125, "corner cut");
+    let centres: Vec<[f64; 3]> = (8..14).map(|i| a.vertices[i]).collect();
+    for t in &out.mesh.triangles {
+        for &i in t {
+            assert!(
+                !centres.contains(&out.mesh.vertices[i as usize]),
+                "face centre kept: {t:?}"
+            );
+        }
+    }
+    // By Euler per face: 3 untouched squares (2 triangles each), 3 faces
+    // with the corner notch, hexagons (4 each), the notch's 3 squares (2).
+    assert_eq!(out.mesh.triangles.len(), 3 * 2 + 3 * 4 + 3 * 2);
+}
+
+#[test]
+fn vertices_that_only_subdivide_a_straight_edge_are_dropped() {
+    // A 2 x 1 x 1 box whose four long faces are each two unit squares (the
+    // vertices at x = 1 subdivide the long edges): 20 triangles. Their
+    // faces merge into rectangles, the four middle vertices go, and a
+    // union with a disjoint cube gives two boxes of 12 triangles each.
+    let mut v = Vec::new();
+    for x in [0.0, 1.0, 2.0] {
+        for (y, z) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
+            v.push([x, y, z]);
+        }
+    }
+    // Vertex 4 i + k: x = i, (y, z) corner k going round the x axis.
+    let mut tris = Vec::new();
+    for i in 0..2u32 {
+        for k in 0..4u32 {
+            let (a, b) = (4 * i + k, 4 * i + (k + 1) % 4);
+            let (c, d) = (a + 4, b + 4);
+            tris.push([a, b, d]);
+            tris.push([a, d, c]);
+        }
+    }
+    tris.extend([[0, 3, 2], [0, 2, 1], [8, 9, 10], [8, 10, 11]]);
+    let a = TriangleMesh::new(v, tris);
+    assert_eq!(a.check_topology(), Ok(()));
+    assert_eq!(exact_volume(&a), 2.0);
+    let b = box_triangles([5.0; 3], [6.0; 3]);
+    let (out, audit) = boolean_triangles_audit(&a, &b, BooleanOp::Union).unwrap();
+    audit.verify().unwrap();
+    check_step(&out.mesh, 3.0, "union");
+    assert_eq!(out.mesh.triangles.len(), 24);
+    for t in &out.mesh.triangles {
+        for &i in t {
+            assert_ne!(out.mesh.vertices[i as usize][0], 1.0, "{t:?}");
+        }
+    }
+}
+
+/// One step of a random chain: a through-box or an icosphere cavity in
+/// grid cell `cell` of the 8 x 4 slab.
+#[derive(Clone, Debug)]
+enum Cut {
+    Box { jx: i32, jy: i32 },
+    Sphere { jx: i32, jy: i32, r: f64 },
+}
+
+fn cut_mesh(cut: &Cut, cell: u32) -> TriangleMesh {
+    let (i, j) = (cell % 8, cell / 8);
+    match *cut {
+        Cut::Box { jx, jy } => through_box(i, j, jx, jy),
+        Cut::Sphere { jx, jy, r } => {
+            let c = [
+                f64::from(i) + 0.5 + f64::from(jx) / 64.0,
+                f64::from(j) + 0.5 + f64::from(jy) / 64.0,
+                0.5,
+            ];
+            icosphere(c, r, 1)
+        }
+    }
+}
+
+fn cut_strategy() -> impl Strategy<Value = Cut> {
+    prop_oneof![
+        (-12i32..=12, -12i32..=12).prop_map(|(jx, jy)| Cut::Box { jx, jy }),
+        (-8i32..=8, -8i32..=8, 0.1f64..0.35).prop_map(|(jx, jy, r)| Cut::Sphere { jx, jy, r }),
+    ]
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+
+    /// Random chains of box holes and sphere cavities in distinct cells:
+    /// closure after every step, the exact volume (the slab's minus each
+    /// hole's 1/4 and each polyhedral sphere's own exact volume), and the
+    /// exact derived triangle count.
+    #[test]
+    fn random_chains_stay_closed_exact_and_lean(
+        cuts in prop::collection::vec(cut_strategy(), 1..10),
+        order in Just((0u32..32).collect::<Vec<u32>>()).prop_shuffle(),
+    ) {
+        let mut shape = triangulate_mesh(&box_mesh([0.0; 3], [8.0, 4.0, 1.0]));
+        let mut volume = 32.0;
+        let mut count = 12;
+        for (step, (cut, &cell)) in cuts.iter().zip(&order).enumerate() {
+            let b = cut_mesh(cut, cell);
+            match cut {
+                Cut::Box { .. } => {
+                    volume -= 0.25;
+                    count += 20;
+                }
+                Cut::Sphere { .. } => {
+                    volume -= exact_volume(&b);
+                    count += b.triangles.len();
+                }
+            }
+            let out = boolean_triangles(&shape, &b, BooleanOp::Difference).unwrap();
+            check_step(&out.mesh, volume, &format!("step {step} {cut:?} in {cell}"));
+            prop_assert_eq!(out.mesh.triangles.len(), count);
+            shape = out.mesh;
+        }
+    }
+}
