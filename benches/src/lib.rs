@@ -35,8 +35,8 @@
 #![warn(missing_docs)]
 
 pub mod batch;
-pub mod clipper;
 pub mod chain;
+pub mod clipper;
 mod error;
 mod generate;
 mod peers;

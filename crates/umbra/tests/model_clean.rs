@@ -2,28 +2,50 @@
 //! parts overlap by a positive amount instead of touching or sharing
 //! faces, so the basic Boolean (which resolves coincidences by symbolic
 //! perturbation, leaving zero-thickness sheets and slivers) gives
-//! 2-manifold output without self-intersecting facet pairs, in the
-//! polygon variant and the triangle variant.
+//! 2-manifold output without self-intersecting facet pairs in the polygon
+//! variant; the triangle variant's output, smoothed at the default
+//! tolerance as the command-line tool writes it, is a valid 2-manifold
+//! (its remaining self-intersecting pairs are printed: a known limit).
 
 use std::path::{Path, PathBuf};
 use std::time::Instant;
-use umbra::{check_mesh, demo_plant, evaluate_csg, read_csg_file, CsgNode, CsgOptions, DemoDetail};
+use umbra::{
+    check_mesh, default_mesh_tolerance, demo_plant, evaluate_csg, read_csg_file, smooth_solid,
+    CsgNode, CsgOptions, DemoDetail, MeshVariant, PolygonMesh, SmoothOptions,
+};
 
 fn examples() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
 }
 
+/// The triangle variant's result smoothed at the default tolerance, as
+/// `umbra csg` and `umbra demo` write it.
+fn smoothed_triangles(mesh: &PolygonMesh) -> PolygonMesh {
+    let tol = default_mesh_tolerance(mesh);
+    let out = smooth_solid(mesh, MeshVariant::TriangleMesh, &SmoothOptions::new(tol)).unwrap();
+    assert!(!out.report.budget_hit);
+    out.shape
+}
+
 /// Evaluates `tree` in both variants and asserts a valid, 2-manifold
-/// solid, without self-intersecting facet pairs in the polygon variant;
-/// returns the volumes (polygon, triangle) and the triangle variant's
-/// self-intersecting pairs (see `triangle_variant_rounding_reproducer`).
+/// solid without self-intersecting facet pairs (the triangle variant once
+/// smoothed); returns the volumes (polygon, smoothed triangle) and the
+/// raw triangle variant's self-intersecting pairs.
 fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
     let mut volumes = [0.0; 2];
     let mut tri_pairs = 0;
     for (k, triangulate) in [false, true].into_iter().enumerate() {
         let t = Instant::now();
         let out = evaluate_csg(tree, CsgOptions { triangulate }).unwrap();
-        let r = check_mesh(&out.mesh);
+        assert!(out.report.topologically_valid, "{what}");
+        assert_eq!(out.mesh.check_topology(), Ok(()));
+        let mesh = if triangulate {
+            tri_pairs = check_mesh(&out.mesh).self_intersecting_facet_pairs.unwrap();
+            smoothed_triangles(&out.mesh)
+        } else {
+            out.mesh
+        };
+        let r = check_mesh(&mesh);
         eprintln!(
             "{what} (triangulate {triangulate}): {:.1} s, {} facets, 2-manifold {:?}, self-intersecting pairs {:?}, volume {:?}",
             t.elapsed().as_secs_f64(),
@@ -33,21 +55,22 @@ fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
             r.signed_volume,
         );
         assert!(r.is_valid(), "{what}: {:?}", r.topology_error);
-        assert!(out.report.topologically_valid, "{what}");
-        assert_eq!(out.mesh.check_topology(), Ok(()));
         assert_eq!(r.non_manifold_edges, Some(0), "{what} ({triangulate})");
         assert_eq!(r.non_manifold_vertices, Some(0), "{what} ({triangulate})");
         assert_eq!(r.two_manifold, Some(true), "{what} ({triangulate})");
         let pairs = r.self_intersecting_facet_pairs.unwrap();
         if triangulate {
-            tri_pairs = pairs;
+            // Known limit: where ear clipping leaves a reversed sliver wider
+            // than the tolerance (a vertex a few micrometres off a chord of
+            // a cut face), smoothing cannot see it; recorded, not hidden.
+            eprintln!("{what}: smoothed triangle variant keeps {pairs} pairs (raw {tri_pairs})");
         } else {
             assert_eq!(pairs, 0, "{what}: self-intersecting facet pairs");
         }
         volumes[k] = r.signed_volume.unwrap();
         assert!(volumes[k] > 0.0);
         if triangulate {
-            assert!(out.mesh.facets.iter().all(|f| f.half_edges.len() == 3));
+            assert!(mesh.facets.iter().all(|f| f.half_edges.len() == 3));
         }
     }
     (volumes, tri_pairs)
@@ -67,7 +90,8 @@ fn every_shipped_example_is_a_clean_solid() {
     for path in names {
         let tree = read_csg_file(&path).unwrap();
         let ([p, t], _) = assert_clean(&tree, &path.display().to_string());
-        assert!((p - t).abs() <= 1e-9 * p, "{}: {p} vs {t}", path.display());
+        // Smoothing moves the volume by at most area x bound (~1e-8 here).
+        assert!((p - t).abs() <= 1e-6 * p, "{}: {p} vs {t}", path.display());
     }
 }
 
@@ -79,29 +103,21 @@ fn the_demo_plant_is_a_clean_solid_at_both_details() {
         assert!(tree.boolean_count() >= 300);
         let ([p, t], _) = assert_clean(&tree, &format!("{detail:?} demo"));
         assert!(p > 30.0 && p < 60.0, "{p}");
-        assert!((p - t).abs() <= 1e-9 * p, "{detail:?}: {p} vs {t}");
+        assert!((p - t).abs() <= 1e-6 * p, "{detail:?}: {p} vs {t}");
     }
 }
 
-/// The triangle variant (every leaf and result triangulated) still gives
+/// The triangle variant (every leaf and result triangulated) can give
 /// self-intersecting facet pairs on shapes in general position, where the
-/// polygon variant gives none: this box minus a small sphere sunk into its
-/// top face off centre (no shared faces, edges or vertices, no tangency)
-/// gives 3 pairs. The box's top face is triangulated along its diagonal
-/// `y = x`; that diagonal crosses a triangle of the sphere at a point the
-/// Boolean computes in f64 as `(0.18041049469791504, 0.18041049469791506,
-/// 1)`, an ulp off the diagonal, and splitting the diagonal there makes
-/// two coplanar triangles of the top face overlap in a sliver (a fold of
-/// an ulp, counted by the exact check) and a sphere triangle cross one of
-/// them. The polygon variant keeps the face as one facet with a hole. This
-/// is a defect of the inexact triangle variant, not of the model (the
-/// output is valid and 2-manifold, but not geometrically valid), left to
-/// the data-smoothing pass; the shipped examples and the demo show the
-/// same in their triangle variant (hence only 2-manifoldness is required
-/// of it above).
+/// polygon variant gives none: in this box minus a small sphere sunk into
+/// its top face off centre (no shared faces, edges or vertices, no
+/// tangency), a crossing point the Boolean computes in f64 an ulp off a
+/// triangle's edge makes coplanar triangles of the top face overlap in a
+/// sliver (a fold of an ulp, counted by the exact check). It is a defect of
+/// inexact geometry, not of topology (the output is valid and 2-manifold),
+/// and smoothing at the default tolerance removes it.
 #[test]
-#[ignore = "the triangle variant leaves folded slivers on cut faces"]
-fn triangle_variant_rounding_reproducer() {
+fn triangle_variant_rounding_is_smoothed_away() {
     let tree = umbra::parse_csg(
         r#"{"op": "difference", "children": [
             {"box": {"size": 2, "center": true}},
@@ -114,7 +130,13 @@ fn triangle_variant_rounding_reproducer() {
         Some(0)
     );
     let triangles = evaluate_csg(&tree, CsgOptions { triangulate: true }).unwrap();
-    let r = check_mesh(&triangles.mesh);
+    let raw = check_mesh(&triangles.mesh);
+    assert!(raw.is_valid());
+    eprintln!(
+        "raw triangle variant: {:?} pairs",
+        raw.self_intersecting_facet_pairs
+    );
+    let r = check_mesh(&smoothed_triangles(&triangles.mesh));
     assert_eq!(r.two_manifold, Some(true));
     assert_eq!(r.self_intersecting_facet_pairs, Some(0));
 }
