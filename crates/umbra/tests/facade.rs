@@ -83,6 +83,7 @@ fn reports_have_the_keys_the_tool_writes() {
             "topologically_valid",
             "topology_error",
             "epsilon",
+            "smoothing",
             "timings_ms"
         ])
     );
@@ -128,6 +129,7 @@ fn reports_have_the_keys_the_tool_writes() {
             "epsilon",
             "k_max",
             "sweep",
+            "smoothing",
             "timings_ms"
         ])
     );
@@ -341,6 +343,7 @@ fn boolean_solid_runs_both_variants() {
                     "intersections",
                     "topologically_valid",
                     "topology_error",
+                    "smoothing",
                     "timings_ms"
                 ])
             );
