@@ -84,8 +84,77 @@ fn debug_check(w: &Work, stage: &str) -> Result<(), SmoothError> {
     }
 }
 
-/// The phases on a validated mesh.
+/// The largest magnitude (of the coordinates and the tolerance) that
+/// smoothing works at directly: squared distances, the squared tolerance
+/// and the plane fits' products of differences stay finite below it.
+const RANGE_TOP_EXP: i32 = 200;
+
+/// The smallest scaled tolerance used after scaling: its square is a
+/// normal f64, so `d2 <= delta2` still means `d <= delta` to rounding.
+const SCALED_TOLERANCE_FLOOR_EXP: i32 = -500;
+
+/// The phases on a validated mesh, at any valid scale. Where the
+/// coordinates or the tolerance exceed `2^200` (squared distances would
+/// overflow to infinity and every pair would look within the tolerance),
+/// the mesh and the tolerance are first scaled by a power of two `2^-k`
+/// that brings the larger of them to about `2^200`; the result is scaled
+/// back by `2^k`. Both scalings are exact except for coordinates that
+/// become subnormal, whose rounding (at most `2^(k-1074)` per coordinate)
+/// is measured and added to the reported bound and displacement; the
+/// scaled tolerance is at least `2^-500` (its square stays normal), so the
+/// tolerance used is at least `2^(k-500)`, far below the coordinates'
+/// own resolution at that scale, and the bound reports the one used.
 pub(crate) fn run(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
+    let delta = options.tolerance;
+    let top = mesh
+        .vertices
+        .iter()
+        .flatten()
+        .fold(delta, |m, x| m.max(x.abs()));
+    if top <= 2f64.powi(RANGE_TOP_EXP) {
+        return run_in_range(mesh, options);
+    }
+    // `top` is a finite normal number above 2^200: its binary exponent.
+    let e = ((top.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let k = e - RANGE_TOP_EXP;
+    let (down, up) = (2f64.powi(-k), 2f64.powi(k));
+    let mut loss = 0.0f64;
+    let vertices: Vec<_> = mesh
+        .vertices
+        .iter()
+        .map(|p| {
+            let q = p.map(|x| x * down);
+            // The rounding of coordinates that became subnormal (an
+            // upper bound on the Euclidean distance: the sum of the
+            // per-coordinate errors, which cannot overflow).
+            let err: f64 = (0..3).map(|i| (q[i] * up - p[i]).abs()).sum();
+            loss = loss.max(err);
+            q
+        })
+        .collect();
+    let scaled = PolygonMesh::new(vertices, mesh.facets.clone());
+    let floor = 2f64.powi(SCALED_TOLERANCE_FLOOR_EXP);
+    let scaled_options = SmoothOptions {
+        tolerance: (delta * down).max(floor),
+        ..*options
+    };
+    let (mut shape, mut report) = run_in_range(&scaled, &scaled_options)?;
+    for p in &mut shape.vertices {
+        *p = p.map(|x| x * up);
+    }
+    report.tolerance = delta;
+    report.distortion_bound = report.distortion_bound * up + loss;
+    report.max_displacement = report.max_displacement * up + loss;
+    report.epsilon = report.epsilon * up + loss;
+    Ok((shape, report))
+}
+
+/// The phases on a validated mesh whose coordinates and tolerance are at
+/// most `2^200` in magnitude.
+fn run_in_range(
     mesh: &PolygonMesh,
     options: &SmoothOptions,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {

@@ -108,6 +108,44 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
     }
 }
 
+/// The triangle `t` rotated so that its smallest vertex comes first
+/// (the same key for the same oriented cycle of vertices).
+fn rotated(t: [u32; 3]) -> [u32; 3] {
+    let k = (0..3).min_by_key(|&k| t[k]).unwrap_or(0);
+    [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+}
+
+/// Facet cancellation in full on triangles: removes pairs of triangles
+/// on the same three vertices in opposite orientations (each one's
+/// half-edges are the other's reversed, so removing both keeps shape
+/// closure) and returns the number of pairs removed. Same-oriented
+/// repeats are kept; a triangle cancels at most one opposite triangle.
+fn cancel_opposite_triangles(triangles: &mut Vec<[u32; 3]>) -> u64 {
+    // Oriented cycle -> indices of not yet cancelled triangles with it.
+    let mut open: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
+    let mut dead = vec![false; triangles.len()];
+    let mut pairs = 0u64;
+    for (i, &t) in triangles.iter().enumerate() {
+        let key = rotated(t);
+        let reverse = rotated([t[0], t[2], t[1]]);
+        if let Some(j) = open.get_mut(&reverse).and_then(Vec::pop) {
+            dead[i] = true;
+            dead[j] = true;
+            pairs += 1;
+        } else {
+            open.entry(key).or_default().push(i);
+        }
+    }
+    if pairs > 0 {
+        let mut i = 0;
+        triangles.retain(|_| {
+            i += 1;
+            !dead[i - 1]
+        });
+    }
+    pairs
+}
+
 /// Smooths a triangle mesh ([`crate::smooth_mesh`] on its triangles) and
 /// re-triangulates the facets smoothing changed (section 4.8), counting
 /// them in `facets_retriangulated`. The input is validated first and
@@ -142,6 +180,10 @@ pub fn smooth_triangles(
     // A triangle repeating a vertex holds a zero-length half-edge and a
     // half-edge with its reverse: dropping it keeps shape closure.
     triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+    // Re-triangulating two differently bounded coincident facets can give
+    // the same triangle in both orientations: facet cancellation in full
+    // (Appendix A) on the triangles removes every such pair.
+    report.counts.facets_cancelled += cancel_opposite_triangles(&mut triangles);
     // Vertices only such triangles used are dropped too.
     let mut used = vec![false; poly.vertices.len()];
     for &v in triangles.iter().flatten() {
