@@ -93,6 +93,26 @@ const RANGE_TOP_EXP: i32 = 200;
 /// normal f64, so `d2 <= delta2` still means `d <= delta` to rounding.
 const SCALED_TOLERANCE_FLOOR_EXP: i32 = -500;
 
+/// The power-of-two scale factors `(2^-k, 2^k)` that bring the larger of
+/// the coordinates' magnitude and `delta` to about `2^200`, or `None` when
+/// both are at most `2^200` (no scaling needed). The values must be finite.
+pub(crate) fn range_scale(vertices: &[[f64; 3]], delta: f64) -> Option<(f64, f64)> {
+    let top = vertices.iter().flatten().fold(delta, |m, x| m.max(x.abs()));
+    if !top.is_finite() || top <= 2f64.powi(RANGE_TOP_EXP) {
+        return None;
+    }
+    // `top` is a finite normal number above 2^200: its binary exponent.
+    let e = ((top.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let k = e - RANGE_TOP_EXP;
+    Some((2f64.powi(-k), 2f64.powi(k)))
+}
+
+/// The tolerance used at the scale `down` (at least `2^-500`, whose
+/// square is a normal number).
+pub(crate) fn scaled_tolerance(delta: f64, down: f64) -> f64 {
+    (delta * down).max(2f64.powi(SCALED_TOLERANCE_FLOOR_EXP))
+}
+
 /// The phases on a validated mesh, at any valid scale. Where the
 /// coordinates or the tolerance exceed `2^200` (squared distances would
 /// overflow to infinity and every pair would look within the tolerance),
@@ -109,18 +129,9 @@ pub(crate) fn run(
     options: &SmoothOptions,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
     let delta = options.tolerance;
-    let top = mesh
-        .vertices
-        .iter()
-        .flatten()
-        .fold(delta, |m, x| m.max(x.abs()));
-    if top <= 2f64.powi(RANGE_TOP_EXP) {
+    let Some((down, up)) = range_scale(&mesh.vertices, delta) else {
         return run_in_range(mesh, options);
-    }
-    // `top` is a finite normal number above 2^200: its binary exponent.
-    let e = ((top.to_bits() >> 52) & 0x7ff) as i32 - 1023;
-    let k = e - RANGE_TOP_EXP;
-    let (down, up) = (2f64.powi(-k), 2f64.powi(k));
+    };
     let mut loss = 0.0f64;
     let vertices: Vec<_> = mesh
         .vertices
@@ -136,9 +147,8 @@ pub(crate) fn run(
         })
         .collect();
     let scaled = PolygonMesh::new(vertices, mesh.facets.clone());
-    let floor = 2f64.powi(SCALED_TOLERANCE_FLOOR_EXP);
     let scaled_options = SmoothOptions {
-        tolerance: (delta * down).max(floor),
+        tolerance: scaled_tolerance(delta, down),
         ..*options
     };
     let (mut shape, mut report) = run_in_range(&scaled, &scaled_options)?;
