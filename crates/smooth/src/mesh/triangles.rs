@@ -29,6 +29,19 @@ fn in_circle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
     det > 0.0
 }
 
+/// Whether `p` lies within `delta` of the segment `a b` (2D).
+fn near_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2], delta: f64) -> bool {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let (x, y) = (a[0] + t * d[0] - p[0], a[1] + t * d[1] - p[1]);
+    x * x + y * y <= delta * delta
+}
+
 /// Improves the triangles of one re-triangulated facet by flipping
 /// internal edges (Lawson's flips towards the Delaunay triangulation in
 /// the facet's plane), which removes the thin triangles ear clipping
@@ -38,7 +51,7 @@ fn in_circle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
 /// half-edge pair, so closure holds whatever the geometry. Only strictly
 /// convex quadrilaterals are flipped; the number of flips is capped (the
 /// safety net against rounding cycles).
-fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]) {
+fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]], delta: f64) {
     if tris.len() < 2 {
         return;
     }
@@ -85,11 +98,14 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
                     continue;
                 }
                 let (pu, pv, pp, pq) = (p2(u), p2(v), p2(p), p2(q));
-                let convex = orient(pu, pv, pp) > 0.0
-                    && orient(pv, pu, pq) > 0.0
-                    && orient(pu, pq, pp) > 0.0
-                    && orient(pv, pp, pq) > 0.0;
-                if !convex || !in_circle(pu, pv, pp, pq) {
+                let after = orient(pu, pq, pp) > 0.0 && orient(pv, pp, pq) > 0.0;
+                let convex = orient(pu, pv, pp) > 0.0 && orient(pv, pu, pq) > 0.0 && after;
+                // A sliver: `p` or `q` within `delta` of the internal
+                // edge, which a later run would crack there; flipped when
+                // both new triangles are properly oriented.
+                let sliver =
+                    after && (near_segment(pp, pu, pv, delta) || near_segment(pq, pu, pv, delta));
+                if !sliver && (!convex || !in_circle(pu, pv, pp, pq)) {
                     continue;
                 }
                 for tri in [tris[t1], tris[t2]] {
@@ -174,7 +190,12 @@ pub fn smooth_triangles(
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
         let first = triangles.len();
         triangulate_facet(&poly.vertices, &pairs, &mut triangles);
-        flip_to_delaunay(&poly.vertices, h, &mut triangles[first..]);
+        flip_to_delaunay(
+            &poly.vertices,
+            h,
+            &mut triangles[first..],
+            options.tolerance,
+        );
         report.counts.facets_retriangulated += 1;
     }
     // A triangle repeating a vertex holds a zero-length half-edge and a
