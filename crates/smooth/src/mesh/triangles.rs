@@ -228,3 +228,47 @@ pub fn smooth_triangles(
     crate::sanity_check_triangles(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn opposite_triangles_cancel_in_pairs_and_same_oriented_repeats_stay() {
+        // (0 1 2) appears twice, its reverse once (as a rotation), a
+        // fourth triangle stands alone: one pair cancels.
+        let mut t = vec![[0, 1, 2], [3, 4, 5], [1, 0, 2], [2, 0, 1], [5, 6, 7]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 1);
+        assert_eq!(t, vec![[3, 4, 5], [2, 0, 1], [5, 6, 7]]);
+        // Both orientations twice: everything goes; the half-edge
+        // multiset of what is removed is balanced.
+        let mut t = vec![[0, 1, 2], [0, 2, 1], [1, 2, 0], [2, 1, 0]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 2);
+        assert!(t.is_empty());
+        let mut t = vec![[0, 1, 2], [0, 1, 3]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 0);
+        assert_eq!(t.len(), 2);
+    }
+
+    #[test]
+    fn a_sliver_beside_a_straight_boundary_is_flipped() {
+        // The quadrilateral a b c d with b on the segment a c: the
+        // triangulation (a b c) + (a c d) has an internal edge a c through
+        // b; the flip gives (b c d) + (b d a) (as `[u, q, p]`, `[v, p, q]`).
+        let pos = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+        ];
+        let boundary: Vec<HalfEdge> = [(0, 1), (1, 2), (2, 3), (3, 0)]
+            .iter()
+            .map(|&(start, end)| HalfEdge { start, end })
+            .collect();
+        let mut tris = [[0, 1, 2], [0, 2, 3]];
+        flip_to_delaunay(&pos, &boundary, &mut tris, 1e-9);
+        for t in &tris {
+            assert!(t.contains(&1) && t.contains(&3), "{tris:?}");
+        }
+    }
+}
