@@ -105,3 +105,24 @@ fn huge_coordinates_in_the_triangle_variant_stay_within_the_bound() {
     out.shape.check_topology().unwrap();
     assert!(out.report.max_displacement <= out.report.distortion_bound);
 }
+
+#[test]
+fn huge_planar_coordinates_stay_within_the_distortion_bound() {
+    use topology::PolygonSet2;
+    let b = f64::from_bits;
+    let (g, w) = (b(0xff00be10f7e00010), b(0xefefefefefefefef));
+    let mut s = PolygonSet2::new();
+    s.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+    s.add_loop(&[[g, w], [-g, w], [-g, -w * 1e-10], [0.5, g * 1e-300]]);
+    let size = s.max_abs_coordinate();
+    for exp in [-48, -20, 0] {
+        let opts = SmoothOptions::new(size * 2f64.powi(exp));
+        let out = smooth::smooth_polygon_set(&s, &opts).unwrap();
+        out.shape.check_topology().unwrap();
+        assert!(
+            out.report.max_displacement <= out.report.distortion_bound,
+            "exp {exp}: {:?}",
+            out.report
+        );
+    }
+}

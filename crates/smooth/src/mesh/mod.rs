@@ -97,7 +97,15 @@ const SCALED_TOLERANCE_FLOOR_EXP: i32 = -500;
 /// the coordinates' magnitude and `delta` to about `2^200`, or `None` when
 /// both are at most `2^200` (no scaling needed). The values must be finite.
 pub(crate) fn range_scale(vertices: &[[f64; 3]], delta: f64) -> Option<(f64, f64)> {
-    let top = vertices.iter().flatten().fold(delta, |m, x| m.max(x.abs()));
+    range_scale_of(vertices.iter().flatten().copied(), delta)
+}
+
+/// [`range_scale`] over any coordinates (2D smoothing uses it too).
+pub(crate) fn range_scale_of(
+    coordinates: impl Iterator<Item = f64>,
+    delta: f64,
+) -> Option<(f64, f64)> {
+    let top = coordinates.fold(delta, |m, x| m.max(x.abs()));
     if !top.is_finite() || top <= 2f64.powi(RANGE_TOP_EXP) {
         return None;
     }
