@@ -125,20 +125,26 @@ impl BoxIndex {
         me
     }
 
-    /// Calls `f` with the id of every box meeting `[lo, hi]` (closed).
-    fn visit(&self, lo: &Point3, hi: &Point3, mut f: impl FnMut(u32)) {
+    /// Calls `f` with the id of every box meeting `[lo, hi]` (closed), in
+    /// no particular order. No allocation: the traversal stack is an
+    /// array, as deep as the tree (median splits: `log2(n) + 1 < 64`
+    /// levels for `n < 2^32`) plus one.
+    pub fn visit(&self, lo: &Point3, hi: &Point3, mut f: impl FnMut(u32)) {
         if self.nodes.is_empty() {
             return;
         }
-        let mut stack = vec![0u32];
-        while let Some(n) = stack.pop() {
-            let node = &self.nodes[n as usize];
+        let mut stack = [0u32; 66];
+        let mut top = 1usize;
+        while top > 0 {
+            top -= 1;
+            let node = &self.nodes[stack[top] as usize];
             if !meets(&node.lo, &node.hi, lo, hi) {
                 continue;
             }
             if node.count == 0 {
-                stack.push(node.second);
-                stack.push(node.first);
+                stack[top] = node.second;
+                stack[top + 1] = node.first;
+                top += 2;
             } else {
                 let s = node.first as usize;
                 for &i in &self.order[s..s + node.count as usize] {
@@ -183,6 +189,7 @@ impl BoxIndex {
     }
 
     /// The ids of the boxes meeting `[lo, hi]` (closed), sorted.
+    #[cfg(test)]
     pub fn meeting(&self, lo: Point3, hi: Point3) -> Vec<u32> {
         let mut ids = Vec::new();
         self.visit(&lo, &hi, |i| ids.push(i));
