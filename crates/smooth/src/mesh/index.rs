@@ -10,8 +10,8 @@
 use rayon::prelude::*;
 use topology::Point3;
 
-/// Queries per parallel task.
-const CHUNK: usize = 2048;
+/// The least number of parallel tasks of a self-join.
+const TASKS: usize = 64;
 
 /// A box with an id.
 pub(crate) struct IdBox {
@@ -158,26 +158,95 @@ impl BoxIndex {
     }
 
     /// `f(i, j)` for every pair of ids `i < j` of boxes that meet, keeping
-    /// the `Some` answers. The queries run in parallel over chunks of the
-    /// tree's leaf order (for locality); the answers come in chunk order,
-    /// the same for any thread count.
+    /// the `Some` answers, in no particular order (the callers sort). A
+    /// self-join of the tree with itself: node pairs whose boxes do not
+    /// meet are skipped whole, and every pair of boxes is met once (a
+    /// query per box would meet it twice). The node pairs are first split
+    /// into at least [`TASKS`] disjoint tasks, run in parallel.
     pub fn pairs_where<T: Send>(&self, f: impl Fn(u32, u32) -> Option<T> + Sync) -> Vec<T> {
-        self.order
-            .par_chunks(CHUNK)
-            .map(|chunk| {
-                let mut out = Vec::new();
-                for &k in chunk {
-                    let b = &self.boxes[k as usize];
-                    self.visit(&b.lo, &b.hi, |j| {
-                        if b.id < j {
-                            out.extend(f(b.id, j));
-                        }
-                    });
+        if self.nodes.is_empty() {
+            return Vec::new();
+        }
+        let mut tasks = vec![(0u32, 0u32)];
+        while tasks.len() < TASKS {
+            let mut next = Vec::with_capacity(4 * tasks.len());
+            let mut split = false;
+            for &(a, b) in &tasks {
+                match self.children(a, b) {
+                    Some(kids) => {
+                        split = true;
+                        next.extend(kids.into_iter().flatten());
+                    }
+                    None => next.push((a, b)),
                 }
+            }
+            tasks = next;
+            if !split {
+                break;
+            }
+        }
+        tasks
+            .par_iter()
+            .map(|&(a, b)| {
+                let mut out = Vec::new();
+                self.join(a, b, &f, &mut out);
                 out
             })
             .flatten_iter()
             .collect()
+    }
+
+    /// The node pairs that cover the box pairs of `(a, b)` (`a <= b` in
+    /// the sense of the tree's pre-order: `a == b` or disjoint subtrees)
+    /// when the two nodes' boxes meet and one of them is internal: `None`
+    /// when both are leaves or the boxes do not meet (then
+    /// [`BoxIndex::join`] finishes the pair itself).
+    fn children(&self, a: u32, b: u32) -> Option<[Option<(u32, u32)>; 3]> {
+        let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
+        if !meets(&na.lo, &na.hi, &nb.lo, &nb.hi) || (na.count != 0 && nb.count != 0) {
+            return None;
+        }
+        if a == b {
+            return Some([
+                Some((na.first, na.first)),
+                Some((na.first, na.second)),
+                Some((na.second, na.second)),
+            ]);
+        }
+        // Split the internal node with the larger box (by the sum of its
+        // extents), or the only internal one.
+        let ext = |n: &Node| (0..3).map(|k| n.hi[k] - n.lo[k]).sum::<f64>();
+        if na.count == 0 && (nb.count != 0 || ext(na) >= ext(nb)) {
+            Some([Some((na.first, b)), Some((na.second, b)), None])
+        } else {
+            Some([Some((a, nb.first)), Some((a, nb.second)), None])
+        }
+    }
+
+    /// The self-join below the node pair `(a, b)`.
+    fn join<T>(&self, a: u32, b: u32, f: &impl Fn(u32, u32) -> Option<T>, out: &mut Vec<T>) {
+        if let Some(kids) = self.children(a, b) {
+            for (c, d) in kids.into_iter().flatten() {
+                self.join(c, d, f, out);
+            }
+            return;
+        }
+        let (na, nb) = (&self.nodes[a as usize], &self.nodes[b as usize]);
+        if na.count == 0 || nb.count == 0 || !meets(&na.lo, &na.hi, &nb.lo, &nb.hi) {
+            return; // boxes apart (both leaves otherwise)
+        }
+        let la = &self.order[na.first as usize..(na.first + na.count) as usize];
+        let lb = &self.order[nb.first as usize..(nb.first + nb.count) as usize];
+        for (x, &i) in la.iter().enumerate() {
+            let bi = &self.boxes[i as usize];
+            let rest = if a == b { &lb[x + 1..] } else { lb };
+            for &j in rest {
+                let bj = &self.boxes[j as usize];
+                if meets(&bi.lo, &bi.hi, &bj.lo, &bj.hi) {
+                    out.extend(f(bi.id.min(bj.id), bi.id.max(bj.id)));
+                }
+            }
+        }
     }
 
     /// Every pair of ids `(i, j)`, `i < j`, of boxes that meet, sorted.
