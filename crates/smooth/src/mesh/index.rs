@@ -63,66 +63,96 @@ pub(crate) struct BoxIndex {
     order: Vec<u32>,
 }
 
+/// Levels of the hierarchy built in parallel (`2^PAR_LEVELS` subtrees).
+const PAR_LEVELS: u32 = 4;
+
+/// The nodes of the subtree over `order` (the boxes `base..base + len` of
+/// the leaf order) in pre-order, with node indices local to the returned
+/// vector; the top [`PAR_LEVELS`] levels build their halves in parallel.
+/// `order` is permuted in place by median selections along the longest
+/// axis of the box centres.
+fn build(boxes: &[IdBox], order: &mut [u32], base: usize, level: u32) -> Vec<Node> {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for &i in order.iter() {
+        let b = &boxes[i as usize];
+        for k in 0..3 {
+            lo[k] = lo[k].min(b.lo[k]);
+            hi[k] = hi[k].max(b.hi[k]);
+            let c = 0.5 * b.lo[k] + 0.5 * b.hi[k];
+            clo[k] = clo[k].min(c);
+            chi[k] = chi[k].max(c);
+        }
+    }
+    let n = order.len();
+    let mut nodes = vec![Node {
+        lo,
+        hi,
+        first: base as u32,
+        second: 0,
+        count: n as u32,
+    }];
+    if n <= LEAF {
+        return nodes;
+    }
+    let ext = [chi[0] - clo[0], chi[1] - clo[1], chi[2] - clo[2]];
+    let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
+        0
+    } else if ext[1] >= ext[2] {
+        1
+    } else {
+        2
+    };
+    let mid = n / 2;
+    order.select_nth_unstable_by(mid, |&a, &b| {
+        let ca = boxes[a as usize].lo[axis] + boxes[a as usize].hi[axis];
+        let cb = boxes[b as usize].lo[axis] + boxes[b as usize].hi[axis];
+        ca.total_cmp(&cb).then(a.cmp(&b))
+    });
+    let (left, right) = order.split_at_mut(mid);
+    let (l, r) = if level < PAR_LEVELS {
+        rayon::join(
+            || build(boxes, left, base, level + 1),
+            || build(boxes, right, base + mid, level + 1),
+        )
+    } else {
+        (
+            build(boxes, left, base, level + 1),
+            build(boxes, right, base + mid, level + 1),
+        )
+    };
+    nodes.reserve(l.len() + r.len());
+    let second = 1 + l.len() as u32;
+    for part in [l, r] {
+        let shift = nodes.len() as u32;
+        nodes.extend(part.into_iter().map(|mut node| {
+            if node.count == 0 {
+                node.first += shift;
+                node.second += shift;
+            }
+            node
+        }));
+    }
+    let me = &mut nodes[0];
+    me.first = 1;
+    me.second = second;
+    me.count = 0;
+    nodes
+}
+
 impl BoxIndex {
     pub fn new(boxes: Vec<IdBox>) -> BoxIndex {
-        let mut index = BoxIndex {
-            order: (0..boxes.len() as u32).collect(),
-            boxes,
-            nodes: Vec::new(),
-        };
-        if !index.boxes.is_empty() {
-            let n = index.boxes.len();
-            index.build(0, n);
-        }
-        index
-    }
-
-    fn build(&mut self, start: usize, end: usize) -> u32 {
-        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-        for &i in &self.order[start..end] {
-            let b = &self.boxes[i as usize];
-            for k in 0..3 {
-                lo[k] = lo[k].min(b.lo[k]);
-                hi[k] = hi[k].max(b.hi[k]);
-                let c = 0.5 * b.lo[k] + 0.5 * b.hi[k];
-                clo[k] = clo[k].min(c);
-                chi[k] = chi[k].max(c);
-            }
-        }
-        let me = self.nodes.len() as u32;
-        self.nodes.push(Node {
-            lo,
-            hi,
-            first: start as u32,
-            second: 0,
-            count: (end - start) as u32,
-        });
-        if end - start <= LEAF {
-            return me;
-        }
-        let ext = [chi[0] - clo[0], chi[1] - clo[1], chi[2] - clo[2]];
-        let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
-            0
-        } else if ext[1] >= ext[2] {
-            1
+        let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
+        let nodes = if boxes.is_empty() {
+            Vec::new()
         } else {
-            2
+            build(&boxes, &mut order, 0, 0)
         };
-        let mid = (start + end) / 2;
-        let boxes = &self.boxes;
-        self.order[start..end].select_nth_unstable_by(mid - start, |&a, &b| {
-            let ca = boxes[a as usize].lo[axis] + boxes[a as usize].hi[axis];
-            let cb = boxes[b as usize].lo[axis] + boxes[b as usize].hi[axis];
-            ca.total_cmp(&cb).then(a.cmp(&b))
-        });
-        let first = self.build(start, mid);
-        let second = self.build(mid, end);
-        let node = &mut self.nodes[me as usize];
-        node.first = first;
-        node.second = second;
-        node.count = 0;
-        me
+        BoxIndex {
+            boxes,
+            nodes,
+            order,
+        }
     }
 
     /// Calls `f` with the id of every box meeting `[lo, hi]` (closed), in
