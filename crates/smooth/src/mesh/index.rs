@@ -40,9 +40,8 @@ pub(crate) fn grown_box(points: impl IntoIterator<Item = Point3>, margin: f64) -
 /// Boxes per leaf.
 const LEAF: usize = 4;
 
-/// A node: its box and either two children (`count == 0`; `first` and
-/// `first + 1`... stored as `first` and `second`) or a leaf range of
-/// `order`.
+/// A node: its box and either two children (`count == 0`, at `first`
+/// and `second`) or a leaf: `count` boxes from `first` in leaf order.
 struct Node {
     lo: Point3,
     hi: Point3,
@@ -58,24 +57,24 @@ fn meets(alo: &Point3, ahi: &Point3, blo: &Point3, bhi: &Point3) -> bool {
 
 /// Boxes, queried by closed-box intersection.
 pub(crate) struct BoxIndex {
+    /// The boxes in the tree's leaf order (a leaf's boxes are contiguous).
     boxes: Vec<IdBox>,
     nodes: Vec<Node>,
-    order: Vec<u32>,
 }
 
 /// Levels of the hierarchy built in parallel (`2^PAR_LEVELS` subtrees).
 const PAR_LEVELS: u32 = 4;
 
-/// The nodes of the subtree over `order` (the boxes `base..base + len` of
+/// The nodes of the subtree over `boxes` (the boxes `base..base + len` of
 /// the leaf order) in pre-order, with node indices local to the returned
 /// vector; the top [`PAR_LEVELS`] levels build their halves in parallel.
-/// `order` is permuted in place by median selections along the longest
-/// axis of the box centres.
-fn build(boxes: &[IdBox], order: &mut [u32], base: usize, level: u32) -> Vec<Node> {
+/// `boxes` (each with its input position, the selections' tie-break) is
+/// permuted in place by median selections along the longest axis of the
+/// box centres.
+fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-    for &i in order.iter() {
-        let b = &boxes[i as usize];
+    for (b, _) in boxes.iter() {
         for k in 0..3 {
             lo[k] = lo[k].min(b.lo[k]);
             hi[k] = hi[k].max(b.hi[k]);
@@ -84,7 +83,7 @@ fn build(boxes: &[IdBox], order: &mut [u32], base: usize, level: u32) -> Vec<Nod
             chi[k] = chi[k].max(c);
         }
     }
-    let n = order.len();
+    let n = boxes.len();
     let mut nodes = vec![Node {
         lo,
         hi,
@@ -104,21 +103,21 @@ fn build(boxes: &[IdBox], order: &mut [u32], base: usize, level: u32) -> Vec<Nod
         2
     };
     let mid = n / 2;
-    order.select_nth_unstable_by(mid, |&a, &b| {
-        let ca = boxes[a as usize].lo[axis] + boxes[a as usize].hi[axis];
-        let cb = boxes[b as usize].lo[axis] + boxes[b as usize].hi[axis];
-        ca.total_cmp(&cb).then(a.cmp(&b))
+    boxes.select_nth_unstable_by(mid, |(a, ia), (b, ib)| {
+        let ca = a.lo[axis] + a.hi[axis];
+        let cb = b.lo[axis] + b.hi[axis];
+        ca.total_cmp(&cb).then(ia.cmp(ib))
     });
-    let (left, right) = order.split_at_mut(mid);
+    let (left, right) = boxes.split_at_mut(mid);
     let (l, r) = if level < PAR_LEVELS {
         rayon::join(
-            || build(boxes, left, base, level + 1),
-            || build(boxes, right, base + mid, level + 1),
+            || build(left, base, level + 1),
+            || build(right, base + mid, level + 1),
         )
     } else {
         (
-            build(boxes, left, base, level + 1),
-            build(boxes, right, base + mid, level + 1),
+            build(left, base, level + 1),
+            build(right, base + mid, level + 1),
         )
     };
     nodes.reserve(l.len() + r.len());
@@ -142,16 +141,21 @@ fn build(boxes: &[IdBox], order: &mut [u32], base: usize, level: u32) -> Vec<Nod
 
 impl BoxIndex {
     pub fn new(boxes: Vec<IdBox>) -> BoxIndex {
-        let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
-        let nodes = if boxes.is_empty() {
+        // Each box with its input position (the tie-break of the median
+        // selections), permuted into leaf order by the build.
+        let mut items: Vec<(IdBox, u32)> = boxes
+            .into_iter()
+            .enumerate()
+            .map(|(i, b)| (b, i as u32))
+            .collect();
+        let nodes = if items.is_empty() {
             Vec::new()
         } else {
-            build(&boxes, &mut order, 0, 0)
+            build(&mut items, 0, 0)
         };
         BoxIndex {
-            boxes,
+            boxes: items.into_iter().map(|(b, _)| b).collect(),
             nodes,
-            order,
         }
     }
 
@@ -177,8 +181,7 @@ impl BoxIndex {
                 top += 2;
             } else {
                 let s = node.first as usize;
-                for &i in &self.order[s..s + node.count as usize] {
-                    let b = &self.boxes[i as usize];
+                for b in &self.boxes[s..s + node.count as usize] {
                     if meets(&b.lo, &b.hi, lo, hi) {
                         f(b.id);
                     }
@@ -265,13 +268,11 @@ impl BoxIndex {
         if na.count == 0 || nb.count == 0 || !meets(&na.lo, &na.hi, &nb.lo, &nb.hi) {
             return; // boxes apart (both leaves otherwise)
         }
-        let la = &self.order[na.first as usize..(na.first + na.count) as usize];
-        let lb = &self.order[nb.first as usize..(nb.first + nb.count) as usize];
-        for (x, &i) in la.iter().enumerate() {
-            let bi = &self.boxes[i as usize];
+        let la = &self.boxes[na.first as usize..(na.first + na.count) as usize];
+        let lb = &self.boxes[nb.first as usize..(nb.first + nb.count) as usize];
+        for (x, bi) in la.iter().enumerate() {
             let rest = if a == b { &lb[x + 1..] } else { lb };
-            for &j in rest {
-                let bj = &self.boxes[j as usize];
+            for bj in rest {
                 if meets(&bi.lo, &bi.hi, &bj.lo, &bj.hi) {
                     out.extend(f(bi.id.min(bj.id), bi.id.max(bj.id)));
                 }
