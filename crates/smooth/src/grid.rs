@@ -9,6 +9,9 @@
 
 use rustc_hash::FxHashMap;
 
+/// The end of a cell's list.
+const NONE: u32 = u32::MAX;
+
 /// The outcome of [`merge_vertices`].
 #[derive(Clone, Debug, PartialEq, Eq)]
 pub struct VertexMerge {
@@ -98,7 +101,11 @@ pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> Ve
     let tol_sq = tolerance * tolerance;
     // The tolerance in cells (at most 0.5 by the choice of `size`).
     let reach = tolerance / size;
-    let mut cells: FxHashMap<[i64; N], Vec<u32>> = FxHashMap::default();
+    // Each cell's accepted points as a linked list: the cell maps to its
+    // latest point, `next` to the one before (no allocation per cell).
+    let mut cells: FxHashMap<[i64; N], u32> = FxHashMap::default();
+    cells.reserve(points.len());
+    let mut next: Vec<u32> = vec![NONE; points.len()];
     let mut representative = Vec::with_capacity(points.len());
     let mut merged = 0;
     for (i, p) in points.iter().enumerate() {
@@ -118,12 +125,12 @@ pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> Ve
             if skip {
                 continue;
             }
-            if let Some(list) = cells.get(&key) {
-                for &j in list {
-                    if best.is_none_or(|b| j < b) && within(p, &points[j as usize], tol_sq) {
-                        best = Some(j);
-                    }
+            let mut j = cells.get(&key).copied().unwrap_or(NONE);
+            while j != NONE {
+                if best.is_none_or(|b| j < b) && within(p, &points[j as usize], tol_sq) {
+                    best = Some(j);
                 }
+                j = next[j as usize];
             }
         }
         match best {
@@ -134,7 +141,9 @@ pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> Ve
             None => {
                 let i = i as u32;
                 representative.push(i);
-                cells.entry(c).or_default().push(i);
+                if let Some(prev) = cells.insert(c, i) {
+                    next[i as usize] = prev;
+                }
             }
         }
     }
