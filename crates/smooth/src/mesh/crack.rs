@@ -231,6 +231,10 @@ pub(crate) fn crack_between_edges(
     cracked
 }
 
+/// An edge's crack candidates: (parameter along the edge, squared
+/// distance, vertex).
+type Candidates = Vec<(f64, f64, u32)>;
+
 /// Edge cracking by vertex, in rounds to a fixpoint: an edge whose
 /// interior passes within `delta` of a vertex (not its end) is split at
 /// it, provided both new edges are shorter than the edge (Appendix A).
@@ -277,14 +281,14 @@ pub(crate) fn crack_by_vertex(
         // both parts shorter than the edge (queries and tests in
         // parallel, answers in edge order; edges without candidates are
         // dropped).
-        let found: Vec<(usize, Vec<(f64, f64, u32)>)> = todo
+        let found: Vec<(usize, Candidates)> = todo
             .par_iter()
             .enumerate()
             .filter_map(|(e, &(a, b))| {
                 let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
                 let l2 = dist2(pa, pb);
                 let (lo, hi) = grown_box([pa, pb], delta);
-                let mut cands: Vec<(f64, f64, u32)> = Vec::new();
+                let mut cands: Candidates = Vec::new();
                 index.visit(&lo, &hi, |v| {
                     if v == a || v == b {
                         return;
