@@ -65,13 +65,11 @@ pub(crate) struct BoxIndex {
 /// Levels of the hierarchy built in parallel (`2^PAR_LEVELS` subtrees).
 const PAR_LEVELS: u32 = 4;
 
-/// The nodes of the subtree over `boxes` (the boxes `base..base + len` of
-/// the leaf order) in pre-order, with node indices local to the returned
-/// vector; the top [`PAR_LEVELS`] levels build their halves in parallel.
-/// `boxes` (each with its input position, the selections' tie-break) is
-/// permuted in place by median selections along the longest axis of the
-/// box centres.
-fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
+/// The box around `boxes` and, for more than [`LEAF`] boxes, the split
+/// point `mid = len / 2` after a median selection along the longest axis
+/// of the box centres (tie-broken by input position), which permutes
+/// `boxes` in place.
+fn bound_and_split(boxes: &mut [(IdBox, u32)]) -> (Point3, Point3, Option<usize>) {
     let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for (b, _) in boxes.iter() {
@@ -84,15 +82,8 @@ fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
         }
     }
     let n = boxes.len();
-    let mut nodes = vec![Node {
-        lo,
-        hi,
-        first: base as u32,
-        second: 0,
-        count: n as u32,
-    }];
     if n <= LEAF {
-        return nodes;
+        return (lo, hi, None);
     }
     let ext = [chi[0] - clo[0], chi[1] - clo[1], chi[2] - clo[2]];
     let axis = if ext[0] >= ext[1] && ext[0] >= ext[2] {
@@ -108,18 +99,59 @@ fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
         let cb = b.lo[axis] + b.hi[axis];
         ca.total_cmp(&cb).then(ia.cmp(ib))
     });
-    let (left, right) = boxes.split_at_mut(mid);
-    let (l, r) = if level < PAR_LEVELS {
-        rayon::join(
-            || build(left, base, level + 1),
-            || build(right, base + mid, level + 1),
-        )
-    } else {
-        (
-            build(left, base, level + 1),
-            build(right, base + mid, level + 1),
-        )
+    (lo, hi, Some(mid))
+}
+
+/// Appends the subtree over `boxes` (the boxes `base..base + len` of the
+/// leaf order) to `nodes` in pre-order; returns its root's index.
+fn build_into(boxes: &mut [(IdBox, u32)], base: usize, nodes: &mut Vec<Node>) -> u32 {
+    let (lo, hi, split) = bound_and_split(boxes);
+    let me = nodes.len() as u32;
+    nodes.push(Node {
+        lo,
+        hi,
+        first: base as u32,
+        second: 0,
+        count: boxes.len() as u32,
+    });
+    if let Some(mid) = split {
+        let (left, right) = boxes.split_at_mut(mid);
+        let first = build_into(left, base, nodes);
+        let second = build_into(right, base + mid, nodes);
+        let node = &mut nodes[me as usize];
+        node.first = first;
+        node.second = second;
+        node.count = 0;
+    }
+    me
+}
+
+/// The nodes of the subtree over `boxes` (the boxes `base..base + len` of
+/// the leaf order) in pre-order, with node indices local to the returned
+/// vector: the top [`PAR_LEVELS`] levels build their halves in parallel
+/// and concatenate them, the levels below append to one vector.
+fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
+    if level >= PAR_LEVELS {
+        let mut nodes = Vec::with_capacity(boxes.len() / 2 + 1);
+        build_into(boxes, base, &mut nodes);
+        return nodes;
+    }
+    let (lo, hi, split) = bound_and_split(boxes);
+    let mut nodes = vec![Node {
+        lo,
+        hi,
+        first: base as u32,
+        second: 0,
+        count: boxes.len() as u32,
+    }];
+    let Some(mid) = split else {
+        return nodes;
     };
+    let (left, right) = boxes.split_at_mut(mid);
+    let (l, r) = rayon::join(
+        || build(left, base, level + 1),
+        || build(right, base + mid, level + 1),
+    );
     nodes.reserve(l.len() + r.len());
     let second = 1 + l.len() as u32;
     for part in [l, r] {
