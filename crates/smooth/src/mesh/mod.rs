@@ -192,7 +192,7 @@ fn run_in_range(
 
     // Phase 2: edge cracking between edges, then by vertex to a
     // fixpoint, repeated until neither cracks anything.
-    let mut roots = crack::Roots::new();
+    let mut roots = crack::Roots::default();
     loop {
         let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
         passes += 1;
