@@ -2,9 +2,15 @@
 //! taken in index order; a vertex within `delta` of an already accepted
 //! vertex is merged into the earliest such vertex (and takes its
 //! position), otherwise it is accepted. Never all pairs: each vertex looks
-//! only at the accepted vertices of the 3^N grid cells around it.
+//! only at the accepted vertices of the grid cells around it that a point
+//! within `delta` can lie in (at most 3^N, usually 2^N). The cells are keyed
+//! in a hash map with the Fx hash (integer keys, no adversary: the keys are
+//! cell coordinates).
 
-use std::collections::HashMap;
+use rustc_hash::FxHashMap;
+
+/// The end of a cell's list.
+const NONE: u32 = u32::MAX;
 
 /// The outcome of [`merge_vertices`].
 #[derive(Clone, Debug, PartialEq, Eq)]
@@ -46,6 +52,35 @@ fn within<const N: usize>(a: &[f64; N], b: &[f64; N], tol_sq: f64) -> bool {
     d <= tol_sq
 }
 
+/// The cell offsets (per axis, within `-1..=1`) where a point within
+/// `reach` cells of `p` can lie: the neighbour below only when `p` is near
+/// its cell's lower face, above only near its upper face. The margin
+/// covers the rounding of `x / size` for both points (`|x / size| <
+/// 2^49`, so an error of at most `(|x / size| + 2) 2^-52` each) and of
+/// the fraction, so no candidate that the full `3^N` scan would see is
+/// left out.
+fn neighbour_range<const N: usize>(
+    p: &[f64; N],
+    c: &[i64; N],
+    size: f64,
+    reach: f64,
+) -> ([i64; N], [i64; N]) {
+    let mut lo = [0i64; N];
+    let mut hi = [0i64; N];
+    for k in 0..N {
+        let q = p[k] / size;
+        let f = q - c[k] as f64;
+        let margin = (q.abs() + 2.0) * (1.0 / 1_125_899_906_842_624.0) + 1e-6; // 2^-50
+        if f < reach + margin {
+            lo[k] = -1;
+        }
+        if f > 1.0 - reach - margin {
+            hi[k] = 1;
+        }
+    }
+    (lo, hi)
+}
+
 /// Merges the points within `tolerance` of an earlier accepted point
 /// (Appendix A, "vertex adjustment"). With `tolerance == 0` only exactly
 /// coincident points merge (`-0.0 == 0.0`). Points must be finite (the
@@ -64,25 +99,38 @@ pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> Ve
         .fold(0.0f64, |m, x| m.max(x.abs()));
     let size = cell_size(tolerance, max_abs);
     let tol_sq = tolerance * tolerance;
-    let mut cells: HashMap<[i64; N], Vec<u32>> = HashMap::new();
+    // The tolerance in cells (at most 0.5 by the choice of `size`).
+    let reach = tolerance / size;
+    // Each cell's accepted points as a linked list: the cell maps to its
+    // latest point, `next` to the one before (no allocation per cell).
+    let mut cells: FxHashMap<[i64; N], u32> = FxHashMap::default();
+    cells.reserve(points.len());
+    let mut next: Vec<u32> = vec![NONE; points.len()];
     let mut representative = Vec::with_capacity(points.len());
     let mut merged = 0;
     for (i, p) in points.iter().enumerate() {
         let c = cell_of(p, size);
+        let (lo, hi) = neighbour_range(p, &c, size, reach);
         let mut best: Option<u32> = None;
         for offset in 0..3usize.pow(N as u32) {
             let mut key = c;
             let mut o = offset;
-            for k in key.iter_mut() {
-                *k = k.saturating_add((o % 3) as i64 - 1);
+            let mut skip = false;
+            for k in 0..N {
+                let d = (o % 3) as i64 - 1;
                 o /= 3;
+                skip |= d < lo[k] || d > hi[k];
+                key[k] = key[k].saturating_add(d);
             }
-            if let Some(list) = cells.get(&key) {
-                for &j in list {
-                    if best.is_none_or(|b| j < b) && within(p, &points[j as usize], tol_sq) {
-                        best = Some(j);
-                    }
+            if skip {
+                continue;
+            }
+            let mut j = cells.get(&key).copied().unwrap_or(NONE);
+            while j != NONE {
+                if best.is_none_or(|b| j < b) && within(p, &points[j as usize], tol_sq) {
+                    best = Some(j);
                 }
+                j = next[j as usize];
             }
         }
         match best {
@@ -93,7 +141,9 @@ pub fn merge_vertices<const N: usize>(points: &[[f64; N]], tolerance: f64) -> Ve
             None => {
                 let i = i as u32;
                 representative.push(i);
-                cells.entry(c).or_default().push(i);
+                if let Some(prev) = cells.insert(c, i) {
+                    next[i as usize] = prev;
+                }
             }
         }
     }

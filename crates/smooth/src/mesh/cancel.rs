@@ -323,7 +323,7 @@ fn cancel_pair(
 /// One pass of facet cancellation over the candidate pairs: facets facing
 /// opposite ways (best-fit normals with a negative dot product) whose
 /// boxes, grown by `delta`, meet. The candidates are found once per pass
-/// by an R*-tree; a swap only moves half-edges between the two facets, and
+/// by the bounding-volume hierarchy (`index.rs`); a swap only moves half-edges between the two facets, and
 /// a facet only loses region, so its box stays within the one indexed.
 /// Returns the number of pairs that changed.
 pub(crate) fn facet_cancellation_pass(

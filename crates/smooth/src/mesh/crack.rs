@@ -44,7 +44,7 @@ pub(crate) fn merge_phase(w: &mut Work, delta: f64, counts: &mut SmoothCounts) {
 
 /// The segment each current edge descends from (its end points when
 /// cracking began); an edge missing here is its own root.
-pub(crate) type Roots = HashMap<(u32, u32), (Point3, Point3)>;
+pub(crate) type Roots = rustc_hash::FxHashMap<(u32, u32), (Point3, Point3)>;
 
 fn root_of(w: &Work, roots: &Roots, (a, b): (u32, u32)) -> (Point3, Point3) {
     roots
@@ -231,6 +231,10 @@ pub(crate) fn crack_between_edges(
     cracked
 }
 
+/// An edge's crack candidates: (parameter along the edge, squared
+/// distance, vertex).
+type Candidates = Vec<(f64, f64, u32)>;
+
 /// Edge cracking by vertex, in rounds to a fixpoint: an edge whose
 /// interior passes within `delta` of a vertex (not its end) is split at
 /// it, provided both new edges are shorter than the edge (Appendix A).
@@ -272,36 +276,40 @@ pub(crate) fn crack_by_vertex(
         }
         let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
         let mut inserted = 0u64;
-        // The vertices in each edge's grown box (queries in parallel,
-        // answers in edge order).
-        let near: Vec<Vec<u32>> = todo
+        // The candidate vertices of each edge: those in its grown box
+        // whose projection falls inside and within delta, and that leave
+        // both parts shorter than the edge (queries and tests in
+        // parallel, answers in edge order; edges without candidates are
+        // dropped).
+        let found: Vec<(usize, Candidates)> = todo
             .par_iter()
-            .map(|&(a, b)| {
-                let (lo, hi) = grown_box([w.pos[a as usize], w.pos[b as usize]], delta);
-                index.meeting(lo, hi)
+            .enumerate()
+            .filter_map(|(e, &(a, b))| {
+                let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
+                let l2 = dist2(pa, pb);
+                let (lo, hi) = grown_box([pa, pb], delta);
+                let mut cands: Candidates = Vec::new();
+                index.visit(&lo, &hi, |v| {
+                    if v == a || v == b {
+                        return;
+                    }
+                    let p = w.pos[v as usize];
+                    let (t, d2) = point_segment(p, pa, pb);
+                    if !(t > 0.0 && t < 1.0) || d2 > d2max {
+                        return;
+                    }
+                    if dist2(pa, p) >= l2 || dist2(p, pb) >= l2 {
+                        return;
+                    }
+                    cands.push((t, d2, v));
+                });
+                (!cands.is_empty()).then_some((e, cands))
             })
             .collect();
-        for (&(a, b), near) in todo.iter().zip(&near) {
+        for (e, mut cands) in found {
+            let (a, b) = todo[e];
             let (pa, pb) = (w.pos[a as usize], w.pos[b as usize]);
             let l2 = dist2(pa, pb);
-            let mut cands: Vec<(f64, f64, u32)> = Vec::new();
-            for &v in near {
-                if v == a || v == b {
-                    continue;
-                }
-                let p = w.pos[v as usize];
-                let (t, d2) = point_segment(p, pa, pb);
-                if !(t > 0.0 && t < 1.0) || d2 > d2max {
-                    continue;
-                }
-                if dist2(pa, p) >= l2 || dist2(p, pb) >= l2 {
-                    continue;
-                }
-                cands.push((t, d2, v));
-            }
-            if cands.is_empty() {
-                continue;
-            }
             cands.sort_by(|x, y| x.0.total_cmp(&y.0).then(x.2.cmp(&y.2)));
             let mut chain: Vec<Point3> = vec![pa];
             chain.extend(cands.iter().map(|c| w.pos[c.2 as usize]));

@@ -84,8 +84,95 @@ fn debug_check(w: &Work, stage: &str) -> Result<(), SmoothError> {
     }
 }
 
-/// The phases on a validated mesh.
+/// The largest magnitude (of the coordinates and the tolerance) that
+/// smoothing works at directly: squared distances, the squared tolerance
+/// and the plane fits' products of differences stay finite below it.
+const RANGE_TOP_EXP: i32 = 200;
+
+/// The smallest scaled tolerance used after scaling: its square is a
+/// normal f64, so `d2 <= delta2` still means `d <= delta` to rounding.
+const SCALED_TOLERANCE_FLOOR_EXP: i32 = -500;
+
+/// The power-of-two scale factors `(2^-k, 2^k)` that bring the larger of
+/// the coordinates' magnitude and `delta` to about `2^200`, or `None` when
+/// both are at most `2^200` (no scaling needed). The values must be finite.
+pub(crate) fn range_scale(vertices: &[[f64; 3]], delta: f64) -> Option<(f64, f64)> {
+    range_scale_of(vertices.iter().flatten().copied(), delta)
+}
+
+/// [`range_scale`] over any coordinates (2D smoothing uses it too).
+pub(crate) fn range_scale_of(
+    coordinates: impl Iterator<Item = f64>,
+    delta: f64,
+) -> Option<(f64, f64)> {
+    let top = coordinates.fold(delta, |m, x| m.max(x.abs()));
+    if !top.is_finite() || top <= 2f64.powi(RANGE_TOP_EXP) {
+        return None;
+    }
+    // `top` is a finite normal number above 2^200: its binary exponent.
+    let e = ((top.to_bits() >> 52) & 0x7ff) as i32 - 1023;
+    let k = e - RANGE_TOP_EXP;
+    Some((2f64.powi(-k), 2f64.powi(k)))
+}
+
+/// The tolerance used at the scale `down` (at least `2^-500`, whose
+/// square is a normal number).
+pub(crate) fn scaled_tolerance(delta: f64, down: f64) -> f64 {
+    (delta * down).max(2f64.powi(SCALED_TOLERANCE_FLOOR_EXP))
+}
+
+/// The phases on a validated mesh, at any valid scale. Where the
+/// coordinates or the tolerance exceed `2^200` (squared distances would
+/// overflow to infinity and every pair would look within the tolerance),
+/// the mesh and the tolerance are first scaled by a power of two `2^-k`
+/// that brings the larger of them to about `2^200`; the result is scaled
+/// back by `2^k`. Both scalings are exact except for coordinates that
+/// become subnormal, whose rounding (at most `2^(k-1074)` per coordinate)
+/// is measured and added to the reported bound and displacement; the
+/// scaled tolerance is at least `2^-500` (its square stays normal), so the
+/// tolerance used is at least `2^(k-500)`, far below the coordinates'
+/// own resolution at that scale, and the bound reports the one used.
 pub(crate) fn run(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
+    let delta = options.tolerance;
+    let Some((down, up)) = range_scale(&mesh.vertices, delta) else {
+        return run_in_range(mesh, options);
+    };
+    let mut loss = 0.0f64;
+    let vertices: Vec<_> = mesh
+        .vertices
+        .iter()
+        .map(|p| {
+            let q = p.map(|x| x * down);
+            // The rounding of coordinates that became subnormal (an
+            // upper bound on the Euclidean distance: the sum of the
+            // per-coordinate errors, which cannot overflow).
+            let err: f64 = (0..3).map(|i| (q[i] * up - p[i]).abs()).sum();
+            loss = loss.max(err);
+            q
+        })
+        .collect();
+    let scaled = PolygonMesh::new(vertices, mesh.facets.clone());
+    let scaled_options = SmoothOptions {
+        tolerance: scaled_tolerance(delta, down),
+        ..*options
+    };
+    let (mut shape, mut report) = run_in_range(&scaled, &scaled_options)?;
+    for p in &mut shape.vertices {
+        *p = p.map(|x| x * up);
+    }
+    report.tolerance = delta;
+    report.distortion_bound = report.distortion_bound * up + loss;
+    report.max_displacement = report.max_displacement * up + loss;
+    report.epsilon = report.epsilon * up + loss;
+    Ok((shape, report))
+}
+
+/// The phases on a validated mesh whose coordinates and tolerance are at
+/// most `2^200` in magnitude.
+fn run_in_range(
     mesh: &PolygonMesh,
     options: &SmoothOptions,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
@@ -105,7 +192,7 @@ pub(crate) fn run(
 
     // Phase 2: edge cracking between edges, then by vertex to a
     // fixpoint, repeated until neither cracks anything.
-    let mut roots = crack::Roots::new();
+    let mut roots = crack::Roots::default();
     loop {
         let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
         passes += 1;

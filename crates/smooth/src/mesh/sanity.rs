@@ -15,7 +15,15 @@ fn fail(what: String) -> Result<(), SmoothError> {
 }
 
 fn vertices_apart(vertices: &[[f64; 3]], tolerance: f64) -> Result<(), SmoothError> {
-    let m = merge_vertices(vertices, tolerance);
+    // At magnitudes beyond 2^200 squared distances overflow: check at the
+    // power-of-two scale smoothing itself works at there.
+    let m = match crate::mesh::range_scale(vertices, tolerance) {
+        None => merge_vertices(vertices, tolerance),
+        Some((down, _)) => {
+            let scaled: Vec<[f64; 3]> = vertices.iter().map(|p| p.map(|x| x * down)).collect();
+            merge_vertices(&scaled, crate::mesh::scaled_tolerance(tolerance, down))
+        }
+    };
     if let Some((i, &r)) = m
         .representative
         .iter()

@@ -74,16 +74,23 @@ impl Work {
 
     /// The distinct edges of non-zero length, sorted.
     pub fn edges(&self) -> Vec<(u32, u32)> {
-        let mut e: Vec<(u32, u32)> = self
+        // Sorted as one u64 per edge (`a << 32 | b`: the same order as the
+        // pairs, cheaper to compare and move).
+        let mut e: Vec<u64> = self
             .facets
             .iter()
             .flatten()
             .filter(|h| h.start != h.end)
-            .map(|&h| edge_key(h))
+            .map(|&h| {
+                let (a, b) = edge_key(h);
+                (u64::from(a) << 32) | u64::from(b)
+            })
             .collect();
         e.par_sort_unstable();
         e.dedup();
-        e
+        e.into_iter()
+            .map(|k| ((k >> 32) as u32, k as u32))
+            .collect()
     }
 
     /// Adds a vertex created by cracking and returns its id.

@@ -29,6 +29,19 @@ fn in_circle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
     det > 0.0
 }
 
+/// Whether `p` lies within `delta` of the segment `a b` (2D).
+fn near_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2], delta: f64) -> bool {
+    let d = [b[0] - a[0], b[1] - a[1]];
+    let l2 = d[0] * d[0] + d[1] * d[1];
+    let t = if l2 > 0.0 {
+        (((p[0] - a[0]) * d[0] + (p[1] - a[1]) * d[1]) / l2).clamp(0.0, 1.0)
+    } else {
+        0.0
+    };
+    let (x, y) = (a[0] + t * d[0] - p[0], a[1] + t * d[1] - p[1]);
+    x * x + y * y <= delta * delta
+}
+
 /// Improves the triangles of one re-triangulated facet by flipping
 /// internal edges (Lawson's flips towards the Delaunay triangulation in
 /// the facet's plane), which removes the thin triangles ear clipping
@@ -38,7 +51,7 @@ fn in_circle(a: [f64; 2], b: [f64; 2], c: [f64; 2], d: [f64; 2]) -> bool {
 /// half-edge pair, so closure holds whatever the geometry. Only strictly
 /// convex quadrilaterals are flipped; the number of flips is capped (the
 /// safety net against rounding cycles).
-fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]) {
+fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]], delta: f64) {
     if tris.len() < 2 {
         return;
     }
@@ -85,11 +98,14 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
                     continue;
                 }
                 let (pu, pv, pp, pq) = (p2(u), p2(v), p2(p), p2(q));
-                let convex = orient(pu, pv, pp) > 0.0
-                    && orient(pv, pu, pq) > 0.0
-                    && orient(pu, pq, pp) > 0.0
-                    && orient(pv, pp, pq) > 0.0;
-                if !convex || !in_circle(pu, pv, pp, pq) {
+                let after = orient(pu, pq, pp) > 0.0 && orient(pv, pp, pq) > 0.0;
+                let convex = orient(pu, pv, pp) > 0.0 && orient(pv, pu, pq) > 0.0 && after;
+                // A sliver: `p` or `q` within `delta` of the internal
+                // edge, which a later run would crack there; flipped when
+                // both new triangles are properly oriented.
+                let sliver =
+                    after && (near_segment(pp, pu, pv, delta) || near_segment(pq, pu, pv, delta));
+                if !sliver && (!convex || !in_circle(pu, pv, pp, pq)) {
                     continue;
                 }
                 for tri in [tris[t1], tris[t2]] {
@@ -106,6 +122,44 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
             }
         }
     }
+}
+
+/// The triangle `t` rotated so that its smallest vertex comes first
+/// (the same key for the same oriented cycle of vertices).
+fn rotated(t: [u32; 3]) -> [u32; 3] {
+    let k = (0..3).min_by_key(|&k| t[k]).unwrap_or(0);
+    [t[k], t[(k + 1) % 3], t[(k + 2) % 3]]
+}
+
+/// Facet cancellation in full on triangles: removes pairs of triangles
+/// on the same three vertices in opposite orientations (each one's
+/// half-edges are the other's reversed, so removing both keeps shape
+/// closure) and returns the number of pairs removed. Same-oriented
+/// repeats are kept; a triangle cancels at most one opposite triangle.
+fn cancel_opposite_triangles(triangles: &mut Vec<[u32; 3]>) -> u64 {
+    // Oriented cycle -> indices of not yet cancelled triangles with it.
+    let mut open: HashMap<[u32; 3], Vec<usize>> = HashMap::new();
+    let mut dead = vec![false; triangles.len()];
+    let mut pairs = 0u64;
+    for (i, &t) in triangles.iter().enumerate() {
+        let key = rotated(t);
+        let reverse = rotated([t[0], t[2], t[1]]);
+        if let Some(j) = open.get_mut(&reverse).and_then(Vec::pop) {
+            dead[i] = true;
+            dead[j] = true;
+            pairs += 1;
+        } else {
+            open.entry(key).or_default().push(i);
+        }
+    }
+    if pairs > 0 {
+        let mut i = 0;
+        triangles.retain(|_| {
+            i += 1;
+            !dead[i - 1]
+        });
+    }
+    pairs
 }
 
 /// Smooths a triangle mesh ([`crate::smooth_mesh`] on its triangles) and
@@ -136,12 +190,21 @@ pub fn smooth_triangles(
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
         let first = triangles.len();
         triangulate_facet(&poly.vertices, &pairs, &mut triangles);
-        flip_to_delaunay(&poly.vertices, h, &mut triangles[first..]);
+        flip_to_delaunay(
+            &poly.vertices,
+            h,
+            &mut triangles[first..],
+            options.tolerance,
+        );
         report.counts.facets_retriangulated += 1;
     }
     // A triangle repeating a vertex holds a zero-length half-edge and a
     // half-edge with its reverse: dropping it keeps shape closure.
     triangles.retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+    // Re-triangulating two differently bounded coincident facets can give
+    // the same triangle in both orientations: facet cancellation in full
+    // (Appendix A) on the triangles removes every such pair.
+    report.counts.facets_cancelled += cancel_opposite_triangles(&mut triangles);
     // Vertices only such triangles used are dropped too.
     let mut used = vec![false; poly.vertices.len()];
     for &v in triangles.iter().flatten() {
@@ -164,4 +227,48 @@ pub fn smooth_triangles(
     #[cfg(debug_assertions)]
     crate::sanity_check_triangles(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn opposite_triangles_cancel_in_pairs_and_same_oriented_repeats_stay() {
+        // (0 1 2) appears twice, its reverse once (as a rotation), a
+        // fourth triangle stands alone: one pair cancels.
+        let mut t = vec![[0, 1, 2], [3, 4, 5], [1, 0, 2], [2, 0, 1], [5, 6, 7]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 1);
+        assert_eq!(t, vec![[3, 4, 5], [2, 0, 1], [5, 6, 7]]);
+        // Both orientations twice: everything goes; the half-edge
+        // multiset of what is removed is balanced.
+        let mut t = vec![[0, 1, 2], [0, 2, 1], [1, 2, 0], [2, 1, 0]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 2);
+        assert!(t.is_empty());
+        let mut t = vec![[0, 1, 2], [0, 1, 3]];
+        assert_eq!(cancel_opposite_triangles(&mut t), 0);
+        assert_eq!(t.len(), 2);
+    }
+
+    #[test]
+    fn a_sliver_beside_a_straight_boundary_is_flipped() {
+        // The quadrilateral a b c d with b on the segment a c: the
+        // triangulation (a b c) + (a c d) has an internal edge a c through
+        // b; the flip gives (b c d) + (b d a) (as `[u, q, p]`, `[v, p, q]`).
+        let pos = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [2.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+        ];
+        let boundary: Vec<HalfEdge> = [(0, 1), (1, 2), (2, 3), (3, 0)]
+            .iter()
+            .map(|&(start, end)| HalfEdge { start, end })
+            .collect();
+        let mut tris = [[0, 1, 2], [0, 2, 3]];
+        flip_to_delaunay(&pos, &boundary, &mut tris, 1e-9);
+        for t in &tris {
+            assert!(t.contains(&1) && t.contains(&3), "{tris:?}");
+        }
+    }
 }

@@ -76,6 +76,47 @@ pub fn smooth_polygon_set(
     options.validate()?;
     set.validate_coordinates()?;
     set.check_topology()?;
+    let coordinates = set.vertices().iter().flatten().copied();
+    let Some((down, up)) = crate::mesh::range_scale_of(coordinates, options.tolerance) else {
+        return smooth_in_range(set, options);
+    };
+    // Beyond 2^200 squared distances overflow: smooth at an exact
+    // power-of-two scale, as 3D smoothing does (see the algorithm note),
+    // adding the rounding of coordinates that became subnormal.
+    let mut loss = 0.0f64;
+    let (vertices, edges) = set.clone().into_parts();
+    let scaled: Vec<[f64; 2]> = vertices
+        .iter()
+        .map(|p| {
+            let q = p.map(|x| x * down);
+            loss = loss.max((q[0] * up - p[0]).abs() + (q[1] * up - p[1]).abs());
+            q
+        })
+        .collect();
+    let scaled_options = SmoothOptions {
+        tolerance: crate::mesh::scaled_tolerance(options.tolerance, down),
+        ..*options
+    };
+    let out = smooth_in_range(&PolygonSet2::from_parts(scaled, edges), &scaled_options)?;
+    let (vertices, edges) = out.shape.into_parts();
+    let vertices = vertices.iter().map(|p| p.map(|x| x * up)).collect();
+    let mut report = out.report;
+    report.tolerance = options.tolerance;
+    report.distortion_bound = report.distortion_bound * up + loss;
+    report.max_displacement = report.max_displacement * up + loss;
+    report.epsilon = report.epsilon * up + loss;
+    Ok(Smoothed {
+        shape: PolygonSet2::from_parts(vertices, edges),
+        report,
+    })
+}
+
+/// [`smooth_polygon_set`] on a validated set whose coordinates and
+/// tolerance are at most `2^200` in magnitude.
+fn smooth_in_range(
+    set: &PolygonSet2,
+    options: &SmoothOptions,
+) -> Result<Smoothed<PolygonSet2>, SmoothError> {
     let tol = options.tolerance;
     let mut budget = Budget::new(options.budget_for(set.vertex_count(), set.edge_count()));
     let mut counts = SmoothCounts::default();
