@@ -70,8 +70,9 @@ pub struct SmoothReport {
     pub distortion_bound: f64,
     /// The largest vertex displacement actually made.
     pub max_displacement: f64,
-    /// The epsilon of the whole result: the input's epsilon (e.g. the
-    /// Boolean's) plus the distortion bound.
+    /// The epsilon smoothing adds: the distortion bound (and in 2D the
+    /// sweep's epsilon, when the sweep ran). A front end adds the input's
+    /// own epsilon, e.g. the Boolean's, as `Boolean2Report::smoothed` does.
     pub epsilon: f64,
 }
 
