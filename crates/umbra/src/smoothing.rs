@@ -21,21 +21,12 @@ use topology::{PolygonMesh, PolygonSet2};
 /// cube, say) need an explicit, larger tolerance.
 pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-9;
 
-fn extent<const N: usize>(points: impl Iterator<Item = [f64; N]>) -> f64 {
-    let mut lo = [f64::INFINITY; N];
-    let mut hi = [f64::NEG_INFINITY; N];
-    let mut any = false;
-    for p in points {
-        any = true;
-        for k in 0..N {
-            lo[k] = lo[k].min(p[k]);
-            hi[k] = hi[k].max(p[k]);
-        }
-    }
-    if !any {
-        return 0.0;
-    }
-    let e = (0..N).map(|k| hi[k] - lo[k]).fold(0.0, f64::max);
+/// The largest side of a bounding box, 0 when there is none or it is not
+/// finite.
+fn extent<const N: usize>(bb: Option<[[f64; N]; 2]>) -> f64 {
+    let e = bb.map_or(0.0, |[lo, hi]| {
+        (0..N).map(|k| hi[k] - lo[k]).fold(0.0, f64::max)
+    });
     if e.is_finite() {
         e
     } else {
@@ -54,13 +45,13 @@ fn extent<const N: usize>(points: impl Iterator<Item = [f64; N]>) -> f64 {
 /// assert_eq!(default_mesh_tolerance(&m), 4e-9);
 /// ```
 pub fn default_mesh_tolerance(mesh: &PolygonMesh) -> f64 {
-    DEFAULT_RELATIVE_TOLERANCE * extent(mesh.vertices.iter().copied())
+    DEFAULT_RELATIVE_TOLERANCE * extent(mesh.bounding_box())
 }
 
 /// [`DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of the set's
 /// bounding box.
 pub fn default_set_tolerance(set: &PolygonSet2) -> f64 {
-    DEFAULT_RELATIVE_TOLERANCE * extent(set.vertices().iter().copied())
+    DEFAULT_RELATIVE_TOLERANCE * extent(set.bounding_box())
 }
 
 /// Smooths a 3D result in its variant: a triangle mesh (every facet one

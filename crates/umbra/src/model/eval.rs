@@ -101,27 +101,12 @@ impl CsgReport {
         self.topology_error = topology.err().map(|e| e.to_string());
         self.non_manifold_edges = non_manifold_edge_count(mesh);
         self.volume = topology::mesh_signed_volume(mesh);
-        self.bounds = bounds_of(mesh);
+        self.bounds = mesh.bounding_box();
         self.smoothing = Some(smoothed.report.clone());
         self.timings_ms.smooth = Some(smooth_ms);
         self.timings_ms.total += smooth_ms;
         self
     }
-}
-
-/// The axis-aligned bounds `[min, max]` of the vertices, if any.
-fn bounds_of(mesh: &PolygonMesh) -> Option<[[f64; 3]; 2]> {
-    mesh.vertices.first().map(|&v0| {
-        let mut lo = v0;
-        let mut hi = v0;
-        for v in &mesh.vertices {
-            for k in 0..3 {
-                lo[k] = lo[k].min(v[k]);
-                hi[k] = hi[k].max(v[k]);
-            }
-        }
-        [lo, hi]
-    })
 }
 
 /// The timings of an evaluation, in milliseconds.
@@ -423,7 +408,7 @@ pub fn evaluate_csg_with_progress(
     let mut nodes = ctx.nodes.into_inner().unwrap_or_else(|e| e.into_inner());
     nodes.sort_by(|a, b| a.0.cmp(&b.0));
     let topology = mesh.check_topology();
-    let bounds = bounds_of(&mesh);
+    let bounds = mesh.bounding_box();
     let report = CsgReport {
         variant: if options.triangulate {
             "triangle"
