@@ -6,9 +6,9 @@
 
 use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
-use crate::{SmoothError, SmoothOptions, Smoothed};
+use crate::{SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use std::collections::{HashMap, HashSet};
-use topology::{triangulate_facet, HalfEdge, Point3, TriangleMesh};
+use topology::{triangulate_facet, HalfEdge, Point3, PolygonMesh, TriangleMesh};
 
 /// Twice the signed area of the 2D triangle `a b c`.
 fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
@@ -174,6 +174,21 @@ pub fn smooth_triangles(
     mesh.check_topology()?;
     mesh.validate_coordinates()?;
     let (poly, mut report) = run(&mesh.to_polygon_mesh(), options)?;
+    let shape = triangulate_result(&poly, &mut report, options.tolerance);
+    #[cfg(debug_assertions)]
+    crate::sanity_check_triangles(&shape, options.tolerance)?;
+    Ok(Smoothed { shape, report })
+}
+
+/// The triangle mesh of a smoothed polygon mesh: one-triangle facets
+/// kept, every other facet re-triangulated (section 4.8) and improved by
+/// flips, then degenerate and opposite triangle pairs removed and unused
+/// vertices dropped; the counts go into `report`.
+pub(crate) fn triangulate_result(
+    poly: &PolygonMesh,
+    report: &mut SmoothReport,
+    tolerance: f64,
+) -> TriangleMesh {
     let mut triangles = Vec::with_capacity(poly.facets.len());
     let mut pairs = Vec::new();
     for f in &poly.facets {
@@ -190,12 +205,7 @@ pub fn smooth_triangles(
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
         let first = triangles.len();
         triangulate_facet(&poly.vertices, &pairs, &mut triangles);
-        flip_to_delaunay(
-            &poly.vertices,
-            h,
-            &mut triangles[first..],
-            options.tolerance,
-        );
+        flip_to_delaunay(&poly.vertices, h, &mut triangles[first..], tolerance);
         report.counts.facets_retriangulated += 1;
     }
     // A triangle repeating a vertex holds a zero-length half-edge and a
@@ -223,10 +233,7 @@ pub fn smooth_triangles(
     for t in &mut triangles {
         *t = t.map(|v| map[v as usize]);
     }
-    let shape = TriangleMesh::new(vertices, triangles);
-    #[cfg(debug_assertions)]
-    crate::sanity_check_triangles(&shape, options.tolerance)?;
-    Ok(Smoothed { shape, report })
+    TriangleMesh::new(vertices, triangles)
 }
 
 #[cfg(test)]
