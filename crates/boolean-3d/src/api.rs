@@ -2,7 +2,10 @@
 //! audit mode that returns the level data behind Theorems 1-4.
 
 use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
-use crate::level3::{level3 as level3_fast, level3_brute, Level3Data, Winding};
+use crate::contacts::Contacts;
+use crate::level3::{
+    level3 as level3_fast, level3_brute, level3_with_contacts, Level3Data, Winding,
+};
 use crate::merge::Merged;
 use crate::mesh::Flat;
 use crate::retriangulate::{to_triangle_mesh, Source};
@@ -154,21 +157,39 @@ fn flat_pair<'a, M: Sync>(
     Ok((fa?, fb?))
 }
 
-/// Levels 3-5 on two validated operands.
+/// What [`run`] computes: the retained facets, the level data, the audit
+/// when asked for and the contacts when asked for.
+type Run = (Retained, Level3Data, Option<Audit>, Option<Contacts>);
+
+/// Levels 3-5 on two validated operands, and with `Some(proximity)` the
+/// operands' [`Contacts`] at that distance.
 fn run(
     a: &Flat<'_>,
     b: &Flat<'_>,
     op: BooleanOp,
     audit: bool,
-) -> Result<(Retained, Level3Data, Option<Audit>), Boolean3Error> {
-    let l3 = level3_fast(a, b, Winding::Propagate)?;
+    proximity: Option<f64>,
+) -> Result<Run, Boolean3Error> {
+    let (l3, near) = level3_with_contacts(a, b, Winding::Propagate, proximity)?;
+    let contacts = near
+        .zip(proximity)
+        .map(|(near, p)| crate::contacts::contacts(a, b, &near, p));
     let retained = construct(a, b, &l3, op, audit)?;
     let audit = if audit {
         Some(make_audit(a, b, op, &l3, &retained)?)
     } else {
         None
     };
-    Ok((retained, l3, audit))
+    Ok((retained, l3, audit, contacts))
+}
+
+/// A proximity for [`Contacts`] must be finite and not negative.
+fn check_proximity(proximity: f64) -> Result<(), Boolean3Error> {
+    if proximity.is_finite() && proximity >= 0.0 {
+        Ok(())
+    } else {
+        Err(Boolean3Error::InvalidProximity(proximity))
+    }
 }
 
 fn make_audit(
@@ -342,7 +363,24 @@ pub fn boolean_mesh(
     b: &PolygonMesh,
     op: BooleanOp,
 ) -> Result<MeshOutput, Boolean3Error> {
-    boolean_mesh_impl(a, b, op, false).map(|(o, _)| o)
+    boolean_mesh_impl(a, b, op, false, None).map(|(o, _, _)| o)
+}
+
+/// [`boolean_mesh`] together with the operands' [`Contacts`] at
+/// `proximity` (finite, not negative): the boxes outside which the result
+/// is made of pieces of one operand that the other neither cuts nor comes
+/// within `proximity` of. Data smoothing after the Boolean looks only
+/// inside them (`smooth::smooth_mesh_near`). The result is the same as
+/// [`boolean_mesh`]'s, bit for bit.
+pub fn boolean_mesh_with_contacts(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    proximity: f64,
+) -> Result<(MeshOutput, Contacts), Boolean3Error> {
+    check_proximity(proximity)?;
+    let (o, _, c) = boolean_mesh_impl(a, b, op, false, Some(proximity))?;
+    Ok((o, c.unwrap_or_default()))
 }
 
 /// [`boolean_mesh`] together with the [`Audit`] of its level data.
@@ -351,7 +389,7 @@ pub fn boolean_mesh_audit(
     b: &PolygonMesh,
     op: BooleanOp,
 ) -> Result<(MeshOutput, Audit), Boolean3Error> {
-    let (o, audit) = boolean_mesh_impl(a, b, op, true)?;
+    let (o, audit, _) = boolean_mesh_impl(a, b, op, true, None)?;
     let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
     Ok((o, audit))
 }
@@ -371,10 +409,11 @@ fn boolean_mesh_impl(
     b: &PolygonMesh,
     op: BooleanOp,
     audit: bool,
-) -> Result<(MeshOutput, Option<Audit>), Boolean3Error> {
+    proximity: Option<f64>,
+) -> Result<(MeshOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
     let (fa, fb) = flat_pair(a, b, flat_polygon)?;
-    let (r, l3, audit) = run(&fa, &fb, op, audit)?;
+    let (r, l3, audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
     let intersections = l3.x12.len() + l3.x21.len();
     // The operands' flat arrays and the level data are no longer needed:
     // free them before the output is assembled, to lower the peak memory.
@@ -384,7 +423,7 @@ fn boolean_mesh_impl(
         sources: r.facets().map(|(src, _)| src).collect(),
         intersections,
     };
-    Ok((out, audit))
+    Ok((out, audit, contacts))
 }
 
 /// The Boolean `op` of two triangle meshes (the triangle-mesh variant):
@@ -402,7 +441,23 @@ pub fn boolean_triangles(
     b: &TriangleMesh,
     op: BooleanOp,
 ) -> Result<TriangleOutput, Boolean3Error> {
-    boolean_triangles_impl(a, b, op, false).map(|(o, _)| o)
+    boolean_triangles_impl(a, b, op, false, None).map(|(o, _, _)| o)
+}
+
+/// [`boolean_triangles`] together with the operands' [`Contacts`] at
+/// `proximity` (finite, not negative), as [`boolean_mesh_with_contacts`];
+/// data smoothing after the Boolean looks only inside them
+/// (`smooth::smooth_triangles_near`). The result is the same as
+/// [`boolean_triangles`]'s, bit for bit.
+pub fn boolean_triangles_with_contacts(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp,
+    proximity: f64,
+) -> Result<(TriangleOutput, Contacts), Boolean3Error> {
+    check_proximity(proximity)?;
+    let (o, _, c) = boolean_triangles_impl(a, b, op, false, Some(proximity))?;
+    Ok((o, c.unwrap_or_default()))
 }
 
 /// [`boolean_triangles`] together with the [`Audit`] of its level data
@@ -413,7 +468,7 @@ pub fn boolean_triangles_audit(
     b: &TriangleMesh,
     op: BooleanOp,
 ) -> Result<(TriangleOutput, Audit), Boolean3Error> {
-    let (o, audit) = boolean_triangles_impl(a, b, op, true)?;
+    let (o, audit, _) = boolean_triangles_impl(a, b, op, true, None)?;
     let audit = audit.ok_or_else(|| Boolean3Error::Internal("audit not produced".into()))?;
     Ok((o, audit))
 }
@@ -423,7 +478,8 @@ fn boolean_triangles_impl(
     b: &TriangleMesh,
     op: BooleanOp,
     audit: bool,
-) -> Result<(TriangleOutput, Option<Audit>), Boolean3Error> {
+    proximity: Option<f64>,
+) -> Result<(TriangleOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
     let (ta, tb) = flat_pair(a, b, flat_triangles)?;
     // The coplanar merge (module `merge`): the Boolean runs on the merged
@@ -432,7 +488,7 @@ fn boolean_triangles_impl(
         |e: TopologyError| Boolean3Error::Internal(format!("coplanar merge broke closure: {e}"));
     let (ma, mb) = rayon::join(|| Merged::new(ta), || Merged::new(tb));
     let ((ma, fa), (mb, fb)) = (ma.map_err(internal)?, mb.map_err(internal)?);
-    let (r, l3, mut audit) = run(&fa, &fb, op, audit)?;
+    let (r, l3, mut audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
     let intersections = l3.x12.len() + l3.x21.len();
     drop(l3);
     let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
@@ -466,7 +522,7 @@ fn boolean_triangles_impl(
         mesh,
         intersections,
     };
-    Ok((out, audit))
+    Ok((out, audit, contacts))
 }
 
 /// The level-3 data of two polygon meshes by the fast path (broad phase,

@@ -74,6 +74,18 @@ impl Aabb {
         }
     }
 
+    /// Whether the closed boxes come within `margin` of each other in
+    /// every axis (`margin >= 0`; with 0, [`Aabb::overlaps`]).
+    #[inline]
+    pub fn within(&self, o: &Aabb, margin: f32) -> bool {
+        self.lo[0] - margin <= o.hi[0]
+            && o.lo[0] - margin <= self.hi[0]
+            && self.lo[1] - margin <= o.hi[1]
+            && o.lo[1] - margin <= self.hi[1]
+            && self.lo[2] - margin <= o.hi[2]
+            && o.lo[2] - margin <= self.hi[2]
+    }
+
     /// Whether the closed boxes share a point.
     #[inline]
     pub fn overlaps(&self, o: &Aabb) -> bool {
@@ -273,6 +285,18 @@ impl Bvh {
     /// the subtrees are descended in parallel; the result is concatenated
     /// in frontier order, so it is deterministic.
     pub fn pairs(&self, boxes: &[Aabb], other: &Bvh, other_boxes: &[Aabb]) -> Vec<(u32, u32)> {
+        self.pairs_within(boxes, other, other_boxes, 0.0)
+    }
+
+    /// [`Bvh::pairs`] for boxes that come within `margin` (in every axis,
+    /// `margin >= 0`) of each other instead of overlapping.
+    pub fn pairs_within(
+        &self,
+        boxes: &[Aabb],
+        other: &Bvh,
+        other_boxes: &[Aabb],
+        margin: f32,
+    ) -> Vec<(u32, u32)> {
         if self.nodes.is_empty() || other.nodes.is_empty() {
             return Vec::new();
         }
@@ -283,7 +307,7 @@ impl Bvh {
             }
             let mut next = Vec::with_capacity(2 * frontier.len());
             for &(m, n) in &frontier {
-                if self.node_pair_overlaps(other, m, n) {
+                if self.node_pair_overlaps(other, m, n, margin) {
                     match self.split(other, m, n) {
                         Some((x, y)) => next.extend([x, y]),
                         None => next.push((m, n)),
@@ -296,7 +320,7 @@ impl Bvh {
             .par_iter()
             .map(|&start| {
                 let mut out = Vec::new();
-                self.descend(boxes, other, other_boxes, start, &mut out);
+                self.descend(boxes, other, other_boxes, margin, start, &mut out);
                 out
             })
             .collect();
@@ -304,10 +328,10 @@ impl Bvh {
     }
 
     #[inline]
-    fn node_pair_overlaps(&self, other: &Bvh, m: u32, n: u32) -> bool {
+    fn node_pair_overlaps(&self, other: &Bvh, m: u32, n: u32, margin: f32) -> bool {
         self.nodes[m as usize]
             .bb
-            .overlaps(&other.nodes[n as usize].bb)
+            .within(&other.nodes[n as usize].bb, margin)
     }
 
     /// The two child pairs of node pair `(m, n)` (descending the node with
@@ -335,12 +359,13 @@ impl Bvh {
         boxes: &[Aabb],
         other: &Bvh,
         other_boxes: &[Aabb],
+        margin: f32,
         start: (u32, u32),
         out: &mut Vec<(u32, u32)>,
     ) {
         let mut stack: Vec<(u32, u32)> = vec![start];
         while let Some((m, n)) = stack.pop() {
-            if !self.node_pair_overlaps(other, m, n) {
+            if !self.node_pair_overlaps(other, m, n, margin) {
                 continue;
             }
             match self.split(other, m, n) {
@@ -353,11 +378,11 @@ impl Bvh {
                     let (ps, qs) = (p.a as usize, q.a as usize);
                     for &i in &self.items[ps..ps + p.count as usize] {
                         let bi = &boxes[i as usize];
-                        if !bi.overlaps(&q.bb) {
+                        if !bi.within(&q.bb, margin) {
                             continue;
                         }
                         for &j in &other.items[qs..qs + q.count as usize] {
-                            if bi.overlaps(&other_boxes[j as usize]) {
+                            if bi.within(&other_boxes[j as usize], margin) {
                                 out.push((i, j));
                             }
                         }

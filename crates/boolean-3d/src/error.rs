@@ -24,6 +24,9 @@ pub enum Boolean3Error {
         /// What overflowed.
         what: &'static str,
     },
+    /// The proximity asked of [`crate::Contacts`] is not a finite number
+    /// at least 0.
+    InvalidProximity(f64),
     /// An invariant guaranteed by the theorems of section 4.9 failed (for
     /// example a missing Theorem 1 interpolation partner or an unbalanced
     /// composite edge). This is a bug: please report it with the input.
@@ -42,6 +45,12 @@ impl fmt::Display for Boolean3Error {
             ),
             Boolean3Error::TooLarge { what } => {
                 write!(f, "the result has too many {what} for 32-bit indices")
+            }
+            Boolean3Error::InvalidProximity(p) => {
+                write!(
+                    f,
+                    "the contact proximity must be finite and at least 0, not {p}"
+                )
             }
             Boolean3Error::Internal(msg) => {
                 write!(f, "internal error (a bug, please report): {msg}")

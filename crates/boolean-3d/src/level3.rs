@@ -416,12 +416,26 @@ pub(crate) fn level3(
     b: &Flat<'_>,
     winding: Winding,
 ) -> Result<Level3Data, Boolean3Error> {
+    level3_with_contacts(a, b, winding, None).map(|(l3, _)| l3)
+}
+
+/// [`level3`], and with `Some(proximity)` also the facets of each operand
+/// that come within `proximity` of a facet of the other
+/// ([`crate::contacts`]), found by the same hierarchies.
+pub(crate) fn level3_with_contacts(
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    winding: Winding,
+    proximity: Option<f64>,
+) -> Result<(Level3Data, Option<[Vec<u32>; 2]>), Boolean3Error> {
     let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
     let margin = 4.0 * UNIT_ROUNDOFF * l;
     // Facet boxes widened by the margin in y and z once, here: every
     // overlap test below involves one facet box.
     let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(margin), || b.facet_boxes(margin));
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    let contacts =
+        proximity.map(|p| crate::contacts::near_facets(&bvh_a, &boxes_a, &bvh_b, &boxes_b, p));
     // Overlapping facet pairs.
     let fpairs = bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b);
     let (c12, c21) = rayon::join(
@@ -468,7 +482,7 @@ pub(crate) fn level3(
     };
     // The edge lists are filled in by `with_edges` where the data leaves
     // the crate (the construction reads the flat meshes directly).
-    Ok(Level3Data {
+    let l3 = Level3Data {
         edges_a: Vec::new(),
         edges_b: Vec::new(),
         x03,
@@ -477,7 +491,8 @@ pub(crate) fn level3(
         x21,
         candidate_pairs: c12 + c21,
         ray_casts: casts,
-    })
+    };
+    Ok((l3, contacts))
 }
 
 /// Level 3 by brute force straight from Table 4.1: every edge against every

@@ -59,6 +59,7 @@ mod api;
 mod bvh;
 mod composite;
 mod construct;
+mod contacts;
 mod error;
 mod level3;
 mod merge;
@@ -66,11 +67,13 @@ mod mesh;
 mod retriangulate;
 
 pub use api::{
-    boolean_mesh, boolean_mesh_audit, boolean_triangles, boolean_triangles_audit, level3,
-    level3_reference, Audit, FacetAudit, MeshOutput, TriangleOutput,
+    boolean_mesh, boolean_mesh_audit, boolean_mesh_with_contacts, boolean_triangles,
+    boolean_triangles_audit, boolean_triangles_with_contacts, level3, level3_reference, Audit,
+    FacetAudit, MeshOutput, TriangleOutput,
 };
 pub use composite::CompositeEdge3;
 pub use construct::{CompositeKind, CompositeRecord, FacetSource};
+pub use contacts::Contacts;
 pub use error::Boolean3Error;
 pub use level3::{EdgeFacetHit, Level3Data};
 pub use topology::{triangulate_facet, triangulate_mesh};
