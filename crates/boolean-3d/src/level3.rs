@@ -419,6 +419,9 @@ pub(crate) fn level3(
     level3_with_contacts(a, b, winding, None).map(|(l3, _)| l3)
 }
 
+/// The facets of A and of B near the other operand (sorted).
+pub(crate) type NearFacets = [Vec<u32>; 2];
+
 /// [`level3`], and with `Some(proximity)` also the facets of each operand
 /// that come within `proximity` of a facet of the other
 /// ([`crate::contacts`]), found by the same hierarchies.
@@ -427,7 +430,7 @@ pub(crate) fn level3_with_contacts(
     b: &Flat<'_>,
     winding: Winding,
     proximity: Option<f64>,
-) -> Result<(Level3Data, Option<[Vec<u32>; 2]>), Boolean3Error> {
+) -> Result<(Level3Data, Option<NearFacets>), Boolean3Error> {
     let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
     let margin = 4.0 * UNIT_ROUNDOFF * l;
     // Facet boxes widened by the margin in y and z once, here: every
