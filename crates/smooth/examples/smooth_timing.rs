@@ -1,15 +1,21 @@
 //! Times smoothing against the Boolean it follows: the union of two offset
 //! icospheres (`LEVEL` subdivisions, default 6: 81,920 triangles each) by
 //! `boolean_triangles`, then `smooth_triangles` at `TOL` (default 1e-9), in
-//! one process, `REPS` times (default 1; the least time of each is shown); prints the times and the smoothed result's vertex and
-//! triangle counts, volume bits and a hash of its coordinates and
-//! triangles (to compare outputs across versions bit for bit).
+//! one process, `REPS` times (default 1; the least time of each is shown);
+//! prints the times and the smoothed result's vertex and triangle counts,
+//! volume bits and a hash of its coordinates and triangles (to compare
+//! outputs across versions bit for bit). Then the same with the Boolean's
+//! contacts at `TOL` (`boolean_triangles_with_contacts`) and smoothing only
+//! near them (`smooth_triangles_near`), and whether both smoothings give
+//! the same triangles (as sets of coordinate triples). `MODE` (default
+//! `both`) is `full`, `near` or `both`.
 //! The figures of `docs/algorithms/smooth.md` come from
 //! `CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16
 //! cargo run --release -p smooth --example smooth_timing -- LEVEL [TOL [REPS]]`.
 //! (Criterion benches beside the peers live in `benches/`.)
-use boolean_3d::{boolean_triangles, BooleanOp};
-use smooth::{smooth_triangles, SmoothOptions};
+use boolean_3d::{boolean_triangles, boolean_triangles_with_contacts, BooleanOp};
+use smooth::{smooth_triangles, smooth_triangles_near, SmoothOptions};
+use topology::TriangleMesh;
 use std::time::{Duration, Instant};
 use test_support::shapes::icosphere;
 
@@ -28,29 +34,79 @@ fn main() {
         .nth(3)
         .map(|s| s.parse().unwrap())
         .unwrap_or(1);
-    // The least time of `reps` runs of each (the machine is shared).
-    let (mut tb, mut ts) = (Duration::MAX, Duration::MAX);
-    let mut s = None;
-    for _ in 0..reps.max(1) {
-        let t = Instant::now();
-        let r = boolean_triangles(&a, &b, BooleanOp::Union).unwrap().mesh;
-        tb = tb.min(t.elapsed());
-        let t = Instant::now();
-        s = Some(
-            smooth_triangles(&r, &SmoothOptions::new(tol))
-                .unwrap()
-                .shape,
+    let mode = std::env::args().nth(4).unwrap_or_else(|| "both".into());
+    let mut full = None;
+    if mode != "near" {
+        // The least time of `reps` runs of each (the machine is shared).
+        let (mut tb, mut ts) = (Duration::MAX, Duration::MAX);
+        for _ in 0..reps.max(1) {
+            let t = Instant::now();
+            let r = boolean_triangles(&a, &b, BooleanOp::Union).unwrap().mesh;
+            tb = tb.min(t.elapsed());
+            let t = Instant::now();
+            full = Some(smooth_triangles(&r, &SmoothOptions::new(tol)).unwrap());
+            ts = ts.min(t.elapsed());
+        }
+        let s = &full.as_ref().unwrap().shape;
+        println!(
+            "operand {} boolean {:?} smooth {:?} ({:.0}%)",
+            a.triangles.len(),
+            tb,
+            ts,
+            100.0 * ts.as_secs_f64() / tb.as_secs_f64()
         );
-        ts = ts.min(t.elapsed());
+        print_result(s);
     }
-    let s = s.unwrap();
-    println!(
-        "operand {} boolean {:?} smooth {:?} ({:.0}%)",
-        a.triangles.len(),
-        tb,
-        ts,
-        100.0 * ts.as_secs_f64() / tb.as_secs_f64()
-    );
+    if mode != "full" {
+        let (mut tb, mut ts) = (Duration::MAX, Duration::MAX);
+        let mut near = None;
+        for _ in 0..reps.max(1) {
+            let t = Instant::now();
+            let (r, c) = boolean_triangles_with_contacts(&a, &b, BooleanOp::Union, tol).unwrap();
+            tb = tb.min(t.elapsed());
+            let t = Instant::now();
+            near = Some((
+                smooth_triangles_near(&r.mesh, &SmoothOptions::new(tol), &c.boxes).unwrap(),
+                c.boxes.len(),
+            ));
+            ts = ts.min(t.elapsed());
+        }
+        let (n, boxes) = near.unwrap();
+        println!(
+            "operand {} boolean+contacts {:?} ({boxes} boxes) smooth near {:?} ({:.0}%)",
+            a.triangles.len(),
+            tb,
+            ts,
+            100.0 * ts.as_secs_f64() / tb.as_secs_f64()
+        );
+        print_result(&n.shape);
+        if let Some(f) = &full {
+            println!(
+                "same triangles as full smoothing: {} (reports equal: {})",
+                canonical(&f.shape) == canonical(&n.shape),
+                f.report.counts == n.report.counts
+            );
+        }
+    }
+}
+
+/// The triangles as a sorted list of coordinate triples (bits), each
+/// rotated to start at its least vertex.
+fn canonical(m: &TriangleMesh) -> Vec<[[u64; 3]; 3]> {
+    let mut v: Vec<[[u64; 3]; 3]> = m
+        .triangles
+        .iter()
+        .map(|t| {
+            let p = t.map(|i| m.vertices[i as usize].map(f64::to_bits));
+            let k = (0..3).min_by_key(|&k| p[k]).unwrap_or(0);
+            [p[k], p[(k + 1) % 3], p[(k + 2) % 3]]
+        })
+        .collect();
+    v.sort_unstable();
+    v
+}
+
+fn print_result(s: &TriangleMesh) {
     // FNV-1a over the coordinates' bits and the triangles' indices.
     let mut h: u64 = 0xcbf2_9ce4_8422_2325;
     let words = s.vertices.iter().flatten().map(|x| x.to_bits());

@@ -30,7 +30,10 @@ mod report;
 
 pub use error::SmoothError;
 pub use grid::{merge_vertices, VertexMerge};
-pub use mesh::{sanity_check_mesh, sanity_check_triangles, smooth_mesh, smooth_triangles};
+pub use mesh::{
+    sanity_check_mesh, sanity_check_triangles, smooth_mesh, smooth_mesh_near, smooth_triangles,
+    smooth_triangles_near, MAX_GROWTHS, REACH,
+};
 pub use options::SmoothOptions;
 pub use planar::{sanity_check_polygon_set, smooth_polygon_set, PlanarDefect, MAX_PLANAR_PASSES};
 pub use report::{SmoothCounts, SmoothReport, Smoothed};

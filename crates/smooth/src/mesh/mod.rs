@@ -22,10 +22,12 @@ mod crack;
 mod geom;
 mod index;
 mod plane;
+mod region;
 mod sanity;
 mod structure;
 mod triangles;
 
+pub use region::{smooth_mesh_near, smooth_triangles_near, MAX_GROWTHS, REACH};
 pub use sanity::{sanity_check_mesh, sanity_check_triangles};
 pub use triangles::smooth_triangles;
 
@@ -75,9 +77,11 @@ pub fn smooth_mesh(
     Ok(Smoothed { shape, report })
 }
 
-/// The closure check after a pass, in debug builds only.
-fn debug_check(w: &Work, stage: &str) -> Result<(), SmoothError> {
-    if cfg!(debug_assertions) {
+/// The closure check after a pass, in debug builds only, and only on a
+/// closed mesh (a region smoothed on its own is open along its boundary,
+/// which `region.rs` checks once at the end).
+fn debug_check(w: &Work, stage: &str, closed: bool) -> Result<(), SmoothError> {
+    if cfg!(debug_assertions) && closed {
         w.check_closure(stage)
     } else {
         Ok(())
@@ -136,9 +140,20 @@ pub(crate) fn run(
     mesh: &PolygonMesh,
     options: &SmoothOptions,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
+    run_with(mesh, options, true)
+}
+
+/// [`run`] on a mesh that is `closed` (shape boundary closure holds) or
+/// open (a region cut out of a closed mesh: the closure checks between
+/// passes are skipped).
+pub(crate) fn run_with(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+    closed: bool,
+) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
     let delta = options.tolerance;
     let Some((down, up)) = range_scale(&mesh.vertices, delta) else {
-        return run_in_range(mesh, options);
+        return run_in_range(mesh, options, closed);
     };
     let mut loss = 0.0f64;
     let vertices: Vec<_> = mesh
@@ -159,7 +174,7 @@ pub(crate) fn run(
         tolerance: scaled_tolerance(delta, down),
         ..*options
     };
-    let (mut shape, mut report) = run_in_range(&scaled, &scaled_options)?;
+    let (mut shape, mut report) = run_in_range(&scaled, &scaled_options, closed)?;
     for p in &mut shape.vertices {
         *p = p.map(|x| x * up);
     }
@@ -175,6 +190,7 @@ pub(crate) fn run(
 fn run_in_range(
     mesh: &PolygonMesh,
     options: &SmoothOptions,
+    closed: bool,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
     let delta = options.tolerance;
     let budget = options.budget_for(mesh.vertices.len(), mesh.half_edge_count());
@@ -188,7 +204,7 @@ fn run_in_range(
     crack::merge_phase(&mut w, delta, &mut counts);
     cancel::cancel_all(&mut w, &mut counts);
     passes += 1;
-    debug_check(&w, "vertex merging")?;
+    debug_check(&w, "vertex merging", closed)?;
 
     // Phase 2: edge cracking between edges, then by vertex to a
     // fixpoint, repeated until neither cracks anything.
@@ -196,10 +212,10 @@ fn run_in_range(
     loop {
         let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
         passes += 1;
-        debug_check(&w, "edge cracking between edges")?;
+        debug_check(&w, "edge cracking between edges", closed)?;
         let (rounds, hit) =
             crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, &mut roots, |w| {
-                debug_check(w, "edge cracking by vertex")
+                debug_check(w, "edge cracking by vertex", closed)
             })?;
         passes += rounds;
         budget_hit |= hit;
@@ -215,7 +231,7 @@ fn run_in_range(
     // Phase 3: removals and half-edge cancellation.
     cancel::cancel_all(&mut w, &mut counts);
     passes += 1;
-    debug_check(&w, "half-edge cancellation")?;
+    debug_check(&w, "half-edge cancellation", closed)?;
 
     // Phase 4: facet cancellation while it lowers the half-edge count.
     while !budget_hit {
@@ -225,7 +241,7 @@ fn run_in_range(
         budget_hit |= hit;
         cancel::cancel_all(&mut w, &mut counts);
         passes += 1;
-        debug_check(&w, "facet cancellation")?;
+        debug_check(&w, "facet cancellation", closed)?;
         if changed == 0 || w.half_edge_count() >= before {
             break;
         }
