@@ -7,9 +7,9 @@ use crate::{error, run};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use umbra::{
-    as_triangle_mesh, boolean_solid, default_mesh_tolerance, evaluate_csg, parse_csg, smooth_solid,
-    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError,
-    UmbraError,
+    as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, default_mesh_tolerance,
+    evaluate_csg, parse_csg, smooth_solid, smooth_solid_near, union_all_solids, BooleanOp,
+    CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError, UmbraError,
 };
 
 /// The operation named `op`: every name of the facade (`union`,
@@ -63,7 +63,8 @@ fn smoothed(
 /// (section 4.8): operands are triangulated first and the output is
 /// triangles. ``smooth=T`` smooths the result at tolerance ``T``
 /// (Appendix A: vertices closer than ``T`` merge, slivers and coincident
-/// opposing facets go); ``None`` (the default) or 0 returns the basic
+/// opposing facets go) where the operands cut or come within ``T`` of
+/// each other, as the command line does; ``None`` (the default) or 0 returns the basic
 /// Boolean's raw output. Both operands must be valid (``Mesh.is_valid()``).
 #[pyfunction]
 #[pyo3(signature = (a, b, op, *, triangulate = false, smooth = None))]
@@ -78,12 +79,30 @@ pub fn boolean<'py>(
     let op = parse_op(op)?;
     let (a, b) = (&a.get().mesh, &b.get().mesh);
     let variant = variant(triangulate);
-    let out = run(py, || {
-        let raw = solid(a, b, op, variant)?;
-        match smooth {
-            Some(t) if t != 0.0 => smoothed(&raw, variant, t),
-            _ => Ok(raw),
+    let out = run(py, || match smooth {
+        Some(t) if t != 0.0 => {
+            // As the command line does: the operands' contacts at the
+            // tolerance, and smoothing only there (`smooth_solid_near`).
+            let opts = SmoothOptions::new(t);
+            opts.validate().map_err(|source| UmbraError::Smooth {
+                file: String::new(),
+                source,
+            })?;
+            let (raw, contacts) =
+                boolean_solid_with_contacts(a, b, op, variant, t).map_err(|source| {
+                    UmbraError::Boolean3 {
+                        file: String::new(),
+                        source,
+                    }
+                })?;
+            smooth_solid_near(&raw.mesh, variant, &opts, &contacts)
+                .map(|out| out.shape)
+                .map_err(|source| UmbraError::Smooth {
+                    file: String::new(),
+                    source,
+                })
         }
+        _ => solid(a, b, op, variant),
     })?;
     Mesh::wrap(py, out)
 }

@@ -96,7 +96,8 @@ mod smoothing;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
 pub use boolean_3d::{
-    boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error, MeshOutput, TriangleOutput,
+    boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
+    triangulate_mesh, Boolean3Error, Contacts, MeshOutput, TriangleOutput,
 };
 #[cfg(feature = "io")]
 pub use encode::{encode_mesh, encode_mesh_with, encode_polygon_set, EncodedPolygons};
@@ -107,7 +108,9 @@ pub use model::*;
 pub use nary::{
     boolean_solids, difference_all_solids, union_all_solids, SolidsError, SolidsOutput,
 };
-pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
+pub use ops::{
+    as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, MeshVariant, SolidOutput, Via,
+};
 #[cfg(feature = "render")]
 pub use render::*;
 pub use report::{
@@ -122,11 +125,12 @@ pub use simplify_2d::{
     SimplifyError, SweepStats,
 };
 pub use smooth::{
-    smooth_mesh, smooth_polygon_set, smooth_triangles, SmoothCounts, SmoothError, SmoothOptions,
-    SmoothReport, Smoothed,
+    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, smooth_triangles_near,
+    SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed,
 };
 pub use smoothing::{
-    default_mesh_tolerance, default_set_tolerance, smooth_solid, DEFAULT_RELATIVE_TOLERANCE,
+    default_mesh_tolerance, default_set_tolerance, smooth_solid, smooth_solid_near,
+    DEFAULT_RELATIVE_TOLERANCE,
 };
 pub use topology::{
     check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,

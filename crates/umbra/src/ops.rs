@@ -3,7 +3,10 @@
 //! ([`MeshVariant`], [`boolean_solid`]), which triangulates operands that
 //! are not triangle meshes when the triangle-mesh variant is asked for.
 
-use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, Boolean3Error};
+use boolean_3d::{
+    boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
+    triangulate_mesh, Boolean3Error, Contacts,
+};
 use std::time::Instant;
 use topology::{BooleanOp, PolygonMesh, TriangleMesh};
 
@@ -116,18 +119,49 @@ pub fn boolean_solid(
     op: BooleanOp,
     variant: MeshVariant,
 ) -> Result<SolidOutput, Boolean3Error> {
+    solid(a, b, op, variant, None).map(|(out, _)| out)
+}
+
+/// [`boolean_solid`] together with the operands' [`Contacts`] at
+/// `proximity` (finite, not negative): where the operands cut or come
+/// within `proximity` of each other, the only places smoothing a result
+/// of clean operands has anything to do
+/// ([`crate::smooth_solid_near`]). The result is [`boolean_solid`]'s.
+pub fn boolean_solid_with_contacts(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    variant: MeshVariant,
+    proximity: f64,
+) -> Result<(SolidOutput, Contacts), Boolean3Error> {
+    let (out, contacts) = solid(a, b, op, variant, Some(proximity))?;
+    Ok((out, contacts.unwrap_or_default()))
+}
+
+/// The Boolean of both variants, with the contacts when asked for.
+fn solid(
+    a: &PolygonMesh,
+    b: &PolygonMesh,
+    op: BooleanOp,
+    variant: MeshVariant,
+    proximity: Option<f64>,
+) -> Result<(SolidOutput, Option<Contacts>), Boolean3Error> {
     let start = Instant::now();
     match variant {
         MeshVariant::PolygonMesh => {
-            let out = boolean_mesh(a, b, op)?;
-            Ok(SolidOutput {
+            let (out, contacts) = match proximity {
+                Some(p) => boolean_mesh_with_contacts(a, b, op, p).map(|(o, c)| (o, Some(c)))?,
+                None => (boolean_mesh(a, b, op)?, None),
+            };
+            let out = SolidOutput {
                 mesh: out.mesh,
                 intersections: out.intersections,
                 variant,
                 inputs_triangulated: [false, false],
                 triangulate_ms: None,
                 total_ms: ms(start),
-            })
+            };
+            Ok((out, contacts))
         }
         MeshVariant::TriangleMesh => {
             let ta = as_triangle_mesh(a);
@@ -136,15 +170,21 @@ pub fn boolean_solid(
             let ta = ta.unwrap_or_else(|| triangulate_mesh(a));
             let tb = tb.unwrap_or_else(|| triangulate_mesh(b));
             let triangulate_ms = Some(ms(start));
-            let out = boolean_triangles(&ta, &tb, op)?;
-            Ok(SolidOutput {
+            let (out, contacts) = match proximity {
+                Some(p) => {
+                    boolean_triangles_with_contacts(&ta, &tb, op, p).map(|(o, c)| (o, Some(c)))?
+                }
+                None => (boolean_triangles(&ta, &tb, op)?, None),
+            };
+            let out = SolidOutput {
                 mesh: out.mesh.to_polygon_mesh(),
                 intersections: out.intersections,
                 variant,
                 inputs_triangulated,
                 triangulate_ms,
                 total_ms: ms(start),
-            })
+            };
+            Ok((out, contacts))
         }
     }
 }

@@ -5,7 +5,11 @@
 //! no Boolean of this crate smooths on its own.
 
 use crate::ops::{as_triangle_mesh, MeshVariant};
-use smooth::{smooth_mesh, smooth_triangles, SmoothError, SmoothOptions, Smoothed};
+use boolean_3d::Contacts;
+use smooth::{
+    smooth_mesh, smooth_mesh_near, smooth_triangles, smooth_triangles_near, SmoothError,
+    SmoothOptions, Smoothed,
+};
 use topology::{PolygonMesh, PolygonSet2};
 
 /// The default smoothing tolerance, relative to the largest extent of the
@@ -81,5 +85,31 @@ pub fn smooth_solid(
             })
         }
         (MeshVariant::PolygonMesh, _) => smooth_mesh(mesh, options),
+    }
+}
+
+/// Smooths a 3D Boolean result only near the operands' [`Contacts`] (from
+/// [`crate::boolean_solid_with_contacts`] at a proximity of at least the
+/// tolerance), in its variant as [`smooth_solid`] does: where operands
+/// that need no smoothing themselves cut or touch, the result equals
+/// [`smooth_solid`]'s, at a cost proportional to what the Boolean changed
+/// (`smooth::smooth_mesh_near`). This is how the command line smooths a
+/// Boolean; [`smooth_solid`] also cleans what the operands brought.
+pub fn smooth_solid_near(
+    mesh: &PolygonMesh,
+    variant: MeshVariant,
+    options: &SmoothOptions,
+    contacts: &Contacts,
+) -> Result<Smoothed<PolygonMesh>, SmoothError> {
+    match (variant, as_triangle_mesh(mesh)) {
+        (MeshVariant::TriangleMesh, Some(tri)) => {
+            let out = smooth_triangles_near(&tri, options, &contacts.boxes)?;
+            Ok(Smoothed {
+                shape: out.shape.to_polygon_mesh(),
+                report: out.report,
+            })
+        }
+        (MeshVariant::PolygonMesh, _) => smooth_mesh_near(mesh, options, &contacts.boxes),
+        (MeshVariant::TriangleMesh, None) => smooth_solid(mesh, variant, options),
     }
 }

@@ -13,8 +13,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_via_simplify, default_mesh_tolerance, encode_mesh_with,
-    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid,
+    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify, Contacts, default_mesh_tolerance, encode_mesh_with,
+    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near,
     Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
     Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
 };
@@ -222,8 +222,17 @@ impl BooleanArgs {
         } else {
             MeshVariant::PolygonMesh
         };
-        let out = boolean_solid(&a, &b, op, variant)
-            .map_err(|e| errors::boolean3(e, [a_path, b_path]))?;
+        let tol = self
+            .smooth
+            .unwrap_or_else(|| default_mesh_tolerance(&a).max(default_mesh_tolerance(&b)));
+        // The operands' contacts at the tolerance: smoothing looks only
+        // where the Boolean cut or touched (`smooth_solid_near`).
+        let (out, contacts) = if tol > 0.0 {
+            boolean_solid_with_contacts(&a, &b, op, variant, tol)
+        } else {
+            boolean_solid(&a, &b, op, variant).map(|o| (o, Contacts::default()))
+        }
+        .map_err(|e| errors::boolean3(e, [a_path, b_path]))?;
         let out_file = out_path.display().to_string();
         let mut report = Boolean3Report::new(
             op,
@@ -234,12 +243,10 @@ impl BooleanArgs {
             out_file.clone(),
             &out,
         );
-        let tol = self
-            .smooth
-            .unwrap_or_else(|| default_mesh_tolerance(&a).max(default_mesh_tolerance(&b)));
         let mesh = if tol > 0.0 {
             let start = Instant::now();
-            let smoothed = smooth_solid(&out.mesh, variant, &SmoothOptions::new(tol)).map_err(
+            let opts = SmoothOptions::new(tol);
+            let smoothed = smooth_solid_near(&out.mesh, variant, &opts, &contacts).map_err(
                 |source| UmbraError::Smooth {
                     file: String::new(),
                     source,
