@@ -1,22 +1,30 @@
 //! Criterion benchmarks of data smoothing (Appendix A) beside the 3D
 //! Boolean whose output it smooths: the sphere difference of the
 //! `boolean_3d` bench at 20k to 1M triangles per operand, timed as the
-//! Boolean alone (`boolean`) and smoothing its result at the default
-//! tolerance, 1e-9 of the size (`smooth`), in both variants. The goal
-//! (issue: smoothing adds at most 25% to the Boolean's time at 1M
-//! triangles) is the ratio `smooth / boolean` of the same size; the
-//! figures are in `docs/performance.md`. The 2D group smooths the basic
+//! Boolean alone (`boolean`), smoothing its whole result at the default
+//! tolerance, 1e-9 of the size (`smooth`), the Boolean with the operands'
+//! contacts at that tolerance (`boolean_contacts`) and smoothing only near
+//! them (`smooth_near`, what the command line runs), in both variants.
+//! The goal (issue: smoothing adds at most 25% to the Boolean's time at
+//! 1M triangles) is the ratio of `boolean_contacts + smooth_near` minus
+//! `boolean` to `boolean` at the same size; the figures are in `docs/performance.md`. The 2D group smooths the basic
 //! Boolean's union of two 1k-to-100k-gons.
 //!
 //! ```text
 //! cargo bench -p umbra-benches --bench smooth
 //! ```
 
-use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
+use boolean_3d::{
+    boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
+    BooleanOp,
+};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use std::hint::black_box;
 use std::time::Duration;
-use umbra::{default_mesh_tolerance, smooth_mesh, smooth_polygon_set, smooth_triangles};
+use umbra::{
+    default_mesh_tolerance, smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles,
+    smooth_triangles_near,
+};
 use umbra::{default_set_tolerance, SmoothOptions};
 use umbra_benches::solid::{sphere_pair, sphere_pair_quads};
 
@@ -45,6 +53,23 @@ fn spheres(c: &mut Criterion) {
                 bench.iter(|| black_box(smooth_triangles(&out, &opts).unwrap()));
             },
         );
+        let tol = opts.tolerance;
+        let near = |a, b| boolean_triangles_with_contacts(a, b, BooleanOp::Difference, tol);
+        let contacts = near(&a, &b).unwrap().1;
+        group.bench_with_input(
+            BenchmarkId::new("triangles/boolean_contacts", size),
+            &(),
+            |bench, _| bench.iter(|| black_box(near(&a, &b).unwrap())),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("triangles/smooth_near", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| {
+                    black_box(smooth_triangles_near(&out, &opts, &contacts.boxes).unwrap())
+                });
+            },
+        );
         let (qa, qb) = sphere_pair_quads(size);
         let out = boolean_mesh(&qa, &qb, BooleanOp::Difference).unwrap().mesh;
         group.bench_with_input(
@@ -59,6 +84,20 @@ fn spheres(c: &mut Criterion) {
             &(),
             |bench, _| {
                 bench.iter(|| black_box(smooth_mesh(&out, &opts).unwrap()));
+            },
+        );
+        let near = |a, b| boolean_mesh_with_contacts(a, b, BooleanOp::Difference, tol);
+        let contacts = near(&qa, &qb).unwrap().1;
+        group.bench_with_input(
+            BenchmarkId::new("polygons/boolean_contacts", size),
+            &(),
+            |bench, _| bench.iter(|| black_box(near(&qa, &qb).unwrap())),
+        );
+        group.bench_with_input(
+            BenchmarkId::new("polygons/smooth_near", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| black_box(smooth_mesh_near(&out, &opts, &contacts.boxes).unwrap()));
             },
         );
     }

@@ -5,8 +5,8 @@
 //! of one operand that the other neither cuts nor touches, which lets data
 //! smoothing (chapter 5) look only where the Boolean made something new.
 
-use crate::bvh::{Aabb, Bvh};
 use crate::mesh::Flat;
+use rayon::prelude::*;
 use robust_arith::Point3;
 
 /// The places where the operands of a Boolean come within
@@ -16,36 +16,93 @@ pub struct Contacts {
     /// The distance asked for.
     pub proximity: f64,
     /// The exact bounding box (`[lo, hi]`) of every facet of either
-    /// operand whose box comes within `proximity` of a facet box of the
-    /// other operand (in the triangle-mesh variant: of the merged coplanar
-    /// facets the Boolean ran on), grown by `proximity` on every side, in
-    /// A's facet order then B's. Every point of either operand within
+    /// operand (in the triangle-mesh variant: of the merged coplanar
+    /// facets the Boolean ran on) that may come within `proximity` of a
+    /// facet of the other operand, grown by `proximity` on every side, in
+    /// A's facet order then B's. A facet pair counts when their boxes come
+    /// within `proximity` and no plane of either facet separates them by
+    /// more than `proximity` (a conservative test: never a pair that does
+    /// come that close left out). Every point of either operand within
     /// `proximity` of the other operand, every intersection point, and so
     /// every vertex the Boolean created lies in one of them.
     pub boxes: Vec<[Point3; 2]>,
 }
 
-/// The facets of A and of B (sorted, each once) whose boxes come within
-/// `proximity` of a box of the other operand.
+/// The single-precision margin of the broad phase for `proximity`: twice
+/// the distance, rounded up. The subtraction in `Aabb::within` rounds to
+/// nearest, and below half a unit in the last place the boxes' outward
+/// rounding already covers the gap.
+pub(crate) fn margin(proximity: f64) -> f32 {
+    let m = (2.0 * proximity) as f32;
+    if f64::from(m) < 2.0 * proximity {
+        m.next_up()
+    } else {
+        m
+    }
+}
+
+/// Whether a plane of facet `f` of `m` separates it from facet `g` of
+/// `o` by more than `proximity`: the facet's Newell normal `n` (any
+/// direction would do), the slab `|n.(x - p0)| <= t` holding the facet's
+/// own vertices (t is 0 for an exactly planar facet, up to rounding), and
+/// every vertex of `g` farther than `t + proximity` beyond one side of it,
+/// with a margin of `64 u L` for the rounding of the signed distances
+/// (`L` the largest coordinate involved). Then no point of `g` comes
+/// within `proximity` of `f`. `false` when the facet has no normal.
+fn separated(m: &Flat<'_>, f: u32, o: &Flat<'_>, g: u32, proximity: f64) -> bool {
+    let edges = &m.he[m.facet_range(f)];
+    let Some(&(first, _)) = edges.first() else {
+        return false;
+    };
+    let mut n = [0.0f64; 3];
+    for &(s, e) in edges {
+        let (p, q) = (m.pos[s as usize], m.pos[e as usize]);
+        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+    if !(len > 0.0 && len.is_finite()) {
+        return false;
+    }
+    let p0 = m.pos[first as usize];
+    let mut big = 0.0f64;
+    let mut dist = |x: &Point3| {
+        big = big.max(x[0].abs()).max(x[1].abs()).max(x[2].abs());
+        (n[0] * (x[0] - p0[0]) + n[1] * (x[1] - p0[1]) + n[2] * (x[2] - p0[2])) / len
+    };
+    let own = edges
+        .iter()
+        .map(|&(s, _)| dist(&m.pos[s as usize]).abs())
+        .fold(0.0, f64::max);
+    let (mut above, mut below) = (f64::INFINITY, f64::NEG_INFINITY);
+    for &(s, _) in &o.he[o.facet_range(g)] {
+        let d = dist(&o.pos[s as usize]);
+        above = above.min(d);
+        below = below.max(d);
+    }
+    let t = own + proximity + 64.0 * f64::EPSILON * big.max(f64::MIN_POSITIVE);
+    above > t || below < -t
+}
+
+/// The facets of A and of B (sorted, each once) in the facet pairs the
+/// broad phase found within the margin that no plane of either facet
+/// separates by more than `proximity` ([`separated`]).
 pub(crate) fn near_facets(
-    bvh_a: &Bvh,
-    boxes_a: &[Aabb],
-    bvh_b: &Bvh,
-    boxes_b: &[Aabb],
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    pairs: &[(u32, u32)],
     proximity: f64,
 ) -> [Vec<u32>; 2] {
-    // Twice the distance, rounded up to single precision: the subtraction
-    // in `Aabb::within` rounds to nearest, and below half a unit in the
-    // last place the boxes' outward rounding already covers the gap.
-    let margin = (2.0 * proximity) as f32;
-    let margin = if f64::from(margin) < 2.0 * proximity {
-        margin.next_up()
-    } else {
-        margin
-    };
-    let pairs = bvh_a.pairs_within(boxes_a, bvh_b, boxes_b, margin);
-    let mut fa: Vec<u32> = pairs.iter().map(|p| p.0).collect();
-    let mut fb: Vec<u32> = pairs.iter().map(|p| p.1).collect();
+    let near: Vec<(u32, u32)> = pairs
+        .par_iter()
+        .filter(|&&(fa, fb)| {
+            !separated(a, fa, b, fb, proximity) && !separated(b, fb, a, fa, proximity)
+        })
+        .copied()
+        .collect();
+    let mut fa: Vec<u32> = near.iter().map(|p| p.0).collect();
+    let mut fb: Vec<u32> = near.iter().map(|p| p.1).collect();
     for f in [&mut fa, &mut fb] {
         f.sort_unstable();
         f.dedup();

@@ -437,10 +437,15 @@ pub(crate) fn level3_with_contacts(
     // overlap test below involves one facet box.
     let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(margin), || b.facet_boxes(margin));
     let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
-    let contacts =
-        proximity.map(|p| crate::contacts::near_facets(&bvh_a, &boxes_a, &bvh_b, &boxes_b, p));
-    // Overlapping facet pairs.
-    let fpairs = bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b);
+    // Overlapping facet pairs; with a proximity, the pairs within it (a
+    // superset: `candidates` tests every edge box against the other facet
+    // box, so the extra pairs add no candidate and change nothing), from
+    // which the contacts come.
+    let fpairs = match proximity {
+        Some(p) => bvh_a.pairs_within(&boxes_a, &bvh_b, &boxes_b, crate::contacts::margin(p)),
+        None => bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b),
+    };
+    let contacts = proximity.map(|p| crate::contacts::near_facets(a, b, &fpairs, p));
     let (c12, c21) = rayon::join(
         || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
         || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),

@@ -29,7 +29,11 @@ fn canonical_mesh(m: &PolygonMesh) -> Vec<Key> {
         .facets
         .iter()
         .map(|f| {
-            let mut k: Key = f.half_edges.iter().map(|h| [bits(h.start), bits(h.end)]).collect();
+            let mut k: Key = f
+                .half_edges
+                .iter()
+                .map(|h| [bits(h.start), bits(h.end)])
+                .collect();
             k.sort_unstable();
             k
         })
@@ -139,7 +143,11 @@ fn stacked_cubes_come_out_as_one_box_through_the_contacts() {
 fn spheres_agree_with_whole_smoothing_at_several_tolerances() {
     let a = icosphere([0.0; 3], 1.0, 3);
     let b = icosphere([0.3, 0.2, 0.1], 1.0, 3);
-    for op in [BooleanOp::Union, BooleanOp::Intersection, BooleanOp::Difference] {
+    for op in [
+        BooleanOp::Union,
+        BooleanOp::Intersection,
+        BooleanOp::Difference,
+    ] {
         for tol in [1e-9, 1e-4, 1e-3, 2e-2] {
             let opts = SmoothOptions::new(tol);
             let (out, c) = boolean_triangles_with_contacts(&a, &b, op, tol).unwrap();
@@ -158,9 +166,17 @@ fn spheres_agree_with_whole_smoothing_at_several_tolerances() {
 #[test]
 fn no_contact_keeps_the_mesh_and_a_box_over_everything_is_whole_smoothing() {
     // The doc example of `smooth_mesh`: a sliver pair beside a corner.
-    let v = vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0], [1e-9, 0.0, 0.0]];
-    let mut facets: Vec<Facet> =
-        [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]].iter().map(|l| Facet::from_loop(l)).collect();
+    let v = vec![
+        [0.0; 3],
+        [1.0, 0.0, 0.0],
+        [0.0, 1.0, 0.0],
+        [0.0, 0.0, 1.0],
+        [1e-9, 0.0, 0.0],
+    ];
+    let mut facets: Vec<Facet> = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]]
+        .iter()
+        .map(|l| Facet::from_loop(l))
+        .collect();
     facets.push(Facet::from_loop(&[0, 4, 1]));
     facets.push(Facet::from_loop(&[1, 4, 0]));
     let mesh = PolygonMesh::new(v, facets);
@@ -174,11 +190,24 @@ fn no_contact_keeps_the_mesh_and_a_box_over_everything_is_whole_smoothing() {
         [[f64::NAN; 3], [f64::NAN; 3]],
         [[10.0; 3], [11.0; 3]],
     ];
-    assert_eq!(smooth_mesh_near(&mesh, &opts, &garbage).unwrap().shape, mesh);
+    assert_eq!(
+        smooth_mesh_near(&mesh, &opts, &garbage).unwrap().shape,
+        mesh
+    );
+    let whole = smooth_mesh(&mesh, &opts).unwrap();
     let everything = [[[-1.0; 3], [2.0; 3]]];
     let near = smooth_mesh_near(&mesh, &opts, &everything).unwrap();
-    let whole = smooth_mesh(&mesh, &opts).unwrap();
     assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+    // Infinite boxes, alone or among others, meet everything.
+    let inf = [
+        [[f64::NEG_INFINITY; 3], [f64::INFINITY; 3]],
+        [[0.5; 3], [0.6; 3]],
+        [[f64::NEG_INFINITY, 0.0, 0.0], [0.0, 0.0, 0.0]],
+    ];
+    for k in 1..=3 {
+        let near = smooth_mesh_near(&mesh, &opts, &inf[..k]).unwrap();
+        assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+    }
     // A box at the sliver alone: the region grows to what smoothing needs.
     let at_sliver = [[[0.0; 3], [1e-9, 0.0, 0.0]]];
     let near = smooth_mesh_near(&mesh, &opts, &at_sliver).unwrap();

@@ -26,7 +26,8 @@ use crate::mesh::run_with;
 use crate::mesh::triangles::triangulate_result;
 use crate::{SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use rayon::prelude::*;
-use std::collections::{HashMap, HashSet};
+use rustc_hash::{FxHashMap, FxHashSet};
+use std::collections::HashMap;
 use topology::{Facet, HalfEdge, Point3, PolygonMesh, TopologyError, TriangleMesh};
 
 /// How far from a contact box (in tolerances) a facet still belongs to
@@ -100,6 +101,83 @@ fn check_indices<F: Facets + ?Sized>(n: usize, facets: &F) -> Result<(), SmoothE
     }
 }
 
+/// The most cells of the occupancy grid along an axis.
+const GRID: f64 = 64.0;
+
+/// The most cell markings the occupancy grid may cost (beyond it every
+/// facet inside the contacts' box goes to the hierarchy).
+const GRID_WORK: usize = 1 << 24;
+
+/// A coarse grid over the contact boxes' bounding box marking the cells
+/// a contact box meets: a facet whose cells are all unmarked meets no
+/// contact box. Cells are numbered by a monotone rounding of the
+/// coordinates, so two boxes that meet have cell ranges that meet.
+struct Occupancy {
+    lo: Point3,
+    scale: [f64; 3],
+    dims: [usize; 3],
+    marked: Vec<bool>,
+}
+
+impl Occupancy {
+    /// The grid over `[lo, hi]` marked by `boxes`, or `None` when marking
+    /// would cost more than [`GRID_WORK`] or the box is not finite.
+    fn new(lo: Point3, hi: Point3, boxes: &[IdBox]) -> Option<Occupancy> {
+        let extent = (0..3).map(|c| hi[c] - lo[c]).fold(0.0, f64::max);
+        if !extent.is_finite() || !(0..3).all(|c| lo[c].is_finite() && hi[c].is_finite()) {
+            return None;
+        }
+        let cell = (extent / GRID).max(f64::MIN_POSITIVE);
+        let dims: [usize; 3] =
+            std::array::from_fn(|c| (((hi[c] - lo[c]) / cell).ceil() as usize).clamp(1, 64));
+        let scale: [f64; 3] = std::array::from_fn(|c| dims[c] as f64 / (hi[c] - lo[c]).max(cell));
+        let mut g = Occupancy {
+            lo,
+            scale,
+            dims,
+            marked: vec![false; dims[0] * dims[1] * dims[2]],
+        };
+        let mut work = 0usize;
+        for b in boxes {
+            let (a, z) = (g.cell(&b.lo), g.cell(&b.hi));
+            work += (0..3).map(|c| z[c] - a[c] + 1).product::<usize>();
+            if work > GRID_WORK {
+                return None;
+            }
+            for i in a[0]..=z[0] {
+                for j in a[1]..=z[1] {
+                    for k in a[2]..=z[2] {
+                        g.marked[(i * dims[1] + j) * dims[2] + k] = true;
+                    }
+                }
+            }
+        }
+        Some(g)
+    }
+
+    /// The cell of `p` (clamped into the grid).
+    fn cell(&self, p: &Point3) -> [usize; 3] {
+        std::array::from_fn(|c| {
+            let x = ((p[c] - self.lo[c]) * self.scale[c]).floor();
+            if x >= 0.0 {
+                (x as usize).min(self.dims[c] - 1)
+            } else {
+                0
+            }
+        })
+    }
+
+    /// Whether a marked cell meets the box `[lo, hi]`.
+    fn meets(&self, lo: &Point3, hi: &Point3) -> bool {
+        let (a, z) = (self.cell(lo), self.cell(hi));
+        (a[0]..=z[0]).any(|i| {
+            (a[1]..=z[1]).any(|j| {
+                (a[2]..=z[2]).any(|k| self.marked[(i * self.dims[1] + j) * self.dims[2] + k])
+            })
+        })
+    }
+}
+
 /// The facets whose box comes within `reach` of a contact box.
 fn near_facets<F: Facets + ?Sized>(
     pos: &[Point3],
@@ -120,7 +198,8 @@ fn near_facets<F: Facets + ?Sized>(
     if boxes.is_empty() {
         return vec![false; facets.count()];
     }
-    // The box around all contact boxes: most facets fail this test alone.
+    // The box around all contact boxes and a coarse grid in it: most
+    // facets fail these tests alone.
     let (mut all_lo, mut all_hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
     for b in &boxes {
         for c in 0..3 {
@@ -128,6 +207,7 @@ fn near_facets<F: Facets + ?Sized>(
             all_hi[c] = all_hi[c].max(b.hi[c]);
         }
     }
+    let grid = Occupancy::new(all_lo, all_hi, &boxes);
     let index = BoxIndex::new(boxes);
     (0..facets.count())
         .into_par_iter()
@@ -142,6 +222,9 @@ fn near_facets<F: Facets + ?Sized>(
                 }
             }
             if (0..3).any(|c| lo[c] > all_hi[c] || hi[c] < all_lo[c]) {
+                return false;
+            }
+            if grid.as_ref().is_some_and(|g| !g.meets(&lo, &hi)) {
                 return false;
             }
             let mut hit = false;
@@ -180,10 +263,13 @@ struct Cut {
 /// Cuts `region` out of the mesh.
 fn cut<F: Facets + ?Sized>(pos: &[Point3], facets: &F, region: &[bool]) -> Cut {
     let n = pos.len();
+    let inside: Vec<usize> = (0..facets.count())
+        .into_par_iter()
+        .filter(|&f| region[f])
+        .collect();
     let mut local = vec![u32::MAX; n];
-    let mut global = Vec::new();
-    let mut edges = HashSet::new();
-    for f in (0..facets.count()).filter(|&f| region[f]) {
+    let mut edges: FxHashSet<(u32, u32)> = FxHashSet::default();
+    for &f in &inside {
         for (s, e) in facets.half_edges(f) {
             edges.insert((s.min(e), s.max(e)));
             local[s as usize] = 0;
@@ -191,15 +277,16 @@ fn cut<F: Facets + ?Sized>(pos: &[Point3], facets: &F, region: &[bool]) -> Cut {
     }
     // Local indices in global order (the merge's "earlier vertex" order is
     // kept).
+    let mut global = Vec::new();
     for (v, l) in local.iter_mut().enumerate() {
         if *l == 0 {
             *l = global.len() as u32;
             global.push(v as u32);
         }
     }
-    let sub_facets: Vec<Facet> = (0..facets.count())
-        .filter(|&f| region[f])
-        .map(|f| Facet {
+    let sub_facets: Vec<Facet> = inside
+        .iter()
+        .map(|&f| Facet {
             half_edges: facets
                 .half_edges(f)
                 .map(|(s, e)| HalfEdge {
@@ -209,18 +296,16 @@ fn cut<F: Facets + ?Sized>(pos: &[Point3], facets: &F, region: &[bool]) -> Cut {
                 .collect(),
         })
         .collect();
-    let frozen: Vec<(u32, u32)> = (0..facets.count())
+    // The rest's facets that touch the region, then their half-edges on
+    // the region's edges.
+    let touching: Vec<usize> = (0..facets.count())
         .into_par_iter()
-        .filter(|&f| !region[f])
-        .flat_map_iter(|f| {
-            let edges = &edges;
-            let local = &local;
-            facets.half_edges(f).filter(move |&(s, e)| {
-                local[s as usize] != u32::MAX
-                    && local[e as usize] != u32::MAX
-                    && edges.contains(&(s.min(e), s.max(e)))
-            })
-        })
+        .filter(|&f| !region[f] && facets.starts(f).any(|v| local[v as usize] != u32::MAX))
+        .collect();
+    let frozen: Vec<(u32, u32)> = touching
+        .iter()
+        .flat_map(|&f| facets.half_edges(f))
+        .filter(|&(s, e)| edges.contains(&(s.min(e), s.max(e))))
         .collect();
     let sub = PolygonMesh::new(
         global.iter().map(|&v| pos[v as usize]).collect(),
@@ -263,7 +348,7 @@ fn place(out: &[Point3], cut: &Cut, next: &mut u32) -> Option<Vec<u32>> {
 /// of the frozen half-edges satisfy facet and shape boundary closure.
 fn fits(region: &[Vec<(u32, u32)>], frozen: &[(u32, u32)]) -> bool {
     // Compact indices for the check.
-    let mut ids: HashMap<u32, u32> = HashMap::new();
+    let mut ids: FxHashMap<u32, u32> = FxHashMap::default();
     let mut id = |v: u32| {
         let k = ids.len() as u32;
         *ids.entry(v).or_insert(k)
@@ -301,24 +386,34 @@ fn untouched(delta: f64) -> SmoothReport {
     }
 }
 
-/// The vertices of `pos` that `facets` (vertex lists of any kind) use,
-/// in their order, and the facets renumbered to them.
+/// The vertices of `pos` followed by `created` that `facets` (vertex
+/// lists of any kind) use, in their order, and the facets renumbered to
+/// them.
 fn compact_vertices<T: AsMut<[u32]> + AsRef<[u32]> + Send>(
-    pos: Vec<Point3>,
+    pos: &[Point3],
+    created: &[Point3],
     facets: &mut [T],
 ) -> Vec<Point3> {
-    let mut used = vec![false; pos.len()];
+    let all = |i: usize| {
+        if i < pos.len() {
+            pos[i]
+        } else {
+            created[i - pos.len()]
+        }
+    };
+    let total = pos.len() + created.len();
+    let mut used = vec![false; total];
     for f in facets.iter() {
         for &v in f.as_ref() {
             used[v as usize] = true;
         }
     }
-    let mut map = vec![u32::MAX; pos.len()];
-    let mut out = Vec::with_capacity(pos.len());
-    for (i, p) in pos.into_iter().enumerate() {
-        if used[i] {
+    let mut map = vec![u32::MAX; total];
+    let mut out = Vec::with_capacity(total);
+    for (i, &u) in used.iter().enumerate() {
+        if u {
             map[i] = out.len() as u32;
-            out.push(p);
+            out.push(all(i));
         }
     }
     facets
@@ -333,8 +428,9 @@ enum Outcome {
     Untouched(SmoothReport),
     /// The region, smoothed and fitting its cut.
     Smoothed {
-        /// Every vertex position: the input's, then created ones.
-        pos: Vec<Point3>,
+        /// The positions of the created vertices, whose global indices
+        /// follow the input's.
+        created: Vec<Point3>,
         /// The smoothed region's facets as half-edges, global indices.
         facets: Vec<Vec<(u32, u32)>>,
         /// Which input facets the region replaced.
@@ -360,8 +456,10 @@ fn smooth_region<F: Facets + ?Sized>(
     if !region.iter().any(|&r| r) {
         return Ok(Outcome::Untouched(untouched(delta)));
     }
-    for _ in 0..=MAX_GROWTHS {
-        region = widen(pos.len(), facets, &region);
+    for growth in 0..=MAX_GROWTHS {
+        if growth > 0 {
+            region = widen(pos.len(), facets, &region);
+        }
         let c = cut(pos, facets, &region);
         let (shape, mut report) = run_with(&c.sub, options, false)?;
         let (out_pos, out_facets): (Vec<Point3>, Vec<Vec<(u32, u32)>>) = if triangles {
@@ -395,13 +493,16 @@ fn smooth_region<F: Facets + ?Sized>(
             })
             .collect();
         if fits(&region_facets, &c.frozen) {
-            let mut all_pos = pos.to_vec();
-            all_pos.resize(next as usize, [0.0; 3]);
+            // An input vertex keeps its position (`place` matched it by
+            // position); created ones are new.
+            let mut created = vec![[0.0; 3]; next as usize - pos.len()];
             for (i, &g) in global.iter().enumerate() {
-                all_pos[g as usize] = out_pos[i];
+                if g as usize >= pos.len() {
+                    created[g as usize - pos.len()] = out_pos[i];
+                }
             }
             return Ok(Outcome::Smoothed {
-                pos: all_pos,
+                created,
                 facets: region_facets,
                 region,
                 report,
@@ -441,7 +542,7 @@ pub fn smooth_mesh_near(
         contacts,
         false,
     )?;
-    let (pos, region_out, region, report) = match outcome {
+    let (created, region_out, region, report) = match outcome {
         Outcome::Untouched(report) => {
             return Ok(Smoothed {
                 shape: mesh.clone(),
@@ -450,11 +551,11 @@ pub fn smooth_mesh_near(
         }
         Outcome::Reached => return crate::smooth_mesh(mesh, options),
         Outcome::Smoothed {
-            pos,
+            created,
             facets,
             region,
             report,
-        } => (pos, facets, region, report),
+        } => (created, facets, region, report),
     };
     let mut cycles: Vec<Vec<u32>> = mesh
         .facets
@@ -468,7 +569,7 @@ pub fn smooth_mesh_near(
             .iter()
             .map(|f| f.iter().flat_map(|&(s, e)| [s, e]).collect::<Vec<u32>>()),
     );
-    let vertices = compact_vertices(pos, &mut cycles);
+    let vertices = compact_vertices(&mesh.vertices, &created, &mut cycles);
     let facets = cycles
         .iter()
         .map(|c| Facet {
@@ -505,7 +606,7 @@ pub fn smooth_triangles_near(
         contacts,
         true,
     )?;
-    let (pos, region_out, region, report) = match outcome {
+    let (created, region_out, region, report) = match outcome {
         Outcome::Untouched(report) => {
             return Ok(Smoothed {
                 shape: mesh.clone(),
@@ -514,11 +615,11 @@ pub fn smooth_triangles_near(
         }
         Outcome::Reached => return crate::smooth_triangles(mesh, options),
         Outcome::Smoothed {
-            pos,
+            created,
             facets,
             region,
             report,
-        } => (pos, facets, region, report),
+        } => (created, facets, region, report),
     };
     let mut triangles: Vec<[u32; 3]> = mesh
         .triangles
@@ -528,7 +629,7 @@ pub fn smooth_triangles_near(
         .map(|(t, _)| *t)
         .collect();
     triangles.extend(region_out.iter().map(|f| [f[0].0, f[1].0, f[2].0]));
-    let vertices = compact_vertices(pos, &mut triangles);
+    let vertices = compact_vertices(&mesh.vertices, &created, &mut triangles);
     let shape = TriangleMesh::new(vertices, triangles);
     #[cfg(debug_assertions)]
     crate::sanity_check_triangles(&shape, options.tolerance)?;
