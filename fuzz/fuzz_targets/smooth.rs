@@ -2,12 +2,35 @@
 //! and of raw garbage-but-valid shapes never panics, refuses exactly the
 //! bad coordinates, keeps the closure constraints, never hits its safety
 //! budget, moves no vertex farther than its reported bound, and is
-//! idempotent (smoothing the result again changes nothing).
+//! idempotent (smoothing the result again changes nothing). Smoothing only
+//! near the Boolean's contacts keeps the closure constraints too, and
+//! where both operands need no smoothing it gives exactly what smoothing
+//! the whole result gives.
 #![no_main]
 
-use boolean_3d::{boolean_mesh, BooleanOp};
+use boolean_3d::{boolean_mesh, boolean_mesh_with_contacts, BooleanOp};
 use libfuzzer_sys::fuzz_target;
-use smooth::{smooth_mesh, smooth_polygon_set, smooth_triangles, SmoothError, SmoothOptions};
+use smooth::{
+    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, SmoothCounts,
+    SmoothError, SmoothOptions,
+};
+use topology::PolygonMesh;
+
+/// Facets as sorted lists of half-edges by coordinates, sorted.
+fn canonical(m: &PolygonMesh) -> Vec<Vec<[[u64; 3]; 2]>> {
+    let bits = |v: u32| m.vertices[v as usize].map(f64::to_bits);
+    let mut out: Vec<Vec<[[u64; 3]; 2]>> = m
+        .facets
+        .iter()
+        .map(|f| {
+            let mut k: Vec<_> = f.half_edges.iter().map(|h| [bits(h.start), bits(h.end)]).collect();
+            k.sort_unstable();
+            k
+        })
+        .collect();
+    out.sort_unstable();
+    out
+}
 use umbra_fuzz::SmoothInput;
 
 fn tolerance(size: f64, exp: u8) -> f64 {
@@ -28,9 +51,25 @@ fuzz_target!(|input: SmoothInput| {
         1 => BooleanOp::Intersection,
         _ => BooleanOp::Difference,
     };
+    let size = a.vertices.iter().chain(&b.vertices).flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    let tol = tolerance(size, input.tolerance_exp);
+    let opts = SmoothOptions::new(tol);
+    // Near the contacts: always closed; where both operands need no
+    // smoothing, the same facets as smoothing the whole result.
+    if let Ok((out, contacts)) = boolean_mesh_with_contacts(&a, &b, op, tol) {
+        if let Ok(near) = smooth_mesh_near(&out.mesh, &opts, &contacts.boxes) {
+            near.shape.check_topology().expect("near smoothing not closed");
+            assert!(near.report.max_displacement <= near.report.distortion_bound);
+            let clean = |m: &PolygonMesh| {
+                smooth_mesh(m, &opts).is_ok_and(|s| s.report.counts == SmoothCounts::default())
+            };
+            if clean(&a) && clean(&b) {
+                let whole = smooth_mesh(&out.mesh, &opts).expect("whole smoothing");
+                assert_eq!(canonical(&near.shape), canonical(&whole.shape), "near != whole");
+            }
+        }
+    }
     let mesh = boolean_mesh(&a, &b, op).map(|o| o.mesh).unwrap_or(a);
-    let size = mesh.vertices.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
-    let opts = SmoothOptions::new(tolerance(size, input.tolerance_exp));
     match smooth_mesh(&mesh, &opts) {
         Ok(out) => {
             assert!(mesh.validate_coordinates().is_ok(), "bad coordinates accepted");
