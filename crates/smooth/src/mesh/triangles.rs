@@ -7,8 +7,11 @@
 use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
 use crate::{SmoothError, SmoothOptions, SmoothReport, Smoothed};
+use quality::{crackable, triangulate_loop};
 use std::collections::{HashMap, HashSet};
 use topology::{triangulate_facet, HalfEdge, Point3, PolygonMesh, TriangleMesh};
+
+mod quality;
 
 /// Twice the signed area of the 2D triangle `a b c`.
 fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
@@ -65,6 +68,17 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
         .collect();
     // `u < v` where it is called.
     let on_boundary = |u: u32, v: u32| boundary_edges.contains(&(u, v));
+    let mut corners: Vec<u32> = boundary.iter().map(|h| h.start).collect();
+    corners.sort_unstable();
+    corners.dedup();
+    // Whether a new internal edge `p q` would pass within `delta` of a
+    // vertex of the facet (a second run would crack it there).
+    let crackable_edge = |p: u32, q: u32| {
+        let (a, b) = (pos[p as usize], pos[q as usize]);
+        corners
+            .iter()
+            .any(|&w| w != p && w != q && crackable(pos[w as usize], a, b, delta))
+    };
     let cap = 4 * tris.len() * tris.len();
     let mut flips = 0;
     // Directed half-edge -> (triangle, corner of its start).
@@ -107,6 +121,9 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
                     after && (near_segment(pp, pu, pv, delta) || near_segment(pq, pu, pv, delta));
                 if !sliver && (!convex || !in_circle(pu, pv, pp, pq)) {
                     continue;
+                }
+                if crackable_edge(p, q) {
+                    continue; // the flip would make what it removes
                 }
                 for tri in [tris[t1], tris[t2]] {
                     for k in 0..3 {
@@ -204,7 +221,9 @@ pub(crate) fn triangulate_result(
         pairs.clear();
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
         let first = triangles.len();
-        triangulate_facet(&poly.vertices, &pairs, &mut triangles);
+        if !triangulate_loop(&poly.vertices, h, tolerance, &mut triangles) {
+            triangulate_facet(&poly.vertices, &pairs, &mut triangles);
+        }
         flip_to_delaunay(&poly.vertices, h, &mut triangles[first..], tolerance);
         report.counts.facets_retriangulated += 1;
     }
