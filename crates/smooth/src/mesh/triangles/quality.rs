@@ -50,9 +50,9 @@ fn single_loop(boundary: &[HalfEdge]) -> Option<Vec<u32>> {
 }
 
 /// The cost of a (partial) triangulation, compared lexicographically:
-/// twice the area of its triangles facing against the facet (the fold),
-/// the number of its internal edges a second run would crack, the total
-/// length of its internal edges.
+/// twice the area of its triangles facing against the facet in its
+/// best-fit plane (the fold), the number of its internal edges a second
+/// run would crack, the total length of its internal edges.
 #[derive(Clone, Copy, PartialEq, PartialOrd)]
 struct Cost(f64, u32, f64);
 
@@ -76,8 +76,10 @@ impl std::ops::Add for Cost {
 /// plane (for a facet whose projection is simple that is zero: no fold;
 /// otherwise the invalid region is extended least, as section 4.8 asks);
 /// the number of internal edges passing within `delta` of a vertex of
-/// the facet (`crackable`); their total length. Non-finite costs never
-/// win, so the result is always complete.
+/// the facet (`crackable`); their total length (the minimum-weight
+/// triangulation, which favours short internal edges). A NaN fold
+/// (coordinates whose products overflow) counts as infinite; the result
+/// is always complete.
 pub(crate) fn triangulate_loop(
     pos: &[Point3],
     boundary: &[HalfEdge],
@@ -112,7 +114,15 @@ pub(crate) fn triangulate_loop(
     let fold = |i: usize, k: usize, j: usize| {
         let (a, b, c) = (p2[i], p2[k], p2[j]);
         let o = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
-        Cost(if o < 0.0 { -o } else { 0.0 }, 0, 0.0)
+        // A NaN (products of huge coordinates overflowing) never wins.
+        let folded = if o.is_nan() {
+            f64::INFINITY
+        } else if o < 0.0 {
+            -o
+        } else {
+            0.0
+        };
+        Cost(folded, 0, 0.0)
     };
     let mut cost = vec![Cost(0.0, 0, 0.0); n * n];
     let mut split = vec![0u32; n * n];
