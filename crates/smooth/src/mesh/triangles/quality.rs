@@ -253,4 +253,121 @@ mod tests {
         ));
         assert!(out.is_empty());
     }
+
+    /// A convex polygon of `corners` (angles on a circle of radius `r`)
+    /// with `extra[e]` fractions of a point inserted on edge `e` (points a
+    /// cracking would put there), embedded in the plane spanned by `e1`,
+    /// `e2` through `o`: positions and the loop's half-edges.
+    fn cap(
+        angles: &[f64],
+        extra: &[Vec<f64>],
+        r: f64,
+        o: Point3,
+        e1: Point3,
+        e2: Point3,
+    ) -> (Vec<Point3>, Vec<HalfEdge>) {
+        let at = |x: f64, y: f64| {
+            [
+                o[0] + x * e1[0] + y * e2[0],
+                o[1] + x * e1[1] + y * e2[1],
+                o[2] + x * e1[2] + y * e2[2],
+            ]
+        };
+        let k = angles.len();
+        let mut pos = Vec::new();
+        for i in 0..k {
+            let (a, b) = (angles[i], angles[(i + 1) % k]);
+            let (ax, ay) = (r * a.cos(), r * a.sin());
+            let (bx, by) = (r * b.cos(), r * b.sin());
+            pos.push(at(ax, ay));
+            for &t in &extra[i] {
+                pos.push(at(ax + t * (bx - ax), ay + t * (by - ay)));
+            }
+        }
+        let ids: Vec<u32> = (0..pos.len() as u32).collect();
+        (pos, loop_of(&ids))
+    }
+
+    proptest::proptest! {
+        #[test]
+        fn cut_caps_triangulate_without_folds_or_crackable_edges(
+            gaps in proptest::collection::vec(0.3f64..1.5, 3..8),
+            extra in proptest::collection::vec(
+                proptest::collection::btree_set(1u32..20, 0..4), 8),
+            r in 0.5f64..200.0,
+            o in proptest::array::uniform3(-100.0f64..100.0),
+            dir in proptest::array::uniform3(-1.0f64..1.0),
+        ) {
+            // Corner angles (the gaps scaled to a full turn: convex).
+            let total: f64 = gaps.iter().sum();
+            let mut angles = Vec::new();
+            let mut a = 0.0;
+            for g in &gaps {
+                angles.push(a);
+                a += g / total * std::f64::consts::TAU;
+            }
+            let extra: Vec<Vec<f64>> = extra
+                .iter()
+                .map(|s| s.iter().map(|&i| f64::from(i) / 20.0).collect())
+                .collect();
+            // An orthonormal pair spanning a random plane.
+            let n = dir;
+            let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
+            proptest::prop_assume!(len > 0.1);
+            let n = n.map(|x| x / len);
+            let t = if n[0].abs() < 0.5 { [1.0, 0.0, 0.0] } else { [0.0, 1.0, 0.0] };
+            let e1 = crate::mesh::geom::cross(t, n);
+            let l1 = crate::mesh::geom::dot(e1, e1).sqrt();
+            let e1 = e1.map(|x| x / l1);
+            let e2 = crate::mesh::geom::cross(n, e1);
+            let (pos, boundary) = cap(&angles, &extra, r, o, e1, e2);
+            let delta = 1e-9 * r;
+            let mut out = Vec::new();
+            proptest::prop_assert!(triangulate_loop(&pos, &boundary, delta, &mut out)
+                || pos.len() == 3);
+            if pos.len() == 3 {
+                return Ok(());
+            }
+            proptest::prop_assert_eq!(out.len(), pos.len() - 2);
+            // Closure: the triangles' half-edges are the loop's plus both
+            // half-edges of every internal edge.
+            let mut balance = std::collections::HashMap::new();
+            for t in &out {
+                for k in 0..3 {
+                    *balance.entry((t[k], t[(k + 1) % 3])).or_insert(0i32) += 1;
+                }
+            }
+            for h in &boundary {
+                *balance.entry((h.start, h.end)).or_insert(0) -= 1;
+            }
+            for (&(a, b), &c) in &balance {
+                let back = balance.get(&(b, a)).copied().unwrap_or(0);
+                proptest::prop_assert!(c == 0 || (c == 1 && back == 1),
+                    "unbalanced {a}->{b}");
+            }
+            // No fold: every triangle faces the facet's way in 3D.
+            for t in &out {
+                let [a, b, c] = t.map(|v| pos[v as usize]);
+                let m = crate::mesh::geom::cross(
+                    crate::mesh::geom::sub(b, a),
+                    crate::mesh::geom::sub(c, a),
+                );
+                proptest::prop_assert!(crate::mesh::geom::dot(m, n) > 0.0, "fold {t:?}");
+            }
+            // No internal edge a second smoothing would crack.
+            for t in &out {
+                for k in 0..3 {
+                    let (a, b) = (t[k], t[(k + 1) % 3]);
+                    for w in 0..pos.len() as u32 {
+                        if w != a && w != b {
+                            proptest::prop_assert!(
+                                !crackable(pos[w as usize], pos[a as usize], pos[b as usize], delta),
+                                "edge {a}-{b} passes {w}"
+                            );
+                        }
+                    }
+                }
+            }
+        }
+    }
 }
