@@ -1,8 +1,11 @@
 //! The triangle-mesh variant of 3D smoothing: the triangles are smoothed
 //! as a polygon mesh and every facet smoothing changed (no longer one
 //! loop of three half-edges) is re-triangulated by internal edges only,
-//! by the rules of section 4.8 (`topology::triangulate_facet`), so the
-//! output stays a triangle mesh satisfying shape boundary closure.
+//! by the rules of section 4.8, so the output stays a triangle mesh
+//! satisfying shape boundary closure: a simple loop by the exact
+//! recurrence of `quality` (no fold, no internal edge a second run would
+//! crack, wherever the facet allows), anything else by ear clipping
+//! (`topology::triangulate_facet`); then flips.
 
 use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
@@ -52,8 +55,10 @@ fn near_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2], delta: f64) -> bool {
 /// replaces the internal edge of the quadrilateral `u q v p` by `p q`: the
 /// quadrilateral's four half-edges stay and the internal edge is again a
 /// half-edge pair, so closure holds whatever the geometry. Only strictly
-/// convex quadrilaterals are flipped; the number of flips is capped (the
-/// safety net against rounding cycles).
+/// convex quadrilaterals are flipped, never to a new internal edge that
+/// passes within `delta` of a vertex of the facet (which a second run
+/// would crack); the number of flips is capped (the safety net against
+/// rounding cycles).
 fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]], delta: f64) {
     if tris.len() < 2 {
         return;
@@ -198,8 +203,9 @@ pub fn smooth_triangles(
 }
 
 /// The triangle mesh of a smoothed polygon mesh: one-triangle facets
-/// kept, every other facet re-triangulated (section 4.8) and improved by
-/// flips, then degenerate and opposite triangle pairs removed and unused
+/// kept, every other facet re-triangulated (section 4.8: a simple loop of
+/// at most `quality::MAX_VERTICES` vertices by `triangulate_loop`, else
+/// by ear clipping) and improved by flips, then degenerate and opposite triangle pairs removed and unused
 /// vertices dropped; the counts go into `report`.
 pub(crate) fn triangulate_result(
     poly: &PolygonMesh,
