@@ -370,4 +370,38 @@ mod tests {
             }
         }
     }
+
+    proptest::proptest! {
+        #[test]
+        fn garbage_loops_triangulate_completely_and_closed(
+            pts in proptest::collection::vec(
+                proptest::array::uniform3(proptest::prop_oneof![
+                    proptest::strategy::Just(0.0f64), proptest::strategy::Just(1.0), -1e3f64..1e3, -1e-9f64..1e-9
+                ]), 4..40),
+            delta in proptest::prop_oneof![proptest::strategy::Just(0.0f64), 1e-12f64..1.0],
+        ) {
+            let ids: Vec<u32> = (0..pts.len() as u32).collect();
+            let boundary = loop_of(&ids);
+            let mut out = Vec::new();
+            if !triangulate_loop(&pts, &boundary, delta, &mut out) {
+                proptest::prop_assert!(out.is_empty());
+                return Ok(());
+            }
+            proptest::prop_assert_eq!(out.len(), pts.len() - 2);
+            let mut balance = std::collections::HashMap::new();
+            for t in &out {
+                proptest::prop_assert!(t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+                for k in 0..3 {
+                    *balance.entry((t[k], t[(k + 1) % 3])).or_insert(0i32) += 1;
+                }
+            }
+            for h in &boundary {
+                *balance.entry((h.start, h.end)).or_insert(0) -= 1;
+            }
+            for (&(a, b), &c) in &balance {
+                let back = balance.get(&(b, a)).copied().unwrap_or(0);
+                proptest::prop_assert!(c == 0 || (c == 1 && back == 1), "unbalanced {a}->{b}");
+            }
+        }
+    }
 }
