@@ -105,15 +105,17 @@ fn raw_check_clean(m: &PolygonMesh) -> bool {
 }
 
 /// Runs `a op b` in `variant`, smooths at the default tolerance and
-/// returns (raw pairs, smoothed pairs); asserts validity, the variant's
-/// facet form and the volume bound. In the polygon variant the smoothed
-/// count leaves out the crease pairs of [`pairs_not_along_a_crease`].
+/// returns (raw pairs, smoothed pairs, whether smoothing the smoothed
+/// result again changes nothing); asserts validity, the variant's facet
+/// form and the volume bound, and in the polygon variant idempotence when
+/// the inputs are clean. In the polygon variant the smoothed count leaves
+/// out the crease pairs of [`pairs_not_along_a_crease`].
 fn combine_and_smooth(
     a: &PolygonMesh,
     b: &PolygonMesh,
     op: BooleanOp,
     variant: MeshVariant,
-) -> (usize, usize) {
+) -> (usize, usize, bool) {
     let raw = boolean_solid(a, b, op, variant).unwrap().mesh;
     let raw_check = check_mesh(&raw);
     let tol = default_mesh_tolerance(a).max(default_mesh_tolerance(b));
@@ -131,15 +133,11 @@ fn combine_and_smooth(
     assert!(out.report.max_displacement <= out.report.distortion_bound);
     // Smoothing the smoothed result again (`umbra smooth` of a smoothed
     // Boolean output of clean inputs) changes nothing in the polygon
-    // variant. Open: in the triangle variant, re-triangulation's thin
-    // triangles can crack again (vertices are even created on the nut).
+    // variant; the triangle variant's callers say where they expect it.
+    let again = smooth_solid(s, variant, &SmoothOptions::new(tol)).unwrap();
+    let idempotent = &again.shape == s;
     if variant == MeshVariant::PolygonMesh && raw_check_clean(a) && raw_check_clean(b) {
-        let again = smooth_solid(s, variant, &SmoothOptions::new(tol)).unwrap();
-        assert_eq!(
-            &again.shape, s,
-            "second run changed {:?}",
-            again.report.counts
-        );
+        assert!(idempotent, "second run changed {:?}", again.report.counts);
     }
     let smoothed = check.self_intersecting_facet_pairs.unwrap();
     let smoothed = if variant == MeshVariant::PolygonMesh && smoothed > 0 {
@@ -147,7 +145,11 @@ fn combine_and_smooth(
     } else {
         smoothed
     };
-    (raw_check.self_intersecting_facet_pairs.unwrap(), smoothed)
+    (
+        raw_check.self_intersecting_facet_pairs.unwrap(),
+        smoothed,
+        idempotent,
+    )
 }
 
 #[test]
@@ -164,9 +166,25 @@ fn hex_nut_with_a_rotated_copy_has_no_self_intersections_after_smoothing() {
         assert_eq!(check_mesh(&other).self_intersecting_facet_pairs, Some(0));
         for op in BooleanOp::BASIC {
             for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
-                let (raw, smoothed) = combine_and_smooth(&nut, &other, op, variant);
-                report.push(format!("{deg} {op:?} {variant:?}: {raw} -> {smoothed}"));
+                let (raw, smoothed, idempotent) = combine_and_smooth(&nut, &other, op, variant);
+                report.push(format!(
+                    "{deg} {op:?} {variant:?}: {raw} -> {smoothed}, idempotent {idempotent}"
+                ));
                 assert_eq!(smoothed, 0, "{}", report.join("\n"));
+                // The triangle variant: a second run changes nothing except
+                // where vertex clusters a few tolerances wide leave a facet
+                // (a needle whose straight edge carries crack vertices, its
+                // apex nearly on their line) of which every triangulation
+                // by internal edges has an internal edge within the
+                // tolerance of a vertex: the rotation by 3 degrees about
+                // the nut's centre (its copy's vertices near the axis land
+                // within a few tolerances of the nut's) in intersection and
+                // difference, and the 0.5 degree difference.
+                let cluster = (deg == 3.0 && op != BooleanOp::Union)
+                    || (deg == 0.5 && op == BooleanOp::Difference);
+                if variant == MeshVariant::TriangleMesh && !cluster {
+                    assert!(idempotent, "{}", report.join("\n"));
+                }
             }
         }
     }
@@ -180,8 +198,9 @@ fn sphere_with_moved_copies_has_no_self_intersections_after_smoothing() {
         let other = moved(&sphere, deg, shift);
         for op in BooleanOp::BASIC {
             for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
-                let (_, smoothed) = combine_and_smooth(&sphere, &other, op, variant);
+                let (_, smoothed, idempotent) = combine_and_smooth(&sphere, &other, op, variant);
                 assert_eq!(smoothed, 0, "{op:?} {variant:?} shift {shift:?}");
+                assert!(idempotent, "{op:?} {variant:?} shift {shift:?}: second run");
             }
         }
     }

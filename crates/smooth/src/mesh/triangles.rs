@@ -1,14 +1,20 @@
 //! The triangle-mesh variant of 3D smoothing: the triangles are smoothed
 //! as a polygon mesh and every facet smoothing changed (no longer one
 //! loop of three half-edges) is re-triangulated by internal edges only,
-//! by the rules of section 4.8 (`topology::triangulate_facet`), so the
-//! output stays a triangle mesh satisfying shape boundary closure.
+//! by the rules of section 4.8, so the output stays a triangle mesh
+//! satisfying shape boundary closure: a simple loop by the exact
+//! recurrence of `quality` (no fold, no internal edge a second run would
+//! crack, wherever the facet allows), anything else by ear clipping
+//! (`topology::triangulate_facet`); then flips.
 
 use crate::mesh::plane::best_fit_plane;
 use crate::mesh::run;
 use crate::{SmoothError, SmoothOptions, SmoothReport, Smoothed};
+use quality::{crackable, triangulate_loop};
 use std::collections::{HashMap, HashSet};
 use topology::{triangulate_facet, HalfEdge, Point3, PolygonMesh, TriangleMesh};
+
+mod quality;
 
 /// Twice the signed area of the 2D triangle `a b c`.
 fn orient(a: [f64; 2], b: [f64; 2], c: [f64; 2]) -> f64 {
@@ -49,8 +55,10 @@ fn near_segment(p: [f64; 2], a: [f64; 2], b: [f64; 2], delta: f64) -> bool {
 /// replaces the internal edge of the quadrilateral `u q v p` by `p q`: the
 /// quadrilateral's four half-edges stay and the internal edge is again a
 /// half-edge pair, so closure holds whatever the geometry. Only strictly
-/// convex quadrilaterals are flipped; the number of flips is capped (the
-/// safety net against rounding cycles).
+/// convex quadrilaterals are flipped, never to a new internal edge that
+/// passes within `delta` of a vertex of the facet (which a second run
+/// would crack); the number of flips is capped (the safety net against
+/// rounding cycles).
 fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]], delta: f64) {
     if tris.len() < 2 {
         return;
@@ -65,6 +73,17 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
         .collect();
     // `u < v` where it is called.
     let on_boundary = |u: u32, v: u32| boundary_edges.contains(&(u, v));
+    let mut corners: Vec<u32> = boundary.iter().map(|h| h.start).collect();
+    corners.sort_unstable();
+    corners.dedup();
+    // Whether a new internal edge `p q` would pass within `delta` of a
+    // vertex of the facet (a second run would crack it there).
+    let crackable_edge = |p: u32, q: u32| {
+        let (a, b) = (pos[p as usize], pos[q as usize]);
+        corners
+            .iter()
+            .any(|&w| w != p && w != q && crackable(pos[w as usize], a, b, delta))
+    };
     let cap = 4 * tris.len() * tris.len();
     let mut flips = 0;
     // Directed half-edge -> (triangle, corner of its start).
@@ -107,6 +126,9 @@ fn flip_to_delaunay(pos: &[Point3], boundary: &[HalfEdge], tris: &mut [[u32; 3]]
                     after && (near_segment(pp, pu, pv, delta) || near_segment(pq, pu, pv, delta));
                 if !sliver && (!convex || !in_circle(pu, pv, pp, pq)) {
                     continue;
+                }
+                if crackable_edge(p, q) {
+                    continue; // the flip would make what it removes
                 }
                 for tri in [tris[t1], tris[t2]] {
                     for k in 0..3 {
@@ -181,8 +203,9 @@ pub fn smooth_triangles(
 }
 
 /// The triangle mesh of a smoothed polygon mesh: one-triangle facets
-/// kept, every other facet re-triangulated (section 4.8) and improved by
-/// flips, then degenerate and opposite triangle pairs removed and unused
+/// kept, every other facet re-triangulated (section 4.8: a simple loop of
+/// at most `quality::MAX_VERTICES` vertices by `triangulate_loop`, else
+/// by ear clipping) and improved by flips, then degenerate and opposite triangle pairs removed and unused
 /// vertices dropped; the counts go into `report`.
 pub(crate) fn triangulate_result(
     poly: &PolygonMesh,
@@ -204,7 +227,9 @@ pub(crate) fn triangulate_result(
         pairs.clear();
         pairs.extend(h.iter().map(|h| (h.start, h.end)));
         let first = triangles.len();
-        triangulate_facet(&poly.vertices, &pairs, &mut triangles);
+        if !triangulate_loop(&poly.vertices, h, tolerance, &mut triangles) {
+            triangulate_facet(&poly.vertices, &pairs, &mut triangles);
+        }
         flip_to_delaunay(&poly.vertices, h, &mut triangles[first..], tolerance);
         report.counts.facets_retriangulated += 1;
     }
