@@ -72,12 +72,41 @@ fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
     }
 }
 
+/// For a triangle whose three vertices share one coordinate exactly (an
+/// axis-aligned triangle, the common case of CAD and CSG inputs), the
+/// first such axis and the triangle's exact orientation in that
+/// coordinate plane; `None` otherwise. Computed once per triangle, so that
+/// [`mergeable`] decides an edge between two such triangles by comparing
+/// their entries.
+fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
+    let (a, b, c) = (
+        flat.pos[flat.he[3 * t as usize].0 as usize],
+        flat.pos[flat.he[3 * t as usize + 1].0 as usize],
+        flat.pos[flat.he[3 * t as usize + 2].0 as usize],
+    );
+    let axis = (0..3).find(|&k| a[k] == b[k] && a[k] == c[k])?;
+    let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
+    Some((axis as u8, o))
+}
+
 /// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
-/// triangle mesh's flat form may be merged across their edge.
-fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
+/// triangle mesh's flat form may be merged across their edge; `axes` holds
+/// [`flat_axis`] of every triangle.
+fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32) -> bool {
     let (t1, t2) = (h1 / 3, h2 / 3);
     if t1 == t2 {
         return false;
+    }
+    // Both triangles constant on the same first axis `k`: the four points
+    // share coordinate `k` (the edge's two vertices are common), `k` is
+    // the first axis they all share, and the orientations in that plane
+    // are the triangles' own (cyclic rotations keep the exact sign), so
+    // the general test below reduces to this comparison (a zero
+    // orientation is a degenerate triangle, never merged).
+    if let (Some((k1, o1)), Some((k2, o2))) = (axes[t1 as usize], axes[t2 as usize]) {
+        if k1 == k2 {
+            return o1 != Ordering::Equal && o1 == o2;
+        }
     }
     let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
     let (u, v) = flat.he[h1 as usize];
@@ -128,6 +157,11 @@ impl Merged {
     pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
         let n_he = flat.he.len();
         let n_t = n_he / 3;
+        let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|t| flat_axis(&flat, t))
+            .collect();
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
@@ -142,7 +176,7 @@ impl Merged {
                 if s1 == e1 || s1 != e2 || e1 != s2 {
                     return None;
                 }
-                mergeable(&flat, h1, h2).then_some((h1, h2))
+                mergeable(&flat, &axes, h1, h2).then_some((h1, h2))
             })
             .collect();
         let mut partner = vec![NONE; n_he];

@@ -107,7 +107,10 @@ pub use model::*;
 pub use nary::{
     boolean_solids, difference_all_solids, union_all_solids, SolidsError, SolidsOutput,
 };
-pub use ops::{as_triangle_mesh, boolean_solid, MeshVariant, SolidOutput, Via};
+pub use ops::{
+    as_triangle_mesh, boolean_solid, boolean_solid_triangles, MeshVariant, SolidOutput,
+    TriangleSolidOutput, Via,
+};
 #[cfg(feature = "render")]
 pub use render::*;
 pub use report::{
