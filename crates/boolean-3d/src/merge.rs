@@ -97,16 +97,16 @@ fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32)
     if t1 == t2 {
         return false;
     }
-    // Both triangles constant on the same first axis `k`: the four points
-    // share coordinate `k` (the edge's two vertices are common), `k` is
-    // the first axis they all share, and the orientations in that plane
-    // are the triangles' own (cyclic rotations keep the exact sign), so
-    // the general test below reduces to this comparison (a zero
-    // orientation is a degenerate triangle, never merged).
+    // Both triangles constant on one axis each. The same first axis `k`:
+    // the four points share coordinate `k` (the edge's two vertices are
+    // common), `k` is the first axis they all share, and the orientations
+    // in that plane are the triangles' own (cyclic rotations keep the
+    // exact sign), so the general test below reduces to this comparison
+    // (a zero orientation is a degenerate triangle, never merged).
+    // Different axes: the triangles are coplanar only if one is constant
+    // on two axes, i.e. degenerate, and the general test says no.
     if let (Some((k1, o1)), Some((k2, o2))) = (axes[t1 as usize], axes[t2 as usize]) {
-        if k1 == k2 {
-            return o1 != Ordering::Equal && o1 == o2;
-        }
+        return k1 == k2 && o1 != Ordering::Equal && o1 == o2;
     }
     let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
     let (u, v) = flat.he[h1 as usize];
