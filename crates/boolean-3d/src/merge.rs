@@ -32,6 +32,9 @@ pub(crate) struct Merged {
     pub tri_off: Vec<u32>,
     /// Input triangle indices grouped by facet.
     pub tris: Vec<u32>,
+    /// For every input triangle, its place in its facet's list
+    /// (`tris[tri_off[f] + tri_pos[t]] == t`).
+    pub tri_pos: Vec<u32>,
     /// For every input half-edge `3t + k`, the half-edge it was merged
     /// with, or [`NONE`].
     pub partner: Vec<u32>,
@@ -213,13 +216,16 @@ impl Merged {
         }
         let mut fill = tri_off.clone();
         let mut tris = vec![0u32; n_t];
+        let mut tri_pos = vec![0u32; n_t];
         for (t, &f) in facet_of.iter().enumerate() {
             tris[fill[f as usize] as usize] = t as u32;
+            tri_pos[t] = fill[f as usize] - tri_off[f as usize];
             fill[f as usize] += 1;
         }
         let merged = Merged {
             tri_off,
             tris,
+            tri_pos,
             partner,
             any: !pairs.is_empty(),
         };

@@ -198,9 +198,10 @@ fn facet(
         triangulate_facet(vertices, part, out);
         return;
     }
-    // `tris` is in input order, so a triangle's place is found by binary
-    // search.
-    let kept = |t: u32| tris.binary_search(&t).is_ok_and(|i| s.kept[i]);
+    // A merged partner lies in the same merged facet: its place in `tris`
+    // is `tri_pos`.
+    let tri_pos = &src.merged.tri_pos;
+    let kept = |t: u32| s.kept[tri_pos[t as usize] as usize];
     // The residual as signed edges (lower id, higher id, +1 for lower to
     // higher): F' plus the reversed boundary of the kept triangles, where
     // pairs between two kept triangles are skipped (they cancel).
