@@ -234,6 +234,7 @@ impl Merged {
         }
         let (tri_off, tris, partner) = (&merged.tri_off, &merged.tris, &merged.partner);
         let mut he = Vec::with_capacity(n_he - 2 * pairs.len());
+        let mut old = Vec::with_capacity(n_he - 2 * pairs.len());
         let mut facet_off = Vec::with_capacity(n_f as usize + 1);
         facet_off.push(0u32);
         for f in 0..n_f as usize {
@@ -241,13 +242,32 @@ impl Merged {
                 for h in 3 * t..3 * t + 3 {
                     if partner[h as usize] == NONE {
                         he.push(flat.he[h as usize]);
+                        old.push(h);
                     }
                 }
             }
             facet_off.push(he.len() as u32);
         }
-        let (he, facet_off) = drop_straight_vertices(flat.pos, he, facet_off);
-        let out = Flat::from_merged(flat.pos, he, facet_off)?;
+        let (he, facet_off, dropped) = drop_straight_vertices(flat.pos, he, facet_off);
+        // Without dropped vertices the merged facets hold whole edges of
+        // the triangles (a merged edge loses both of its half-edges), and
+        // their edge grouping follows from the triangles' own.
+        let derived = if dropped {
+            Err((he, facet_off))
+        } else {
+            Flat::from_subset(&flat, he, facet_off, &old)
+        };
+        let out = match derived {
+            Ok(d) => {
+                debug_assert!(
+                    Flat::from_merged(flat.pos, d.he.clone(), d.facet_off.clone()).as_ref()
+                        == Ok(&d),
+                    "derived edge grouping differs"
+                );
+                d
+            }
+            Err((he, facet_off)) => Flat::from_merged(flat.pos, he, facet_off)?,
+        };
         Ok((merged, out))
     }
 
@@ -279,12 +299,13 @@ fn strictly_between(u: Point3, v: Point3, w: Point3) -> bool {
 /// gains `u->w, w->u` (shape boundary closure), so the constraints of
 /// section 4.2 hold whatever the test decides; the exact test keeps the
 /// geometry (the facets' regions are unchanged). Runs of such vertices on
-/// one segment go one after another, in vertex order.
+/// one segment go one after another, in vertex order. Also returns whether
+/// any vertex was dropped.
 fn drop_straight_vertices(
     pos: &[Point3],
     mut he: Vec<(u32, u32)>,
     facet_off: Vec<u32>,
-) -> (Vec<(u32, u32)>, Vec<u32>) {
+) -> (Vec<(u32, u32)>, Vec<u32>, bool) {
     let n_v = pos.len();
     // Half-edges starting and ending at each vertex (saturating at 3).
     let mut starts = vec![0u8; n_v];
@@ -295,7 +316,7 @@ fn drop_straight_vertices(
     }
     let candidate = |v: usize| starts[v] == 2 && ends[v] == 2;
     if !(0..n_v).any(candidate) {
-        return (he, facet_off);
+        return (he, facet_off, false);
     }
     let mut facet = vec![0u32; he.len()];
     for f in 0..facet_off.len() - 1 {
@@ -369,7 +390,7 @@ fn drop_straight_vertices(
         }
     }
     if !dropped {
-        return (he, facet_off);
+        return (he, facet_off, false);
     }
     let mut kept = Vec::with_capacity(he.len());
     let mut off = Vec::with_capacity(facet_off.len());
@@ -382,7 +403,7 @@ fn drop_straight_vertices(
         }
         off.push(kept.len() as u32);
     }
-    (kept, off)
+    (kept, off, true)
 }
 
 #[cfg(test)]
@@ -416,6 +437,39 @@ mod tests {
             [3, 0, 4],
         ];
         merged(v, t)
+    }
+
+    #[test]
+    fn the_derived_edge_grouping_is_the_built_one() {
+        // Two exactly coplanar pairs (the base, and a side split in two)
+        // merge and no vertex is dropped: the merged facets' grouping is
+        // derived from the triangles', and must equal a fresh build.
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.5, 0.5, 1.0],
+        ];
+        let t = vec![
+            [0, 2, 1],
+            [0, 3, 2],
+            [0, 1, 4],
+            [1, 2, 4],
+            [2, 3, 4],
+            [3, 0, 4],
+        ];
+        let m = TriangleMesh::new(v, t);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let (merge, out) = Merged::new(flat).unwrap();
+        assert!(merge.any);
+        let built = Flat::from_merged(&m.vertices, out.he.clone(), out.facet_off.clone());
+        assert_eq!(built.as_ref(), Ok(&out));
+        // A parent whose edge would keep one half-edge of two is refused.
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let old: Vec<u32> = (1..18).collect();
+        let he: Vec<(u32, u32)> = old.iter().map(|&h| flat.he[h as usize]).collect();
+        assert!(Flat::from_subset(&flat, he, vec![0, 17], &old).is_err());
     }
 
     #[test]
