@@ -272,9 +272,10 @@ impl FacetBuckets {
         fb.items = vec![0; total];
         for h in range {
             let (lo, hi) = xr(h);
-            for b in fb.bucket(lo)..=fb.bucket(hi) {
-                fb.items[fill[b] as usize] = h as u32;
-                fill[b] += 1;
+            let (b0, b1) = (fb.bucket(lo), fb.bucket(hi));
+            for slot in &mut fill[b0..=b1] {
+                fb.items[*slot as usize] = h as u32;
+                *slot += 1;
             }
         }
         Some(fb)
