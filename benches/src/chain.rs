@@ -1,6 +1,7 @@
 //! Iterated CSG (issue 13): a 40 x 25 x 1 slab carved by up to 1,000
 //! boxes of 0.5 x 0.5 x 2, one difference at a time, each result feeding
-//! the next, through the facade's `boolean_solid` in either mesh variant.
+//! the next, through the facade in either mesh variant (`boolean_solid`
+//! on polygon meshes, `boolean_solid_triangles` on triangle meshes).
 //!
 //! The boxes stand on a 40 x 25 grid of unit cells, one per cell, centred
 //! in the cell up to a deterministic jitter of at most 3/16 in x and y (a
@@ -12,7 +13,10 @@
 use std::time::Instant;
 use test_support::rng::SplitMix64;
 use test_support::shapes::box_mesh;
-use umbra::{boolean_solid, mesh_signed_volume, BooleanOp, MeshVariant, PolygonMesh};
+use umbra::{
+    boolean_solid, boolean_solid_triangles, mesh_signed_volume, triangulate_mesh, BooleanOp,
+    MeshVariant, PolygonMesh, TopologyError, TriangleMesh,
+};
 
 /// The slab `[0, 40] x [0, 25] x [0, 1]` (6 quadrilaterals).
 pub fn slab() -> PolygonMesh {
@@ -57,32 +61,113 @@ pub struct ChainStep {
     pub volume: f64,
 }
 
+/// The shape of the chain between steps, in the variant's own form: the
+/// triangle-mesh variant keeps a [`TriangleMesh`] from step to step
+/// (`boolean_solid_triangles`, no conversion), the polygon-mesh variant a
+/// [`PolygonMesh`].
+#[derive(Clone, Debug, PartialEq)]
+pub enum ChainMesh {
+    /// The polygon-mesh variant's shape.
+    Polygons(PolygonMesh),
+    /// The triangle-mesh variant's shape.
+    Triangles(TriangleMesh),
+}
+
+impl ChainMesh {
+    /// Facets (triangles for the triangle-mesh variant).
+    pub fn facet_count(&self) -> usize {
+        match self {
+            ChainMesh::Polygons(m) => m.facets.len(),
+            ChainMesh::Triangles(m) => m.triangles.len(),
+        }
+    }
+
+    /// Vertices referenced by some facet.
+    pub fn used_vertices(&self) -> usize {
+        let (n, starts): (usize, Vec<u32>) = match self {
+            ChainMesh::Polygons(m) => (
+                m.vertices.len(),
+                m.facets
+                    .iter()
+                    .flat_map(|f| f.half_edges.iter().map(|h| h.start))
+                    .collect(),
+            ),
+            ChainMesh::Triangles(m) => (
+                m.vertices.len(),
+                m.triangles.iter().flatten().copied().collect(),
+            ),
+        };
+        let mut used = vec![false; n];
+        for v in starts {
+            used[v as usize] = true;
+        }
+        used.iter().filter(|&&u| u).count()
+    }
+
+    /// The signed volume.
+    pub fn volume(&self) -> f64 {
+        match self {
+            ChainMesh::Polygons(m) => mesh_signed_volume(m),
+            ChainMesh::Triangles(m) => m.signed_volume(),
+        }
+    }
+
+    /// Topological validity (section 4.2).
+    pub fn check_topology(&self) -> Result<(), TopologyError> {
+        match self {
+            ChainMesh::Polygons(m) => m.check_topology(),
+            ChainMesh::Triangles(m) => m.check_topology(),
+        }
+    }
+}
+
 /// Runs the chain of `n` differences in `variant`, calling `on_step` after
 /// each with its measurements and the result; returns the final mesh.
-/// The volume is computed outside the timing.
+/// The polygon-mesh variant runs `boolean_solid`, the triangle-mesh
+/// variant `boolean_solid_triangles` on the triangulated slab and boxes
+/// (the boxes are triangulated before the chain, outside the timing, as
+/// an STL file would bring them). Counts and volume are computed outside
+/// the timing.
 pub fn run_chain(
     variant: MeshVariant,
     n: usize,
-    mut on_step: impl FnMut(&ChainStep, &PolygonMesh),
-) -> Result<PolygonMesh, umbra::Boolean3Error> {
-    let mut shape = slab();
-    for (k, hole) in holes(n).iter().enumerate() {
+    mut on_step: impl FnMut(&ChainStep, &ChainMesh),
+) -> Result<ChainMesh, umbra::Boolean3Error> {
+    let tri = variant == MeshVariant::TriangleMesh;
+    let mut shape = if tri {
+        ChainMesh::Triangles(triangulate_mesh(&slab()))
+    } else {
+        ChainMesh::Polygons(slab())
+    };
+    let boxes = holes(n);
+    let tri_boxes: Vec<TriangleMesh> = if tri {
+        boxes.iter().map(triangulate_mesh).collect()
+    } else {
+        Vec::new()
+    };
+    for (k, hole) in boxes.iter().enumerate() {
         let t = Instant::now();
-        let out = boolean_solid(&shape, hole, BooleanOp::Difference, variant)?;
-        let ms = t.elapsed().as_secs_f64() * 1e3;
-        shape = out.mesh;
-        let mut used = vec![false; shape.vertices.len()];
-        for f in &shape.facets {
-            for h in &f.half_edges {
-                used[h.start as usize] = true;
+        let next = match (&shape, tri_boxes.get(k)) {
+            (ChainMesh::Triangles(a), Some(b)) => {
+                ChainMesh::Triangles(boolean_solid_triangles(a, b, BooleanOp::Difference)?.mesh)
             }
-        }
+            (ChainMesh::Triangles(a), None) => ChainMesh::Polygons(
+                boolean_solid(&a.to_polygon_mesh(), hole, BooleanOp::Difference, variant)?.mesh,
+            ),
+            (ChainMesh::Polygons(a), _) => {
+                ChainMesh::Polygons(boolean_solid(a, hole, BooleanOp::Difference, variant)?.mesh)
+            }
+        };
+        let ms = t.elapsed().as_secs_f64() * 1e3;
+        // The previous shape is freed outside the timing, as in
+        // `run_chain_triangles`.
+        shape = next;
         let step = ChainStep {
             step: k + 1,
             ms,
-            facets: shape.facets.len(),
-            vertices: used.iter().filter(|&&u| u).count(),
-            volume: mesh_signed_volume(&shape),
+            facets: shape.facet_count(),
+            vertices: shape.used_vertices(),
+            volume: shape.volume(),
         };
         on_step(&step, &shape);
     }

@@ -183,6 +183,154 @@ enum Side {
     EdgesOfB,
 }
 
+/// Facets with more half-edges than this get an [`XIndex`] entry.
+const INDEXED_FACET: usize = 64;
+
+/// The half-edges of each large facet bucketed by x, so that an
+/// edge-facet function visits only the half-edges whose closed x-range
+/// meets the edge's. Skipping the others is exact: every level-1 term
+/// between an edge of one operand and a half-edge of the other (`X01`,
+/// `X10`, hence `X11`, `X02`, `X20`) needs a vertex of one inside the
+/// x-range of the other, so a half-edge whose closed x-range misses the
+/// edge's contributes no hit at all, and the hits that remain are offered
+/// in facet order as before: the values and points are bit for bit those
+/// of the full loop. (A plate cut by a thousand holes has a facet of
+/// thousands of half-edges, and each edge crossing it meets a few.)
+struct XIndex {
+    /// For each facet, its entry in `entries`, or `u32::MAX` (small facet).
+    slot: Vec<u32>,
+    entries: Vec<FacetBuckets>,
+}
+
+/// One facet's buckets: bucket `i` covers `x` with `bucket(x) == i`.
+struct FacetBuckets {
+    x0: f64,
+    scale: f64,
+    n: usize,
+    /// `off[i]..off[i + 1]` index `items`: the half-edges (absolute
+    /// indices, increasing) whose closed x-range reaches bucket `i`.
+    off: Vec<u32>,
+    items: Vec<u32>,
+}
+
+impl FacetBuckets {
+    /// The bucket of `x`, monotone in `x` (rounding of the subtraction and
+    /// the product is monotone), so that closed ranges that overlap share
+    /// a bucket.
+    #[inline]
+    fn bucket(&self, x: f64) -> usize {
+        let b = ((x - self.x0) * self.scale).floor();
+        if b >= 0.0 {
+            (b as usize).min(self.n - 1)
+        } else {
+            0
+        }
+    }
+
+    fn new(mesh: &Flat<'_>, f: u32) -> Option<FacetBuckets> {
+        let range = mesh.facet_range(f);
+        let xr = |h: usize| {
+            let (s, e) = mesh.he[h];
+            let (a, b) = (mesh.pos[s as usize][0], mesh.pos[e as usize][0]);
+            (a.min(b), a.max(b))
+        };
+        let (mut x0, mut x1) = (f64::INFINITY, f64::NEG_INFINITY);
+        for h in range.clone() {
+            let (lo, hi) = xr(h);
+            x0 = x0.min(lo);
+            x1 = x1.max(hi);
+        }
+        let n = (range.len() / 8).clamp(1, 4096);
+        let scale = n as f64 / (x1 - x0);
+        if !(scale.is_finite() && scale > 0.0) || n == 1 {
+            return None;
+        }
+        let mut fb = FacetBuckets {
+            x0,
+            scale,
+            n,
+            off: vec![0; n + 1],
+            items: Vec::new(),
+        };
+        let mut total = 0usize;
+        for h in range.clone() {
+            let (lo, hi) = xr(h);
+            let (b0, b1) = (fb.bucket(lo), fb.bucket(hi));
+            total += b1 - b0 + 1;
+            for b in b0..=b1 {
+                fb.off[b + 1] += 1;
+            }
+        }
+        // Long half-edges in many buckets: the index would not pay.
+        if total > 8 * range.len() {
+            return None;
+        }
+        for b in 0..n {
+            fb.off[b + 1] += fb.off[b];
+        }
+        let mut fill = fb.off.clone();
+        fb.items = vec![0; total];
+        for h in range {
+            let (lo, hi) = xr(h);
+            let (b0, b1) = (fb.bucket(lo), fb.bucket(hi));
+            for slot in &mut fill[b0..=b1] {
+                fb.items[*slot as usize] = h as u32;
+                *slot += 1;
+            }
+        }
+        Some(fb)
+    }
+}
+
+impl XIndex {
+    fn new(mesh: &Flat<'_>) -> XIndex {
+        let big: Vec<u32> = (0..mesh.facet_count() as u32)
+            .filter(|&f| mesh.facet_range(f).len() > INDEXED_FACET)
+            .collect();
+        let built: Vec<Option<FacetBuckets>> = big
+            .par_iter()
+            .map(|&f| FacetBuckets::new(mesh, f))
+            .collect();
+        let mut slot = vec![
+            u32::MAX;
+            if big.is_empty() {
+                0
+            } else {
+                mesh.facet_count()
+            }
+        ];
+        let mut entries = Vec::new();
+        for (f, b) in big.into_iter().zip(built) {
+            if let Some(b) = b {
+                slot[f as usize] = entries.len() as u32;
+                entries.push(b);
+            }
+        }
+        XIndex { slot, entries }
+    }
+
+    /// The half-edges of facet `f` that may meet the closed x-range
+    /// `[lo, hi]`, in facet order, into `out`; `false` (and `out` left
+    /// empty) when `f` has no index and the whole facet is to be used.
+    fn select(&self, f: u32, lo: f64, hi: f64, out: &mut Vec<u32>) -> bool {
+        out.clear();
+        let Some(&slot) = self.slot.get(f as usize) else {
+            return false;
+        };
+        let Some(fb) = self.entries.get(slot as usize) else {
+            return false;
+        };
+        let (b0, b1) = (fb.bucket(lo), fb.bucket(hi));
+        let items = &fb.items[fb.off[b0] as usize..fb.off[b1 + 1] as usize];
+        out.extend_from_slice(items);
+        if b0 != b1 {
+            out.sort_unstable();
+            out.dedup();
+        }
+        true
+    }
+}
+
 /// Evaluates the candidate `(edge, facet)` pairs (sorted, distinct) in
 /// parallel chunks whose results are concatenated in candidate order, so
 /// the output is sorted by edge then facet and does not depend on the
@@ -193,15 +341,28 @@ fn edge_facet_hits(
     cand: &[(u32, u32)],
     side: Side,
 ) -> Result<Vec<EdgeFacetHit>, Boolean3Error> {
+    let index = XIndex::new(facets);
     let chunks: Vec<Vec<EdgeFacetHit>> = cand
         .par_chunks(256)
         .map(|chunk| {
             let mut hits = Vec::new();
+            let mut near = Vec::new();
             for &(e, f) in chunk {
                 let (p, q) = edges.edge_points(e);
-                let r = match side {
-                    Side::EdgesOfA => x12(&p, &q, facets.facet_points(f))?,
-                    Side::EdgesOfB => x21(facets.facet_points(f), &p, &q)?,
+                let r = if index.select(f, p[0].min(q[0]), p[0].max(q[0]), &mut near) {
+                    let pts = near.iter().map(|&h| {
+                        let (s, t) = facets.he[h as usize];
+                        (facets.pos[s as usize], facets.pos[t as usize])
+                    });
+                    match side {
+                        Side::EdgesOfA => x12(&p, &q, pts)?,
+                        Side::EdgesOfB => x21(pts, &p, &q)?,
+                    }
+                } else {
+                    match side {
+                        Side::EdgesOfA => x12(&p, &q, facets.facet_points(f))?,
+                        Side::EdgesOfB => x21(facets.facet_points(f), &p, &q)?,
+                    }
                 };
                 if let Some((value, point)) = r {
                     hits.push(EdgeFacetHit {

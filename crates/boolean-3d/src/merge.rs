@@ -32,6 +32,9 @@ pub(crate) struct Merged {
     pub tri_off: Vec<u32>,
     /// Input triangle indices grouped by facet.
     pub tris: Vec<u32>,
+    /// For every input triangle, its place in its facet's list
+    /// (`tris[tri_off[f] + tri_pos[t]] == t`).
+    pub tri_pos: Vec<u32>,
     /// For every input half-edge `3t + k`, the half-edge it was merged
     /// with, or [`NONE`].
     pub partner: Vec<u32>,
@@ -72,12 +75,41 @@ fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
     }
 }
 
+/// For a triangle whose three vertices share one coordinate exactly (an
+/// axis-aligned triangle, the common case of CAD and CSG inputs), the
+/// first such axis and the triangle's exact orientation in that
+/// coordinate plane; `None` otherwise. Computed once per triangle, so that
+/// [`mergeable`] decides an edge between two such triangles by comparing
+/// their entries.
+fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
+    let (a, b, c) = (
+        flat.pos[flat.he[3 * t as usize].0 as usize],
+        flat.pos[flat.he[3 * t as usize + 1].0 as usize],
+        flat.pos[flat.he[3 * t as usize + 2].0 as usize],
+    );
+    let axis = (0..3).find(|&k| a[k] == b[k] && a[k] == c[k])?;
+    let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
+    Some((axis as u8, o))
+}
+
 /// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
-/// triangle mesh's flat form may be merged across their edge.
-fn mergeable(flat: &Flat<'_>, h1: u32, h2: u32) -> bool {
+/// triangle mesh's flat form may be merged across their edge; `axes` holds
+/// [`flat_axis`] of every triangle.
+fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32) -> bool {
     let (t1, t2) = (h1 / 3, h2 / 3);
     if t1 == t2 {
         return false;
+    }
+    // Both triangles constant on one axis each. The same first axis `k`:
+    // the four points share coordinate `k` (the edge's two vertices are
+    // common), `k` is the first axis they all share, and the orientations
+    // in that plane are the triangles' own (cyclic rotations keep the
+    // exact sign), so the general test below reduces to this comparison
+    // (a zero orientation is a degenerate triangle, never merged).
+    // Different axes: the triangles are coplanar only if one is constant
+    // on two axes, i.e. degenerate, and the general test says no.
+    if let (Some((k1, o1)), Some((k2, o2))) = (axes[t1 as usize], axes[t2 as usize]) {
+        return k1 == k2 && o1 != Ordering::Equal && o1 == o2;
     }
     let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
     let (u, v) = flat.he[h1 as usize];
@@ -128,6 +160,11 @@ impl Merged {
     pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
         let n_he = flat.he.len();
         let n_t = n_he / 3;
+        let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
+            .into_par_iter()
+            .with_min_len(1024)
+            .map(|t| flat_axis(&flat, t))
+            .collect();
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
@@ -142,7 +179,7 @@ impl Merged {
                 if s1 == e1 || s1 != e2 || e1 != s2 {
                     return None;
                 }
-                mergeable(&flat, h1, h2).then_some((h1, h2))
+                mergeable(&flat, &axes, h1, h2).then_some((h1, h2))
             })
             .collect();
         let mut partner = vec![NONE; n_he];
@@ -179,13 +216,16 @@ impl Merged {
         }
         let mut fill = tri_off.clone();
         let mut tris = vec![0u32; n_t];
+        let mut tri_pos = vec![0u32; n_t];
         for (t, &f) in facet_of.iter().enumerate() {
             tris[fill[f as usize] as usize] = t as u32;
+            tri_pos[t] = fill[f as usize] - tri_off[f as usize];
             fill[f as usize] += 1;
         }
         let merged = Merged {
             tri_off,
             tris,
+            tri_pos,
             partner,
             any: !pairs.is_empty(),
         };
@@ -194,6 +234,7 @@ impl Merged {
         }
         let (tri_off, tris, partner) = (&merged.tri_off, &merged.tris, &merged.partner);
         let mut he = Vec::with_capacity(n_he - 2 * pairs.len());
+        let mut old = Vec::with_capacity(n_he - 2 * pairs.len());
         let mut facet_off = Vec::with_capacity(n_f as usize + 1);
         facet_off.push(0u32);
         for f in 0..n_f as usize {
@@ -201,13 +242,32 @@ impl Merged {
                 for h in 3 * t..3 * t + 3 {
                     if partner[h as usize] == NONE {
                         he.push(flat.he[h as usize]);
+                        old.push(h);
                     }
                 }
             }
             facet_off.push(he.len() as u32);
         }
-        let (he, facet_off) = drop_straight_vertices(flat.pos, he, facet_off);
-        let out = Flat::from_merged(flat.pos, he, facet_off)?;
+        let (he, facet_off, dropped) = drop_straight_vertices(flat.pos, he, facet_off);
+        // Without dropped vertices the merged facets hold whole edges of
+        // the triangles (a merged edge loses both of its half-edges), and
+        // their edge grouping follows from the triangles' own.
+        let derived = if dropped {
+            Err((he, facet_off))
+        } else {
+            Flat::from_subset(&flat, he, facet_off, &old)
+        };
+        let out = match derived {
+            Ok(d) => {
+                debug_assert!(
+                    Flat::from_merged(flat.pos, d.he.clone(), d.facet_off.clone()).as_ref()
+                        == Ok(&d),
+                    "derived edge grouping differs"
+                );
+                d
+            }
+            Err((he, facet_off)) => Flat::from_merged(flat.pos, he, facet_off)?,
+        };
         Ok((merged, out))
     }
 
@@ -239,12 +299,13 @@ fn strictly_between(u: Point3, v: Point3, w: Point3) -> bool {
 /// gains `u->w, w->u` (shape boundary closure), so the constraints of
 /// section 4.2 hold whatever the test decides; the exact test keeps the
 /// geometry (the facets' regions are unchanged). Runs of such vertices on
-/// one segment go one after another, in vertex order.
+/// one segment go one after another, in vertex order. Also returns whether
+/// any vertex was dropped.
 fn drop_straight_vertices(
     pos: &[Point3],
     mut he: Vec<(u32, u32)>,
     facet_off: Vec<u32>,
-) -> (Vec<(u32, u32)>, Vec<u32>) {
+) -> (Vec<(u32, u32)>, Vec<u32>, bool) {
     let n_v = pos.len();
     // Half-edges starting and ending at each vertex (saturating at 3).
     let mut starts = vec![0u8; n_v];
@@ -255,7 +316,7 @@ fn drop_straight_vertices(
     }
     let candidate = |v: usize| starts[v] == 2 && ends[v] == 2;
     if !(0..n_v).any(candidate) {
-        return (he, facet_off);
+        return (he, facet_off, false);
     }
     let mut facet = vec![0u32; he.len()];
     for f in 0..facet_off.len() - 1 {
@@ -329,7 +390,7 @@ fn drop_straight_vertices(
         }
     }
     if !dropped {
-        return (he, facet_off);
+        return (he, facet_off, false);
     }
     let mut kept = Vec::with_capacity(he.len());
     let mut off = Vec::with_capacity(facet_off.len());
@@ -342,7 +403,7 @@ fn drop_straight_vertices(
         }
         off.push(kept.len() as u32);
     }
-    (kept, off)
+    (kept, off, true)
 }
 
 #[cfg(test)]
@@ -376,6 +437,39 @@ mod tests {
             [3, 0, 4],
         ];
         merged(v, t)
+    }
+
+    #[test]
+    fn the_derived_edge_grouping_is_the_built_one() {
+        // Two exactly coplanar pairs (the base, and a side split in two)
+        // merge and no vertex is dropped: the merged facets' grouping is
+        // derived from the triangles', and must equal a fresh build.
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.5, 0.5, 1.0],
+        ];
+        let t = vec![
+            [0, 2, 1],
+            [0, 3, 2],
+            [0, 1, 4],
+            [1, 2, 4],
+            [2, 3, 4],
+            [3, 0, 4],
+        ];
+        let m = TriangleMesh::new(v, t);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let (merge, out) = Merged::new(flat).unwrap();
+        assert!(merge.any);
+        let built = Flat::from_merged(&m.vertices, out.he.clone(), out.facet_off.clone());
+        assert_eq!(built.as_ref(), Ok(&out));
+        // A parent whose edge would keep one half-edge of two is refused.
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let old: Vec<u32> = (1..18).collect();
+        let he: Vec<(u32, u32)> = old.iter().map(|&h| flat.he[h as usize]).collect();
+        assert!(Flat::from_subset(&flat, he, vec![0, 17], &old).is_err());
     }
 
     #[test]

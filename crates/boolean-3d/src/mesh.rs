@@ -7,7 +7,11 @@ use rayon::prelude::*;
 use robust_arith::Point3;
 use topology::{PolygonMesh, TopologyError, TriangleMesh};
 
+/// Half-edges facet by facet and the facets' offsets into them.
+pub(crate) type FacetHalfEdges = (Vec<(u32, u32)>, Vec<u32>);
+
 /// One operand in compressed-row form. Indices are `u32` as in `topology`.
+#[derive(Debug, PartialEq)]
 pub(crate) struct Flat<'a> {
     /// Vertex positions (borrowed from the caller's mesh).
     pub pos: &'a [Point3],
@@ -68,6 +72,73 @@ impl<'a> Flat<'a> {
         facet_off: Vec<u32>,
     ) -> Result<Self, TopologyError> {
         Self::build(pos, he, facet_off, "merged facet")
+    }
+
+    /// The flat form of a subset of `parent`'s half-edges (`old[i]` is the
+    /// parent index of half-edge `i`) in which every edge of `parent`
+    /// keeps all of its half-edges or none (the coplanar merge removes
+    /// whole edges). The edge grouping is derived from the parent's
+    /// without sorting again, and equals what [`Flat::from_merged`]
+    /// builds: edges in (lower, higher) order, an edge's half-edges by
+    /// index. When some edge keeps only part of its half-edges, the
+    /// half-edges and offsets are handed back.
+    pub fn from_subset(
+        parent: &Flat<'a>,
+        he: Vec<(u32, u32)>,
+        facet_off: Vec<u32>,
+        old: &[u32],
+    ) -> Result<Self, FacetHalfEdges> {
+        let mut new_of = vec![u32::MAX; parent.he.len()];
+        for (i, &o) in old.iter().enumerate() {
+            new_of[o as usize] = i as u32;
+        }
+        let mut referenced = vec![false; parent.pos.len()];
+        for &(s, e) in &he {
+            referenced[s as usize] = true;
+            referenced[e as usize] = true;
+        }
+        let mut edges = Vec::with_capacity(he.len() / 2 + 1);
+        let mut edge_off = Vec::with_capacity(he.len() / 2 + 2);
+        let mut edge_he: Vec<u32> = Vec::with_capacity(he.len());
+        let mut he_edge = vec![0u32; he.len()];
+        for (e, &key) in parent.edges.iter().enumerate() {
+            let hs = parent.edge_half_edges(e as u32);
+            let kept = hs
+                .iter()
+                .filter(|&&h| new_of[h as usize] != u32::MAX)
+                .count();
+            if kept == 0 {
+                continue;
+            }
+            if kept != hs.len() {
+                return Err((he, facet_off));
+            }
+            let ne = edges.len() as u32;
+            edges.push(key);
+            let start = edge_he.len();
+            edge_off.push(start as u32);
+            for &h in hs {
+                let n = new_of[h as usize];
+                he_edge[n as usize] = ne;
+                edge_he.push(n);
+            }
+            edge_he[start..].sort_unstable();
+        }
+        edge_off.push(edge_he.len() as u32);
+        if edge_he.len() != he.len() {
+            return Err((he, facet_off));
+        }
+        Ok(Flat {
+            pos: parent.pos,
+            he,
+            facet_off,
+            he_edge,
+            referenced,
+            triangles: false,
+            edges,
+            edge_off,
+            edge_he,
+        })
     }
 
     fn build(

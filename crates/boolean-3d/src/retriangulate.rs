@@ -52,19 +52,44 @@ pub(crate) struct Source<'a> {
     pub sigma: i32,
 }
 
-/// Triangulates every retained facet, chunk by chunk in parallel,
-/// concatenated in order.
+/// Half-edges per piece of work in [`to_triangle_mesh`]: consecutive
+/// retained facets of one chunk are grouped up to this size, and a larger
+/// facet is a piece of its own, so that one large facet (a plate with a
+/// thousand holes) does not hold up the facets after it in its chunk.
+const PIECE_HALF_EDGES: usize = 4096;
+
+/// Triangulates every retained facet, piece by piece in parallel (runs of
+/// facets of one chunk, see [`PIECE_HALF_EDGES`]), concatenated in facet
+/// order: the output does not depend on the thread count.
 pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> TriangleMesh {
-    let parts: Vec<Vec<[u32; 3]>> = r
-        .chunks
+    // (chunk, facets lo..hi of its list, first half-edge of facet lo).
+    let mut pieces: Vec<(usize, usize, usize, usize)> = Vec::new();
+    for (c, (_, _, list)) in r.chunks.iter().enumerate() {
+        let (mut lo, mut at, mut size) = (0usize, 0usize, 0usize);
+        let mut start = 0usize;
+        for (i, &(_, n)) in list.iter().enumerate() {
+            let n = n as usize;
+            if size > 0 && size + n > PIECE_HALF_EDGES {
+                pieces.push((c, lo, i, start));
+                (lo, start, size) = (i, at, 0);
+            }
+            size += n;
+            at += n;
+        }
+        if lo < list.len() {
+            pieces.push((c, lo, list.len(), start));
+        }
+    }
+    let parts: Vec<Vec<[u32; 3]>> = pieces
         .par_iter()
-        .map(|(operand, hes, list)| {
+        .map(|&(c, lo, hi, start)| {
+            let (operand, hes, list) = &r.chunks[c];
             let k = *operand as usize;
             let (src, map) = (&sources[k], &r.maps[k]);
-            let mut tris = Vec::with_capacity(hes.len() / 3 + list.len());
+            let mut tris = Vec::new();
             let mut scratch = Scratch::default();
-            let mut at = 0usize;
-            for &(f, n) in list {
+            let mut at = start;
+            for &(f, n) in &list[lo..hi] {
                 let part = &hes[at..at + n as usize];
                 at += n as usize;
                 facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
@@ -173,9 +198,10 @@ fn facet(
         triangulate_facet(vertices, part, out);
         return;
     }
-    // `tris` is in input order, so a triangle's place is found by binary
-    // search.
-    let kept = |t: u32| tris.binary_search(&t).is_ok_and(|i| s.kept[i]);
+    // A merged partner lies in the same merged facet: its place in `tris`
+    // is `tri_pos`.
+    let tri_pos = &src.merged.tri_pos;
+    let kept = |t: u32| s.kept[tri_pos[t as usize] as usize];
     // The residual as signed edges (lower id, higher id, +1 for lower to
     // higher): F' plus the reversed boundary of the kept triangles, where
     // pairs between two kept triangles are skipped (they cancel).

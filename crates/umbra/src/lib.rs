@@ -109,7 +109,8 @@ pub use nary::{
     boolean_solids, difference_all_solids, union_all_solids, SolidsError, SolidsOutput,
 };
 pub use ops::{
-    as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, MeshVariant, SolidOutput, Via,
+    as_triangle_mesh, boolean_solid, boolean_solid_triangles, boolean_solid_with_contacts,
+    MeshVariant, SolidOutput, TriangleSolidOutput, Via,
 };
 #[cfg(feature = "render")]
 pub use render::*;

@@ -1,7 +1,10 @@
 //! What the facade adds over the lower crates' entry points: the 2D
 //! Boolean's algorithm as a value ([`Via`]) and the 3D Boolean by variant
 //! ([`MeshVariant`], [`boolean_solid`]), which triangulates operands that
-//! are not triangle meshes when the triangle-mesh variant is asked for.
+//! are not triangle meshes when the triangle-mesh variant is asked for,
+//! and the triangle-mesh variant on triangle meshes with no conversion
+//! ([`boolean_solid_triangles`], for chains of operations: STL in, STL
+//! out).
 
 use boolean_3d::{
     boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
@@ -77,6 +80,46 @@ pub struct SolidOutput {
     pub total_ms: f64,
 }
 
+/// The result of [`boolean_solid_triangles`].
+#[derive(Clone, Debug, PartialEq)]
+pub struct TriangleSolidOutput {
+    /// The resulting shape, always topologically valid.
+    pub mesh: TriangleMesh,
+    /// The number of edge-facet intersection vertices.
+    pub intersections: usize,
+    /// Milliseconds of the whole call.
+    pub total_ms: f64,
+}
+
+/// The triangle-mesh variant of the 3D Boolean on triangle meshes,
+/// straight through [`crate::boolean_triangles`]: no operand is converted
+/// to or from a polygon mesh, so a chain of operations (each result
+/// feeding the next) pays only for the Booleans. The triangles are those
+/// of [`boolean_solid`] with [`MeshVariant::TriangleMesh`] on the same
+/// triangles given as one-triangle facets.
+///
+/// ```
+/// use umbra::{boolean_solid_triangles, cuboid, triangulate_mesh, BooleanOp, DVec3};
+/// let a = triangulate_mesh(&cuboid(DVec3::splat(2.0), false).unwrap());
+/// let mut b = a.clone();
+/// b.vertices.iter_mut().for_each(|v| v[0] += 1.0);
+/// let out = boolean_solid_triangles(&a, &b, BooleanOp::Difference).unwrap();
+/// assert_eq!(out.mesh.signed_volume(), 4.0);
+/// ```
+pub fn boolean_solid_triangles(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp,
+) -> Result<TriangleSolidOutput, Boolean3Error> {
+    let start = Instant::now();
+    let out = boolean_triangles(a, b, op)?;
+    Ok(TriangleSolidOutput {
+        mesh: out.mesh,
+        intersections: out.intersections,
+        total_ms: ms(start),
+    })
+}
+
 /// The operand as a triangle mesh when every facet is one loop of three
 /// half-edges, `None` otherwise.
 ///
@@ -111,8 +154,10 @@ fn ms(since: Instant) -> f64 {
 /// The 3D Boolean `op` of `a` and `b` by `variant`. The triangle-mesh
 /// variant first triangulates (by internal edges, which keeps a closed
 /// operand closed) any operand that is not already a triangle mesh, so
-/// both variants run on any valid input. Errors are those of the 3D
-/// Boolean, naming the operand.
+/// both variants run on any valid input, and returns the triangles as
+/// one-triangle facets; on triangle meshes, [`boolean_solid_triangles`]
+/// gives the same triangles without either conversion. Errors are those
+/// of the 3D Boolean, naming the operand.
 pub fn boolean_solid(
     a: &PolygonMesh,
     b: &PolygonMesh,

@@ -368,3 +368,95 @@ fn n_ary_forms_through_the_facade() {
     let twice = boolean_n(&sets, |w| w.iter().filter(|&&x| x > 0).count() >= 2).unwrap();
     assert_eq!(twice.shape.signed_area(), 4.0);
 }
+
+mod triangle_path {
+    //! The facade's triangle path on triangle meshes
+    //! (`boolean_solid_triangles`) gives the same triangles, bit for bit,
+    //! as `boolean_triangles` and as `boolean_solid` with the triangle-mesh
+    //! variant on the same triangles as one-triangle facets, over chains of
+    //! operations where each result feeds the next.
+
+    use proptest::prelude::*;
+    use test_support::shapes::{box_triangles, uv_sphere};
+    use umbra::{
+        as_triangle_mesh, boolean_solid, boolean_solid_triangles, boolean_triangles, BooleanOp,
+        MeshVariant, TriangleMesh,
+    };
+
+    fn bits(m: &TriangleMesh) -> (Vec<[u64; 3]>, Vec<[u32; 3]>) {
+        let v = m.vertices.iter().map(|p| p.map(f64::to_bits)).collect();
+        (v, m.triangles.clone())
+    }
+
+    /// Runs the chain `shape op_k operand_k` three ways and checks that
+    /// every step agrees; returns the final shape.
+    fn chain(start: TriangleMesh, steps: &[(BooleanOp, TriangleMesh)]) -> TriangleMesh {
+        let mut direct = start.clone();
+        let mut facade = start.clone();
+        let mut poly = start.to_polygon_mesh();
+        for (k, (op, b)) in steps.iter().enumerate() {
+            direct = boolean_triangles(&direct, b, *op).unwrap().mesh;
+            let out = boolean_solid_triangles(&facade, b, *op).unwrap();
+            assert!(out.total_ms >= 0.0);
+            facade = out.mesh;
+            let via =
+                boolean_solid(&poly, &b.to_polygon_mesh(), *op, MeshVariant::TriangleMesh).unwrap();
+            assert_eq!(via.inputs_triangulated, [false, false], "step {k}");
+            poly = via.mesh;
+            assert!(bits(&direct) == bits(&facade), "step {k}: facade differs");
+            let back = as_triangle_mesh(&poly).expect("triangles as facets");
+            assert!(
+                bits(&direct) == bits(&back),
+                "step {k}: boolean_solid differs"
+            );
+            assert!(facade.check_topology().is_ok(), "step {k}");
+        }
+        facade
+    }
+
+    #[test]
+    fn a_slab_carved_by_boxes_and_a_sphere() {
+        let slab = box_triangles([0.0; 3], [4.0, 3.0, 1.0]);
+        let mut steps: Vec<(BooleanOp, TriangleMesh)> = (0..6)
+            .map(|k| {
+                let (x, y) = (0.25 + f64::from(k % 3), 0.25 + f64::from(k / 3));
+                let b = box_triangles([x, y, -0.5], [x + 0.5, y + 0.5, 1.5]);
+                (BooleanOp::Difference, b)
+            })
+            .collect();
+        steps.push((BooleanOp::Union, uv_sphere([2.0, 1.5, 1.0], 0.7, 12, 6)));
+        steps.push((
+            BooleanOp::Intersection,
+            box_triangles([0.5, -1.0, -1.0], [3.5, 4.0, 3.0]),
+        ));
+        let out = chain(slab, &steps);
+        assert!(out.signed_volume() > 0.0);
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(16))]
+
+        #[test]
+        fn random_box_chains_agree(
+            boxes in proptest::collection::vec(
+                ((0i32..16, 0i32..12, -4i32..8), (1i32..8, 1i32..8, 1i32..8), 0u8..3),
+                1..6,
+            ),
+        ) {
+            // Coordinates on a grid of 1/4: coplanar faces and shared
+            // edges are frequent, and volumes are exact.
+            let start = box_triangles([0.0; 3], [4.0, 3.0, 1.0]);
+            let q = |v: i32| f64::from(v) / 4.0;
+            let steps: Vec<(BooleanOp, TriangleMesh)> = boxes
+                .iter()
+                .map(|&((x, y, z), (w, h, d), op)| {
+                    let op = [BooleanOp::Difference, BooleanOp::Union, BooleanOp::Intersection]
+                        [usize::from(op)];
+                    (op, box_triangles([q(x), q(y), q(z)], [q(x + w), q(y + h), q(z + d)]))
+                })
+                .collect();
+            let out = chain(start, &steps);
+            prop_assert!(out.check_topology().is_ok());
+        }
+    }
+}
