@@ -69,9 +69,17 @@ pub fn pair_composite_edge(edge: &mut CompositeEdge, out: &mut Vec<(u32, u32)>) 
         v[1] -= p[1];
     }
     let key = |p: &[f64; 2]| p[0] * v[0] + p[1] * v[1];
-    // eq. 4.15-4.16: a stable sort by the projection onto v.
-    edge.starts.sort_by(|a, b| key(&a.1).total_cmp(&key(&b.1)));
-    edge.ends.sort_by(|a, b| key(&a.1).total_cmp(&key(&b.1)));
+    // eq. 4.15-4.16: a stable sort by the projection onto v (two items,
+    // the common case: swapped exactly when the second is less).
+    for list in [&mut edge.starts, &mut edge.ends] {
+        if let [first, second] = list.as_mut_slice() {
+            if key(&second.1).total_cmp(&key(&first.1)).is_lt() {
+                std::mem::swap(first, second);
+            }
+        } else {
+            list.sort_by(|a, b| key(&a.1).total_cmp(&key(&b.1)));
+        }
+    }
     out.extend(
         edge.starts
             .iter()

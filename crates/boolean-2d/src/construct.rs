@@ -80,8 +80,7 @@ pub(crate) fn construct(
     // Retained parts of B's edges (eq. 4.9-4.10): the 2D X11 counts enter
     // with the opposite sign, since e_A crossing e_B left to right means
     // e_B entering A.
-    let mut by_b: Vec<u32> = (0..data.x11.len() as u32).collect();
-    by_b.sort_by_key(|&j| (data.x11[j as usize].1, j));
+    let by_b = order_by_b(&data.x11, b.edge_count());
     let mut k = 0;
     for (ib, eb) in b.edges().iter().enumerate() {
         while k < by_b.len() && (data.x11[by_b[k] as usize].1 as usize) < ib {
@@ -111,6 +110,26 @@ pub(crate) fn construct(
         }
     }
     Ok(out)
+}
+
+/// The indices of `x11` ordered by edge of B, then index: a counting sort
+/// by edge of B (`b_edges` of them), which keeps the index order within
+/// each edge.
+fn order_by_b(x11: &[(u32, u32, i32, [f64; 2])], b_edges: usize) -> Vec<u32> {
+    let mut fill = vec![0u32; b_edges + 1];
+    for h in x11 {
+        fill[h.1 as usize + 1] += 1;
+    }
+    for i in 0..b_edges {
+        fill[i + 1] += fill[i];
+    }
+    let mut by_b = vec![0u32; x11.len()];
+    for (j, h) in x11.iter().enumerate() {
+        let slot = &mut fill[h.1 as usize];
+        by_b[*slot as usize] = j as u32;
+        *slot += 1;
+    }
+    by_b
 }
 
 /// Marks an id as an index into `data.x11` rather than an input vertex.
