@@ -31,8 +31,12 @@ use topology::{Edge2, PolygonSet2};
 /// way (hits are sorted by edge indices afterwards).
 const PARALLEL_PAIRS: usize = 2048;
 
-/// Edge counts above which the two operands' ray casts run side by side.
-const PARALLEL_EDGES: usize = 16384;
+/// Edge counts (both operands) above which the independent parts of level
+/// 2 run side by side on the rayon pool: the two operands' edge boxes,
+/// then the broad phase and `X11` beside the propagation orders and ray
+/// casts (themselves one operand beside the other). The output is the same
+/// either way.
+const PARALLEL_EDGES: usize = 4096;
 
 /// The plain active-list sweeps give up (and the worst-case structures take
 /// over) once they have examined more than `LIST_WORK_FACTOR * (m + r) +
@@ -127,7 +131,10 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
             (total_order_key(p[0].min(q[0])), i as u32)
         })
         .collect();
-    order.sort_unstable();
+    // The keys are distinct (the index breaks ties), so any sort gives this
+    // order; the stable one merges the few monotone runs of a polygon's
+    // x-coordinates instead of partitioning.
+    order.sort();
     order
         .into_iter()
         .map(|(_, i)| {
@@ -716,36 +723,55 @@ pub(crate) fn level2_fast(
     b: &PolygonSet2,
 ) -> Result<(LevelData, Level2Times), BooleanError> {
     let mut times = Level2Times::default();
+    let parallel = a.edge_count() + b.edge_count() >= PARALLEL_EDGES;
     let clock = Instant::now();
     let margin = margin(a, b);
-    let boxes_a = edge_boxes(a, margin);
-    let boxes_b = edge_boxes(b, margin);
-    let pairs = sort_pairs(&overlapping_pairs(&boxes_a, &boxes_b), a.edge_count());
-    times.broad_phase = ms(clock);
+    let (boxes_a, boxes_b) = join(
+        parallel,
+        || edge_boxes(a, margin),
+        || edge_boxes(b, margin),
+    );
+    let boxes_time = ms(clock);
+
+    // The candidate pairs and their `X11`, beside the propagation orders
+    // and the ray casts, which need neither.
+    let crossings = || -> Result<_, BooleanError> {
+        let clock = Instant::now();
+        let pairs = sort_pairs(&overlapping_pairs(&boxes_a, &boxes_b), a.edge_count());
+        let broad_phase = ms(clock);
+        let clock = Instant::now();
+        let hits = intersections(a, b, &pairs)?;
+        Ok((hits, broad_phase, ms(clock)))
+    };
+    let windings = || {
+        let clock = Instant::now();
+        let casts = |order: &[(u32, Source)]| -> Vec<u32> {
+            order
+                .iter()
+                .filter(|(_, s)| matches!(s, Source::Cast))
+                .map(|&(v, _)| v)
+                .collect()
+        };
+        let side_a = || {
+            let order = propagation_order(a);
+            let cast = cast_rays(&casts(&order), a, &boxes_b, b, Ray::Up);
+            (order, cast)
+        };
+        let side_b = || {
+            let order = propagation_order(b);
+            let cast = cast_rays(&casts(&order), b, &boxes_a, a, Ray::Down);
+            (order, cast)
+        };
+        let sides = join(parallel, side_a, side_b);
+        (sides, ms(clock))
+    };
+    let (crossings, ((order_cast_a, order_cast_b), cast_time)) = join(parallel, crossings, windings);
+    let (hits, broad_phase, x11_time) = crossings?;
+    times.broad_phase = boxes_time + broad_phase;
+    times.intersections = x11_time;
 
     let clock = Instant::now();
-    let hits = intersections(a, b, &pairs)?;
-    drop(pairs);
-    times.intersections = ms(clock);
-
-    let clock = Instant::now();
-    let order_a = propagation_order(a);
-    let order_b = propagation_order(b);
-    let casts = |order: &[(u32, Source)]| -> Vec<u32> {
-        order
-            .iter()
-            .filter(|(_, s)| matches!(s, Source::Cast))
-            .map(|&(v, _)| v)
-            .collect()
-    };
-    let (cast_a, cast_b) = (casts(&order_a), casts(&order_b));
-    let cast_x02 = || cast_rays(&cast_a, a, &boxes_b, b, Ray::Up);
-    let cast_x20 = || cast_rays(&cast_b, b, &boxes_a, a, Ray::Down);
-    let (x02_cast, x20_cast) = if a.edge_count() + b.edge_count() >= PARALLEL_EDGES {
-        rayon::join(cast_x02, cast_x20)
-    } else {
-        (cast_x02(), cast_x20())
-    };
+    let ((order_a, x02_cast), (order_b, x20_cast)) = (order_cast_a, order_cast_b);
     let delta_a: Vec<i32> = crossing_sums(&hits, a.edge_count(), true, b.edges())
         .into_iter()
         .map(|d| -d)
@@ -753,7 +779,7 @@ pub(crate) fn level2_fast(
     let delta_b = crossing_sums(&hits, b.edge_count(), false, a.edges());
     let x02 = propagate(&order_a, &x02_cast, &delta_a, a.vertex_count());
     let x20 = propagate(&order_b, &x20_cast, &delta_b, b.vertex_count());
-    times.winding = ms(clock);
+    times.winding = cast_time + ms(clock);
 
     Ok((
         LevelData {
@@ -764,6 +790,19 @@ pub(crate) fn level2_fast(
         },
         times,
     ))
+}
+
+/// `(f(), g())`, side by side on the rayon pool when `parallel`.
+fn join<A: Send, B: Send>(
+    parallel: bool,
+    f: impl FnOnce() -> A + Send,
+    g: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    if parallel {
+        rayon::join(f, g)
+    } else {
+        (f(), g())
+    }
 }
 
 #[cfg(test)]
