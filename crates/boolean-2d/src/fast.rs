@@ -297,7 +297,7 @@ fn sort_pairs(pairs: &[(u32, u32)], a_edges: usize) -> Vec<(u32, u32)> {
     sorted
 }
 
-/// Candidate pairs per parallel task of [`intersections`].
+/// The fewest candidate pairs per parallel task of [`intersections`].
 const PAIRS_PER_TASK: usize = 4096;
 
 /// `X11` on every candidate pair, given sorted by edge of A, then edge of
@@ -310,7 +310,9 @@ fn intersections(
     pairs: &[(u32, u32)],
 ) -> Result<Vec<Hit11>, BooleanError> {
     let block = |pairs: &[(u32, u32)]| -> Result<Vec<Hit11>, BooleanError> {
-        let mut hits = Vec::with_capacity(pairs.len());
+        // About two of three candidate pairs cross on the n-gons of Table
+        // 7.4; the vector grows where more do.
+        let mut hits = Vec::with_capacity(pairs.len() - pairs.len() / 4);
         for &(ia, ib) in pairs {
             let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
             let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
@@ -322,14 +324,26 @@ fn intersections(
         }
         Ok(hits)
     };
-    if pairs.len() < PARALLEL_PAIRS {
+    let threads = rayon::current_num_threads();
+    if pairs.len() < PARALLEL_PAIRS || threads < 2 {
         return block(pairs);
     }
+    // A few blocks per thread, so that a busy thread's share is taken over;
+    // the first block's vector then takes the others' hits (growing in
+    // place where the allocator can, which spares a copy of it).
+    let per_task = pairs.len().div_ceil(4 * threads).max(PAIRS_PER_TASK);
     let blocks: Vec<Vec<Hit11>> = pairs
-        .par_chunks(PAIRS_PER_TASK)
+        .par_chunks(per_task)
         .map(block)
         .collect::<Result<_, _>>()?;
-    Ok(blocks.concat())
+    let mut blocks = blocks.into_iter();
+    let mut hits = blocks.next().unwrap_or_default();
+    let rest: Vec<Vec<Hit11>> = blocks.collect();
+    hits.reserve_exact(rest.iter().map(Vec::len).sum());
+    for b in rest {
+        hits.extend_from_slice(&b);
+    }
+    Ok(hits)
 }
 
 /// How a vertex's winding number is obtained: cast, or from a neighbour
@@ -476,7 +490,11 @@ fn cast_by_lists(
     for (handled, q) in by_x.into_iter().enumerate() {
         let v = points[q as usize];
         while next < boxes.len() && boxes[next].x0 <= v[0] {
-            active.push(boxes[next]);
+            // A box that ended left of this query ends left of every later
+            // one (the queries come by ascending x): never kept.
+            if boxes[next].x1 >= v[0] {
+                active.push(boxes[next]);
+            }
             next += 1;
         }
         work += active.len();
