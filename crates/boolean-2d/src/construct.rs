@@ -29,8 +29,9 @@ impl Ids {
 }
 
 /// Edge counts (of both operands together) above which the composite
-/// edges are paired on the rayon pool, in blocks of [`EDGES_PER_TASK`];
-/// the output is the same either way (the blocks are numbered in order).
+/// edges are paired on the rayon pool (when it has two threads or more),
+/// in blocks of [`EDGES_PER_TASK`]; the output is the same either way (the
+/// blocks are numbered in order).
 const PARALLEL_EDGES: usize = 8192;
 
 /// Edges per parallel task of [`construct`].
@@ -67,31 +68,7 @@ pub(crate) fn construct(
 ) -> Result<PolygonSet2, BooleanError> {
     let by_b = order_by_b(&data.x11, b.edge_count());
     let (na, nb) = (a.edge_count(), b.edge_count());
-    let mut tasks: Vec<(Side, usize, usize)> = Vec::new();
-    let per_task = if na + nb >= PARALLEL_EDGES {
-        EDGES_PER_TASK
-    } else {
-        usize::MAX
-    };
-    for (side, n) in [(Side::A, na), (Side::B, nb)] {
-        let mut lo = 0;
-        while lo < n {
-            let hi = lo + per_task.min(n - lo);
-            tasks.push((side, lo, hi));
-            lo = hi;
-        }
-    }
     let data_ref: &LevelData = data;
-    let run = |&(side, lo, hi): &(Side, usize, usize)| match side {
-        Side::A => block_a(a, b, op, data_ref, lo, hi),
-        Side::B => block_b(a, b, op, data_ref, &by_b, lo, hi),
-    };
-    let blocks: Vec<Result<Block, BooleanError>> = if tasks.len() > 1 {
-        tasks.par_iter().map(run).collect()
-    } else {
-        tasks.iter().map(run).collect()
-    };
-
     let mut out = PolygonSet2::with_capacity(
         a.vertex_count() + b.vertex_count() + data.x11.len(),
         a.edge_count() + b.edge_count() + 2 * data.x11.len(),
@@ -100,6 +77,61 @@ pub(crate) fn construct(
     let mut b_ids = Ids::new(b.vertex_count());
     let mut x_ids = Ids::new(data.x11.len());
     let mut counts = Vec::with_capacity(na + nb);
+
+    if na + nb < PARALLEL_EDGES || rayon::current_num_threads() < 2 {
+        // One pass: every retained part goes to the output at once.
+        let mut sink = |own: &PolygonSet2, own_ids: &mut Ids, s: u32, e: u32, m: i32| {
+            let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
+            let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
+            out.add_edge_mult(s, e, m);
+        };
+        block_a(a, b, op, data_ref, 0, na, &mut counts, &mut |s, e, m| {
+            sink(a, &mut a_ids, s, e, m)
+        })?;
+        block_b(
+            a,
+            b,
+            op,
+            data_ref,
+            &by_b,
+            0,
+            nb,
+            &mut counts,
+            &mut |s, e, m| sink(b, &mut b_ids, s, e, m),
+        )?;
+        data.composite_counts = counts;
+        return Ok(out);
+    }
+
+    let mut tasks: Vec<(Side, usize, usize)> = Vec::new();
+    for (side, n) in [(Side::A, na), (Side::B, nb)] {
+        let mut lo = 0;
+        while lo < n {
+            let hi = lo + EDGES_PER_TASK.min(n - lo);
+            tasks.push((side, lo, hi));
+            lo = hi;
+        }
+    }
+    let run = |&(side, lo, hi): &(Side, usize, usize)| -> Result<Block, BooleanError> {
+        let mut block = Block::default();
+        let mut sink = |s, e, m| block.pieces.push((s, e, m));
+        match side {
+            Side::A => block_a(a, b, op, data_ref, lo, hi, &mut block.counts, &mut sink)?,
+            Side::B => block_b(
+                a,
+                b,
+                op,
+                data_ref,
+                &by_b,
+                lo,
+                hi,
+                &mut block.counts,
+                &mut sink,
+            )?,
+        }
+        Ok(block)
+    };
+    let blocks: Vec<Result<Block, BooleanError>> = tasks.par_iter().map(run).collect();
     for (block, &(side, _, _)) in blocks.into_iter().zip(&tasks) {
         let block = block?;
         let (own, own_ids) = match side {
@@ -107,8 +139,8 @@ pub(crate) fn construct(
             Side::B => (b, &mut b_ids),
         };
         for &(s, e, m) in &block.pieces {
-            let s = resolve(s, own, own_ids, data, &mut x_ids, &mut out);
-            let e = resolve(e, own, own_ids, data, &mut x_ids, &mut out);
+            let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
+            let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
             out.add_edge_mult(s, e, m);
         }
         counts.extend_from_slice(&block.counts);
@@ -125,9 +157,10 @@ fn block_a(
     data: &LevelData,
     lo: usize,
     hi: usize,
-) -> Result<Block, BooleanError> {
+    counts: &mut Vec<(u32, u32)>,
+    sink: &mut impl FnMut(u32, u32, i32),
+) -> Result<(), BooleanError> {
     let (ca, _, ci) = op.coefficients();
-    let mut block = Block::default();
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
     let mut k = data.x11.partition_point(|h| (h.0 as usize) < lo);
@@ -151,12 +184,12 @@ fn block_a(
             edge.assign(j as u32 | TAG_X, ci * x * mb);
             j += 1;
         }
-        emit(&mut edge, &mut pairs, &mut block.counts, a, data, ia, "A")?;
-        block
-            .pieces
-            .extend(pairs.iter().map(|&(s, e)| (s, e, ea.mult)));
+        emit(&mut edge, &mut pairs, counts, a, data, ia, "A")?;
+        for &(s, e) in &pairs {
+            sink(s, e, ea.mult);
+        }
     }
-    Ok(block)
+    Ok(())
 }
 
 /// The retained parts of B's edges `lo..hi` (eq. 4.9-4.10): the 2D X11
@@ -170,9 +203,10 @@ fn block_b(
     by_b: &[u32],
     lo: usize,
     hi: usize,
-) -> Result<Block, BooleanError> {
+    counts: &mut Vec<(u32, u32)>,
+    sink: &mut impl FnMut(u32, u32, i32),
+) -> Result<(), BooleanError> {
     let (_, cb, ci) = op.coefficients();
-    let mut block = Block::default();
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
     let mut k = by_b.partition_point(|&j| (data.x11[j as usize].1 as usize) < lo);
@@ -196,12 +230,12 @@ fn block_b(
         let i_s = cb + ci * data.x20[eb.start as usize];
         edge.assign(eb.end, i_e);
         edge.assign(eb.start, -i_s);
-        emit(&mut edge, &mut pairs, &mut block.counts, b, data, ib, "B")?;
-        block
-            .pieces
-            .extend(pairs.iter().map(|&(s, e)| (s, e, eb.mult)));
+        emit(&mut edge, &mut pairs, counts, b, data, ib, "B")?;
+        for &(s, e) in &pairs {
+            sink(s, e, eb.mult);
+        }
     }
-    Ok(block)
+    Ok(())
 }
 
 /// The indices of `x11` ordered by edge of B, then index: a counting sort

@@ -309,40 +309,53 @@ fn intersections(
     b: &PolygonSet2,
     pairs: &[(u32, u32)],
 ) -> Result<Vec<Hit11>, BooleanError> {
-    let block = |pairs: &[(u32, u32)]| -> Result<Vec<Hit11>, BooleanError> {
+    let eval = |ia: u32, ib: u32| -> Result<Option<Hit11>, BooleanError> {
+        let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
+        let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
+        let hit = x11(&as_, &ae, &bs, &be)
+            .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))?;
+        Ok(hit.map(|h| (ia, ib, h.value, h.a)))
+    };
+    let threads = rayon::current_num_threads();
+    if pairs.len() < PARALLEL_PAIRS || threads < 2 {
         // About two of three candidate pairs cross on the n-gons of Table
         // 7.4; the vector grows where more do.
         let mut hits = Vec::with_capacity(pairs.len() - pairs.len() / 4);
         for &(ia, ib) in pairs {
-            let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
-            let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
-            let hit = x11(&as_, &ae, &bs, &be)
-                .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))?;
-            if let Some(h) = hit {
-                hits.push((ia, ib, h.value, h.a));
+            if let Some(h) = eval(ia, ib)? {
+                hits.push(h);
             }
         }
-        Ok(hits)
-    };
-    let threads = rayon::current_num_threads();
-    if pairs.len() < PARALLEL_PAIRS || threads < 2 {
-        return block(pairs);
+        return Ok(hits);
     }
-    // A few blocks per thread, so that a busy thread's share is taken over;
-    // the first block's vector then takes the others' hits (growing in
-    // place where the allocator can, which spares a copy of it).
+    // A few blocks per thread, so that a busy thread's share is taken over.
+    // Each block writes its hits to the start of its own region of one
+    // zeroed vector (fresh zeroed memory is mapped on first write, so the
+    // regions' unused tails cost nothing), then the regions are closed up
+    // in order: no second vector and no copy into one.
     let per_task = pairs.len().div_ceil(4 * threads).max(PAIRS_PER_TASK);
-    let blocks: Vec<Vec<Hit11>> = pairs
-        .par_chunks(per_task)
-        .map(block)
+    let mut hits: Vec<Hit11> = vec![(0, 0, 0, [0.0; 2]); pairs.len()];
+    let found: Vec<usize> = hits
+        .par_chunks_mut(per_task)
+        .zip(pairs.par_chunks(per_task))
+        .map(|(region, pairs)| -> Result<usize, BooleanError> {
+            let mut n = 0;
+            for &(ia, ib) in pairs {
+                if let Some(h) = eval(ia, ib)? {
+                    region[n] = h;
+                    n += 1;
+                }
+            }
+            Ok(n)
+        })
         .collect::<Result<_, _>>()?;
-    let mut blocks = blocks.into_iter();
-    let mut hits = blocks.next().unwrap_or_default();
-    let rest: Vec<Vec<Hit11>> = blocks.collect();
-    hits.reserve_exact(rest.iter().map(Vec::len).sum());
-    for b in rest {
-        hits.extend_from_slice(&b);
+    let mut len = 0;
+    for (k, &n) in found.iter().enumerate() {
+        let start = k * per_task;
+        hits.copy_within(start..start + n, len);
+        len += n;
     }
+    hits.truncate(len);
     Ok(hits)
 }
 
@@ -744,11 +757,7 @@ pub(crate) fn level2_fast(
     let parallel = a.edge_count() + b.edge_count() >= PARALLEL_EDGES;
     let clock = Instant::now();
     let margin = margin(a, b);
-    let (boxes_a, boxes_b) = join(
-        parallel,
-        || edge_boxes(a, margin),
-        || edge_boxes(b, margin),
-    );
+    let (boxes_a, boxes_b) = join(parallel, || edge_boxes(a, margin), || edge_boxes(b, margin));
     let boxes_time = ms(clock);
 
     // The candidate pairs and their `X11`, beside the propagation orders
@@ -783,7 +792,8 @@ pub(crate) fn level2_fast(
         let sides = join(parallel, side_a, side_b);
         (sides, ms(clock))
     };
-    let (crossings, ((order_cast_a, order_cast_b), cast_time)) = join(parallel, crossings, windings);
+    let (crossings, ((order_cast_a, order_cast_b), cast_time)) =
+        join(parallel, crossings, windings);
     let (hits, broad_phase, x11_time) = crossings?;
     times.broad_phase = boxes_time + broad_phase;
     times.intersections = x11_time;
