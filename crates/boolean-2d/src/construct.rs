@@ -46,6 +46,17 @@ struct Block {
     counts: Vec<(u32, u32)>,
 }
 
+/// What every block of edges reads: the operands, the operation, the
+/// level-2 data, and `data.x11` ordered by edge of B ([`order_by_b`]).
+#[derive(Clone, Copy)]
+struct Inputs<'a> {
+    a: &'a PolygonSet2,
+    b: &'a PolygonSet2,
+    op: BooleanOp,
+    data: &'a LevelData,
+    by_b: &'a [u32],
+}
+
 /// Which operand a block of edges belongs to.
 #[derive(Clone, Copy)]
 enum Side {
@@ -69,6 +80,13 @@ pub(crate) fn construct(
     let by_b = order_by_b(&data.x11, b.edge_count());
     let (na, nb) = (a.edge_count(), b.edge_count());
     let data_ref: &LevelData = data;
+    let inputs = Inputs {
+        a,
+        b,
+        op,
+        data: data_ref,
+        by_b: &by_b,
+    };
     let mut out = PolygonSet2::with_capacity(
         a.vertex_count() + b.vertex_count() + data.x11.len(),
         a.edge_count() + b.edge_count() + 2 * data.x11.len(),
@@ -85,20 +103,12 @@ pub(crate) fn construct(
             let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
             out.add_edge_mult(s, e, m);
         };
-        block_a(a, b, op, data_ref, 0, na, &mut counts, &mut |s, e, m| {
+        block_a(&inputs, 0, na, &mut counts, &mut |s, e, m| {
             sink(a, &mut a_ids, s, e, m)
         })?;
-        block_b(
-            a,
-            b,
-            op,
-            data_ref,
-            &by_b,
-            0,
-            nb,
-            &mut counts,
-            &mut |s, e, m| sink(b, &mut b_ids, s, e, m),
-        )?;
+        block_b(&inputs, 0, nb, &mut counts, &mut |s, e, m| {
+            sink(b, &mut b_ids, s, e, m)
+        })?;
         data.composite_counts = counts;
         return Ok(out);
     }
@@ -116,18 +126,8 @@ pub(crate) fn construct(
         let mut block = Block::default();
         let mut sink = |s, e, m| block.pieces.push((s, e, m));
         match side {
-            Side::A => block_a(a, b, op, data_ref, lo, hi, &mut block.counts, &mut sink)?,
-            Side::B => block_b(
-                a,
-                b,
-                op,
-                data_ref,
-                &by_b,
-                lo,
-                hi,
-                &mut block.counts,
-                &mut sink,
-            )?,
+            Side::A => block_a(&inputs, lo, hi, &mut block.counts, &mut sink)?,
+            Side::B => block_b(&inputs, lo, hi, &mut block.counts, &mut sink)?,
         }
         Ok(block)
     };
@@ -151,15 +151,13 @@ pub(crate) fn construct(
 
 /// The retained parts of A's edges `lo..hi` (eq. 4.7-4.8 and section 4.6).
 fn block_a(
-    a: &PolygonSet2,
-    b: &PolygonSet2,
-    op: BooleanOp,
-    data: &LevelData,
+    inputs: &Inputs<'_>,
     lo: usize,
     hi: usize,
     counts: &mut Vec<(u32, u32)>,
     sink: &mut impl FnMut(u32, u32, i32),
 ) -> Result<(), BooleanError> {
+    let Inputs { a, b, op, data, .. } = *inputs;
     let (ca, _, ci) = op.coefficients();
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
@@ -196,16 +194,19 @@ fn block_a(
 /// counts enter with the opposite sign, since e_A crossing e_B left to
 /// right means e_B entering A. `by_b` orders `data.x11` by edge of B.
 fn block_b(
-    a: &PolygonSet2,
-    b: &PolygonSet2,
-    op: BooleanOp,
-    data: &LevelData,
-    by_b: &[u32],
+    inputs: &Inputs<'_>,
     lo: usize,
     hi: usize,
     counts: &mut Vec<(u32, u32)>,
     sink: &mut impl FnMut(u32, u32, i32),
 ) -> Result<(), BooleanError> {
+    let Inputs {
+        a,
+        b,
+        op,
+        data,
+        by_b,
+    } = *inputs;
     let (_, cb, ci) = op.coefficients();
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
