@@ -728,14 +728,20 @@ fn propagate(order: &[(u32, Source)], cast: &[i32], delta: &[i32], n: usize) -> 
     value
 }
 
-/// The widening of every edge box's y range, on each side: twice the
-/// `y_at_x` bound `4 u L` of section 8.2 (defence in depth: a wider margin
-/// only adds candidate pairs and near terms). It also covers the rounding
-/// of `y0 - margin` and `y1 + margin` themselves (at most `u L` each), so
-/// a computed `y0`/`y1` still clears the true end points' range by more than
-/// `4 u L`.
+/// [`margin_for`] the coordinates of `a` and `b`.
+#[cfg(test)]
 fn margin(a: &PolygonSet2, b: &PolygonSet2) -> f64 {
-    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
+    margin_for(a.max_abs_coordinate().max(b.max_abs_coordinate()))
+}
+
+/// The widening of every edge box's y range, on each side, for operands
+/// whose largest coordinate magnitude is `max_abs`: twice the `y_at_x`
+/// bound `4 u L` of section 8.2 (defence in depth: a wider margin only adds
+/// candidate pairs and near terms). It also covers the rounding of
+/// `y0 - margin` and `y1 + margin` themselves (at most `u L` each), so a
+/// computed `y0`/`y1` still clears the true end points' range by more than
+/// `4 u L`.
+fn margin_for(max_abs: f64) -> f64 {
     2.0 * robust_arith::y_at_x_error_bound(max_abs)
 }
 
@@ -752,11 +758,12 @@ fn margin(a: &PolygonSet2, b: &PolygonSet2) -> f64 {
 pub(crate) fn level2_fast(
     a: &PolygonSet2,
     b: &PolygonSet2,
+    max_abs: f64,
 ) -> Result<(LevelData, Level2Times), BooleanError> {
     let mut times = Level2Times::default();
     let parallel = a.edge_count() + b.edge_count() >= PARALLEL_EDGES;
     let clock = Instant::now();
-    let margin = margin(a, b);
+    let margin = margin_for(max_abs);
     let (boxes_a, boxes_b) = join(parallel, || edge_boxes(a, margin), || edge_boxes(b, margin));
     let boxes_time = ms(clock);
 
