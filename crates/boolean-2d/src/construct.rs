@@ -336,3 +336,23 @@ fn emit(
         ))
     })
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use test_support::rng::Xorshift64;
+
+    #[test]
+    fn crossings_by_b_as_a_sort_by_edge_then_index() {
+        let mut rng = Xorshift64::new(0x0dd_ba11_5eed);
+        for round in 0..200 {
+            let b_edges = 1 + rng.below(40) as usize;
+            let x11: Vec<(u32, u32, i32, [f64; 2])> = (0..rng.below(200))
+                .map(|i| (i as u32, rng.below(b_edges as u64) as u32, 1, [0.0; 2]))
+                .collect();
+            let mut want: Vec<u32> = (0..x11.len() as u32).collect();
+            want.sort_by_key(|&j| (x11[j as usize].1, j));
+            assert_eq!(order_by_b(&x11, b_edges), want, "round {round}");
+        }
+    }
+}

@@ -1037,6 +1037,26 @@ mod tests {
     }
 
     #[test]
+    fn pairs_sort_as_a_comparison_sort_does() {
+        let mut rng = Xorshift64::new(0x51f1_5eed_0bad_cafe);
+        for round in 0..200 {
+            let a_edges = 1 + rng.below(50) as usize;
+            let b_edges = 1 + rng.below(50) as u64;
+            let mut all: Vec<(u32, u32)> = (0..rng.below(300))
+                .map(|_| (rng.below(a_edges as u64) as u32, rng.below(b_edges) as u32))
+                .collect();
+            all.sort_unstable();
+            all.dedup();
+            // The sweep's order: any permutation.
+            let mut shuffled = all.clone();
+            for i in (1..shuffled.len()).rev() {
+                shuffled.swap(i, rng.below(i as u64 + 1) as usize);
+            }
+            assert_eq!(sort_pairs(&shuffled, a_edges), all, "round {round}");
+        }
+    }
+
+    #[test]
     fn fenwick_adds_suffixes() {
         let mut f = Fenwick::new(5);
         f.add_from(0, 3);
