@@ -1041,7 +1041,7 @@ mod tests {
         let mut rng = Xorshift64::new(0x51f1_5eed_0bad_cafe);
         for round in 0..200 {
             let a_edges = 1 + rng.below(50) as usize;
-            let b_edges = 1 + rng.below(50) as u64;
+            let b_edges = 1 + rng.below(50);
             let mut all: Vec<(u32, u32)> = (0..rng.below(300))
                 .map(|_| (rng.below(a_edges as u64) as u32, rng.below(b_edges) as u32))
                 .collect();
