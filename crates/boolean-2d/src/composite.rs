@@ -47,36 +47,57 @@ impl CompositeEdge {
 ///
 /// Returns `None` when the counts differ (which Theorem 2 rules out).
 pub fn pair_composite_edge(edge: &mut CompositeEdge, out: &mut Vec<(u32, u32)>) -> Option<()> {
-    if !edge.is_balanced() {
+    pair_along(&mut edge.starts, &mut edge.ends, |v| v.1, |v| v.0, out)
+}
+
+/// [`pair_composite_edge`] on start- and end-vertices of any form: `pos`
+/// gives a vertex's position (read only when there are two or more pairs)
+/// and `id` its id.
+pub(crate) fn pair_along<T>(
+    starts: &mut [T],
+    ends: &mut [T],
+    pos: impl Fn(&T) -> [f64; 2],
+    id: impl Fn(&T) -> u32,
+    out: &mut Vec<(u32, u32)>,
+) -> Option<()> {
+    if starts.len() != ends.len() {
         return None;
     }
-    match edge.starts.len() {
+    match starts.len() {
         0 => return Some(()),
         1 => {
-            out.push((edge.starts[0].0, edge.ends[0].0));
+            out.push((id(&starts[0]), id(&ends[0])));
             return Some(());
         }
         _ => {}
     }
     // eq. 4.14
     let mut v = [0.0f64; 2];
-    for &(_, p) in &edge.ends {
+    for e in ends.iter() {
+        let p = pos(e);
         v[0] += p[0];
         v[1] += p[1];
     }
-    for &(_, p) in &edge.starts {
+    for s in starts.iter() {
+        let p = pos(s);
         v[0] -= p[0];
         v[1] -= p[1];
     }
-    let key = |p: &[f64; 2]| p[0] * v[0] + p[1] * v[1];
-    // eq. 4.15-4.16: a stable sort by the projection onto v.
-    edge.starts.sort_by(|a, b| key(&a.1).total_cmp(&key(&b.1)));
-    edge.ends.sort_by(|a, b| key(&a.1).total_cmp(&key(&b.1)));
-    out.extend(
-        edge.starts
-            .iter()
-            .zip(edge.ends.iter())
-            .map(|(s, e)| (s.0, e.0)),
-    );
+    let key = |t: &T| {
+        let p = pos(t);
+        p[0] * v[0] + p[1] * v[1]
+    };
+    // eq. 4.15-4.16: a stable sort by the projection onto v (two items,
+    // the common case: swapped exactly when the second is less).
+    for list in [&mut *starts, &mut *ends] {
+        if let [first, second] = list {
+            if key(second).total_cmp(&key(first)).is_lt() {
+                std::mem::swap(first, second);
+            }
+        } else {
+            list.sort_by(|a, b| key(a).total_cmp(&key(b)));
+        }
+    }
+    out.extend(starts.iter().zip(ends.iter()).map(|(s, e)| (id(s), id(e))));
     Some(())
 }

@@ -1,9 +1,10 @@
 //! Levels 3 and 4 of the 2D Boolean: inclusion values (eq. 4.7-4.13),
 //! composite edges (eq. 4.14-4.16) and the resulting shape.
 
-use crate::composite::{pair_composite_edge, CompositeEdge};
+use crate::composite::pair_along;
 use crate::error::BooleanError;
 use crate::level_data::LevelData;
+use rayon::prelude::*;
 use topology::BooleanOp;
 use topology::PolygonSet2;
 
@@ -27,15 +28,65 @@ impl Ids {
     }
 }
 
+/// Edge counts (of both operands together) above which the composite
+/// edges are paired on the rayon pool (when it has two threads or more),
+/// in blocks of [`EDGES_PER_TASK`]; the output is the same either way (the
+/// blocks are numbered in order).
+const PARALLEL_EDGES: usize = 8192;
+
+/// Edges per parallel task of [`construct`].
+const EDGES_PER_TASK: usize = 4096;
+
+/// The retained parts of a run of one operand's edges: `(start, end,
+/// multiplicity)` with ids tagged as in [`resolve`], and the composite
+/// edge counts of `LevelData::composite_counts`, both in edge order.
+#[derive(Default)]
+struct Block {
+    pieces: Vec<(u32, u32, i32)>,
+    counts: Vec<(u32, u32)>,
+}
+
+/// What every block of edges reads: the operands, the operation, the
+/// level-2 data, and `data.x11` ordered by edge of B ([`order_by_b`]).
+#[derive(Clone, Copy)]
+struct Inputs<'a> {
+    a: &'a PolygonSet2,
+    b: &'a PolygonSet2,
+    op: BooleanOp,
+    data: &'a LevelData,
+    by_b: &'a [u32],
+}
+
+/// Which operand a block of edges belongs to.
+#[derive(Clone, Copy)]
+enum Side {
+    A,
+    B,
+}
+
 /// Builds the result from level-2 data. `data.x11` must be sorted by edge
 /// of A then edge of B; fills `data.composite_counts`.
+///
+/// Each edge's composite edge is paired on its own (eq. 4.14-4.16), in
+/// blocks of consecutive edges (in parallel on long inputs); the output
+/// vertices are then numbered in order of first use over A's edges, then
+/// B's, and the edges added in that order.
 pub(crate) fn construct(
     a: &PolygonSet2,
     b: &PolygonSet2,
     op: BooleanOp,
     data: &mut LevelData,
 ) -> Result<PolygonSet2, BooleanError> {
-    let (ca, cb, ci) = op.coefficients();
+    let by_b = order_by_b(&data.x11, b.edge_count());
+    let (na, nb) = (a.edge_count(), b.edge_count());
+    let data_ref: &LevelData = data;
+    let inputs = Inputs {
+        a,
+        b,
+        op,
+        data: data_ref,
+        by_b: &by_b,
+    };
     let mut out = PolygonSet2::with_capacity(
         a.vertex_count() + b.vertex_count() + data.x11.len(),
         a.edge_count() + b.edge_count() + 2 * data.x11.len(),
@@ -43,13 +94,75 @@ pub(crate) fn construct(
     let mut a_ids = Ids::new(a.vertex_count());
     let mut b_ids = Ids::new(b.vertex_count());
     let mut x_ids = Ids::new(data.x11.len());
-    let mut edge = CompositeEdge::default();
-    let mut pairs = Vec::new();
-    data.composite_counts.clear();
+    let mut counts = Vec::with_capacity(na + nb);
 
-    // Retained parts of A's edges (eq. 4.7-4.8 and section 4.6).
-    let mut k = 0;
-    for (ia, ea) in a.edges().iter().enumerate() {
+    if na + nb < PARALLEL_EDGES || rayon::current_num_threads() < 2 {
+        // One pass: every retained part goes to the output at once.
+        let mut sink = |own: &PolygonSet2, own_ids: &mut Ids, s: u32, e: u32, m: i32| {
+            let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
+            let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
+            out.add_edge_mult(s, e, m);
+        };
+        block_a(&inputs, 0, na, &mut counts, &mut |s, e, m| {
+            sink(a, &mut a_ids, s, e, m)
+        })?;
+        block_b(&inputs, 0, nb, &mut counts, &mut |s, e, m| {
+            sink(b, &mut b_ids, s, e, m)
+        })?;
+        data.composite_counts = counts;
+        return Ok(out);
+    }
+
+    let mut tasks: Vec<(Side, usize, usize)> = Vec::new();
+    for (side, n) in [(Side::A, na), (Side::B, nb)] {
+        let mut lo = 0;
+        while lo < n {
+            let hi = lo + EDGES_PER_TASK.min(n - lo);
+            tasks.push((side, lo, hi));
+            lo = hi;
+        }
+    }
+    let run = |&(side, lo, hi): &(Side, usize, usize)| -> Result<Block, BooleanError> {
+        let mut block = Block::default();
+        let mut sink = |s, e, m| block.pieces.push((s, e, m));
+        match side {
+            Side::A => block_a(&inputs, lo, hi, &mut block.counts, &mut sink)?,
+            Side::B => block_b(&inputs, lo, hi, &mut block.counts, &mut sink)?,
+        }
+        Ok(block)
+    };
+    let blocks: Vec<Result<Block, BooleanError>> = tasks.par_iter().map(run).collect();
+    for (block, &(side, _, _)) in blocks.into_iter().zip(&tasks) {
+        let block = block?;
+        let (own, own_ids) = match side {
+            Side::A => (a, &mut a_ids),
+            Side::B => (b, &mut b_ids),
+        };
+        for &(s, e, m) in &block.pieces {
+            let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
+            let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
+            out.add_edge_mult(s, e, m);
+        }
+        counts.extend_from_slice(&block.counts);
+    }
+    data.composite_counts = counts;
+    Ok(out)
+}
+
+/// The retained parts of A's edges `lo..hi` (eq. 4.7-4.8 and section 4.6).
+fn block_a(
+    inputs: &Inputs<'_>,
+    lo: usize,
+    hi: usize,
+    counts: &mut Vec<(u32, u32)>,
+    sink: &mut impl FnMut(u32, u32, i32),
+) -> Result<(), BooleanError> {
+    let Inputs { a, b, op, data, .. } = *inputs;
+    let (ca, _, ci) = op.coefficients();
+    let mut edge = Ends::default();
+    let mut pairs = Vec::new();
+    let mut k = data.x11.partition_point(|h| (h.0 as usize) < lo);
+    for (ia, ea) in a.edges().iter().enumerate().take(hi).skip(lo) {
         while k < data.x11.len() && (data.x11[k].0 as usize) < ia {
             k += 1;
         }
@@ -59,31 +172,46 @@ pub(crate) fn construct(
         edge.clear();
         let i_e = ca + ci * data.x02[ea.end as usize]; // eq. 4.7 at v_e
         let i_s = ca + ci * data.x02[ea.start as usize]; // eq. 4.7 at v_s
-        edge.assign(ea.end, a.vertex(ea.end), i_e);
-        edge.assign(ea.start, a.vertex(ea.start), -i_s);
+        edge.assign(ea.end, i_e);
+        edge.assign(ea.start, -i_s);
         let mut j = k;
         while j < data.x11.len() && data.x11[j].0 as usize == ia {
-            let (_, ib, x, p) = data.x11[j];
+            let (_, ib, x, _) = data.x11[j];
             let mb = b.edges()[ib as usize].mult;
             // eq. 4.8: I11 = c_I X11, once per unit of B's edge.
-            edge.assign(j as u32 | TAG_X, p, ci * x * mb);
+            edge.assign(j as u32 | TAG_X, ci * x * mb);
             j += 1;
         }
-        emit(&mut edge, &mut pairs, data, ia, "A")?;
+        emit(&mut edge, &mut pairs, counts, a, data, ia, "A")?;
         for &(s, e) in &pairs {
-            let s = resolve(s, a, &mut a_ids, data, &mut x_ids, &mut out);
-            let e = resolve(e, a, &mut a_ids, data, &mut x_ids, &mut out);
-            out.add_edge_mult(s, e, ea.mult);
+            sink(s, e, ea.mult);
         }
     }
+    Ok(())
+}
 
-    // Retained parts of B's edges (eq. 4.9-4.10): the 2D X11 counts enter
-    // with the opposite sign, since e_A crossing e_B left to right means
-    // e_B entering A.
-    let mut by_b: Vec<u32> = (0..data.x11.len() as u32).collect();
-    by_b.sort_by_key(|&j| (data.x11[j as usize].1, j));
-    let mut k = 0;
-    for (ib, eb) in b.edges().iter().enumerate() {
+/// The retained parts of B's edges `lo..hi` (eq. 4.9-4.10): the 2D X11
+/// counts enter with the opposite sign, since e_A crossing e_B left to
+/// right means e_B entering A. `by_b` orders `data.x11` by edge of B.
+fn block_b(
+    inputs: &Inputs<'_>,
+    lo: usize,
+    hi: usize,
+    counts: &mut Vec<(u32, u32)>,
+    sink: &mut impl FnMut(u32, u32, i32),
+) -> Result<(), BooleanError> {
+    let Inputs {
+        a,
+        b,
+        op,
+        data,
+        by_b,
+    } = *inputs;
+    let (_, cb, ci) = op.coefficients();
+    let mut edge = Ends::default();
+    let mut pairs = Vec::new();
+    let mut k = by_b.partition_point(|&j| (data.x11[j as usize].1 as usize) < lo);
+    for (ib, eb) in b.edges().iter().enumerate().take(hi).skip(lo) {
         while k < by_b.len() && (data.x11[by_b[k] as usize].1 as usize) < ib {
             k += 1;
         }
@@ -94,23 +222,41 @@ pub(crate) fn construct(
         let mut j = k;
         while j < by_b.len() && data.x11[by_b[j] as usize].1 as usize == ib {
             let idx = by_b[j];
-            let (ia, _, x, p) = data.x11[idx as usize];
+            let (ia, _, x, _) = data.x11[idx as usize];
             let ma = a.edges()[ia as usize].mult;
-            edge.assign(idx | TAG_X, p, -ci * x * ma);
+            edge.assign(idx | TAG_X, -ci * x * ma);
             j += 1;
         }
         let i_e = cb + ci * data.x20[eb.end as usize]; // eq. 4.10 at v_e
         let i_s = cb + ci * data.x20[eb.start as usize];
-        edge.assign(eb.end, b.vertex(eb.end), i_e);
-        edge.assign(eb.start, b.vertex(eb.start), -i_s);
-        emit(&mut edge, &mut pairs, data, ib, "B")?;
+        edge.assign(eb.end, i_e);
+        edge.assign(eb.start, -i_s);
+        emit(&mut edge, &mut pairs, counts, b, data, ib, "B")?;
         for &(s, e) in &pairs {
-            let s = resolve(s, b, &mut b_ids, data, &mut x_ids, &mut out);
-            let e = resolve(e, b, &mut b_ids, data, &mut x_ids, &mut out);
-            out.add_edge_mult(s, e, eb.mult);
+            sink(s, e, eb.mult);
         }
     }
-    Ok(out)
+    Ok(())
+}
+
+/// The indices of `x11` ordered by edge of B, then index: a counting sort
+/// by edge of B (`b_edges` of them), which keeps the index order within
+/// each edge.
+fn order_by_b(x11: &[(u32, u32, i32, [f64; 2])], b_edges: usize) -> Vec<u32> {
+    let mut fill = vec![0u32; b_edges + 1];
+    for h in x11 {
+        fill[h.1 as usize + 1] += 1;
+    }
+    for i in 0..b_edges {
+        fill[i + 1] += fill[i];
+    }
+    let mut by_b = vec![0u32; x11.len()];
+    for (j, h) in x11.iter().enumerate() {
+        let slot = &mut fill[h.1 as usize];
+        by_b[*slot as usize] = j as u32;
+        *slot += 1;
+    }
+    by_b
 }
 
 /// Marks an id as an index into `data.x11` rather than an input vertex.
@@ -132,21 +278,81 @@ fn resolve(
     }
 }
 
+/// A composite edge under construction (section 4.6) by vertex id alone
+/// (ids tagged as in [`resolve`]); positions are looked up only to order
+/// two or more pairs (eq. 4.14-4.16).
+#[derive(Default)]
+struct Ends {
+    starts: Vec<u32>,
+    ends: Vec<u32>,
+}
+
+impl Ends {
+    /// Assigns vertex `id` a net end-vertex count `n`, as
+    /// [`crate::CompositeEdge::assign`] does.
+    #[inline]
+    fn assign(&mut self, id: u32, n: i32) {
+        let list = if n > 0 {
+            &mut self.ends
+        } else {
+            &mut self.starts
+        };
+        for _ in 0..n.unsigned_abs() {
+            list.push(id);
+        }
+    }
+
+    fn clear(&mut self) {
+        self.starts.clear();
+        self.ends.clear();
+    }
+}
+
+/// Pairs the composite edge of edge `index` of `operand` (`own`), recording
+/// its counts.
 fn emit(
-    edge: &mut CompositeEdge,
+    edge: &mut Ends,
     pairs: &mut Vec<(u32, u32)>,
-    data: &mut LevelData,
+    counts: &mut Vec<(u32, u32)>,
+    own: &PolygonSet2,
+    data: &LevelData,
     index: usize,
     operand: &str,
 ) -> Result<(), BooleanError> {
     pairs.clear();
-    data.composite_counts
-        .push((edge.starts.len() as u32, edge.ends.len() as u32));
-    pair_composite_edge(edge, pairs).ok_or_else(|| {
+    counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
+    let pos = |&id: &u32| {
+        if id & TAG_X != 0 {
+            data.x11[(id & !TAG_X) as usize].3
+        } else {
+            own.vertex(id)
+        }
+    };
+    pair_along(&mut edge.starts, &mut edge.ends, pos, |&id| id, pairs).ok_or_else(|| {
         BooleanError::Internal(format!(
             "Theorem 2 violated: composite edge of {operand}'s edge {index} has {} starts and {} ends",
             edge.starts.len(),
             edge.ends.len()
         ))
     })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use test_support::rng::Xorshift64;
+
+    #[test]
+    fn crossings_by_b_as_a_sort_by_edge_then_index() {
+        let mut rng = Xorshift64::new(0x0dd_ba11_5eed);
+        for round in 0..200 {
+            let b_edges = 1 + rng.below(40) as usize;
+            let x11: Vec<(u32, u32, i32, [f64; 2])> = (0..rng.below(200))
+                .map(|i| (i as u32, rng.below(b_edges as u64) as u32, 1, [0.0; 2]))
+                .collect();
+            let mut want: Vec<u32> = (0..x11.len() as u32).collect();
+            want.sort_by_key(|&j| (x11[j as usize].1, j));
+            assert_eq!(order_by_b(&x11, b_edges), want, "round {round}");
+        }
+    }
 }

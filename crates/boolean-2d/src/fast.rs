@@ -31,8 +31,12 @@ use topology::{Edge2, PolygonSet2};
 /// way (hits are sorted by edge indices afterwards).
 const PARALLEL_PAIRS: usize = 2048;
 
-/// Edge counts above which the two operands' ray casts run side by side.
-const PARALLEL_EDGES: usize = 16384;
+/// Edge counts (both operands) above which the independent parts of level
+/// 2 run side by side on the rayon pool: the two operands' edge boxes,
+/// then the broad phase and `X11` beside the propagation orders and ray
+/// casts (themselves one operand beside the other). The output is the same
+/// either way.
+const PARALLEL_EDGES: usize = 4096;
 
 /// The plain active-list sweeps give up (and the worst-case structures take
 /// over) once they have examined more than `LIST_WORK_FACTOR * (m + r) +
@@ -127,7 +131,10 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
             (total_order_key(p[0].min(q[0])), i as u32)
         })
         .collect();
-    order.sort_unstable();
+    // The keys are distinct (the index breaks ties), so any sort gives this
+    // order; the stable one merges the few monotone runs of a polygon's
+    // x-coordinates instead of partitioning.
+    order.sort();
     order
         .into_iter()
         .map(|(_, i)| {
@@ -258,27 +265,97 @@ fn pairs_by_trees(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
     pairs
 }
 
-/// `X11` on every candidate pair; the non-zero ones sorted by edge of A,
-/// then edge of B (the order [`LevelData::x11`] documents).
+/// The candidate pairs sorted by edge of A, then edge of B (each pair
+/// occurs once): a counting sort by edge of A, `a_edges` the number of A's
+/// edges, then an insertion sort of each edge's few partners. `O(n + c)`,
+/// against `O(c log c)` for a comparison sort of the sweep's x order.
+fn sort_pairs(pairs: &[(u32, u32)], a_edges: usize) -> Vec<(u32, u32)> {
+    let mut start = vec![0u32; a_edges + 1];
+    for &(ia, _) in pairs {
+        start[ia as usize + 1] += 1;
+    }
+    for i in 0..a_edges {
+        start[i + 1] += start[i];
+    }
+    let mut sorted = vec![(0u32, 0u32); pairs.len()];
+    let mut fill = start.clone();
+    for &p in pairs {
+        let slot = &mut fill[p.0 as usize];
+        sorted[*slot as usize] = p;
+        *slot += 1;
+    }
+    for w in start.windows(2) {
+        let bucket = &mut sorted[w[0] as usize..w[1] as usize];
+        for i in 1..bucket.len() {
+            let mut j = i;
+            while j > 0 && bucket[j - 1].1 > bucket[j].1 {
+                bucket.swap(j - 1, j);
+                j -= 1;
+            }
+        }
+    }
+    sorted
+}
+
+/// The fewest candidate pairs per parallel task of [`intersections`].
+const PAIRS_PER_TASK: usize = 4096;
+
+/// `X11` on every candidate pair, given sorted by edge of A, then edge of
+/// B; the non-zero ones in that order (the order [`LevelData::x11`]
+/// documents). Long lists run in parallel by consecutive blocks, which
+/// keeps the order without a sort of the hits.
 fn intersections(
     a: &PolygonSet2,
     b: &PolygonSet2,
     pairs: &[(u32, u32)],
 ) -> Result<Vec<Hit11>, BooleanError> {
-    let eval = |&(ia, ib): &(u32, u32)| {
+    let eval = |ia: u32, ib: u32| -> Result<Option<Hit11>, BooleanError> {
         let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
         let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
-        x11(&as_, &ae, &bs, &be)
-            .map(|hit| hit.map(|h| (ia, ib, h.value, h.a)))
-            .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))
+        let hit = x11(&as_, &ae, &bs, &be)
+            .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))?;
+        Ok(hit.map(|h| (ia, ib, h.value, h.a)))
     };
-    let found: Vec<Option<Hit11>> = if pairs.len() >= PARALLEL_PAIRS {
-        pairs.par_iter().map(eval).collect::<Result<_, _>>()?
-    } else {
-        pairs.iter().map(eval).collect::<Result<_, _>>()?
-    };
-    let mut hits: Vec<_> = found.into_iter().flatten().collect();
-    hits.sort_unstable_by_key(|h| (h.0, h.1));
+    let threads = rayon::current_num_threads();
+    if pairs.len() < PARALLEL_PAIRS || threads < 2 {
+        // About two of three candidate pairs cross on the n-gons of Table
+        // 7.4; the vector grows where more do.
+        let mut hits = Vec::with_capacity(pairs.len() - pairs.len() / 4);
+        for &(ia, ib) in pairs {
+            if let Some(h) = eval(ia, ib)? {
+                hits.push(h);
+            }
+        }
+        return Ok(hits);
+    }
+    // A few blocks per thread, so that a busy thread's share is taken over.
+    // Each block writes its hits to the start of its own region of one
+    // zeroed vector (fresh zeroed memory is mapped on first write, so the
+    // regions' unused tails cost nothing), then the regions are closed up
+    // in order: no second vector and no copy into one.
+    let per_task = pairs.len().div_ceil(4 * threads).max(PAIRS_PER_TASK);
+    let mut hits: Vec<Hit11> = vec![(0, 0, 0, [0.0; 2]); pairs.len()];
+    let found: Vec<usize> = hits
+        .par_chunks_mut(per_task)
+        .zip(pairs.par_chunks(per_task))
+        .map(|(region, pairs)| -> Result<usize, BooleanError> {
+            let mut n = 0;
+            for &(ia, ib) in pairs {
+                if let Some(h) = eval(ia, ib)? {
+                    region[n] = h;
+                    n += 1;
+                }
+            }
+            Ok(n)
+        })
+        .collect::<Result<_, _>>()?;
+    let mut len = 0;
+    for (k, &n) in found.iter().enumerate() {
+        let start = k * per_task;
+        hits.copy_within(start..start + n, len);
+        len += n;
+    }
+    hits.truncate(len);
     Ok(hits)
 }
 
@@ -426,7 +503,11 @@ fn cast_by_lists(
     for (handled, q) in by_x.into_iter().enumerate() {
         let v = points[q as usize];
         while next < boxes.len() && boxes[next].x0 <= v[0] {
-            active.push(boxes[next]);
+            // A box that ended left of this query ends left of every later
+            // one (the queries come by ascending x): never kept.
+            if boxes[next].x1 >= v[0] {
+                active.push(boxes[next]);
+            }
             next += 1;
         }
         work += active.len();
@@ -647,14 +728,20 @@ fn propagate(order: &[(u32, Source)], cast: &[i32], delta: &[i32], n: usize) -> 
     value
 }
 
-/// The widening of every edge box's y range, on each side: twice the
-/// `y_at_x` bound `4 u L` of section 8.2 (defence in depth: a wider margin
-/// only adds candidate pairs and near terms). It also covers the rounding
-/// of `y0 - margin` and `y1 + margin` themselves (at most `u L` each), so
-/// a computed `y0`/`y1` still clears the true end points' range by more than
-/// `4 u L`.
+/// [`margin_for`] the coordinates of `a` and `b`.
+#[cfg(test)]
 fn margin(a: &PolygonSet2, b: &PolygonSet2) -> f64 {
-    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
+    margin_for(a.max_abs_coordinate().max(b.max_abs_coordinate()))
+}
+
+/// The widening of every edge box's y range, on each side, for operands
+/// whose largest coordinate magnitude is `max_abs`: twice the `y_at_x`
+/// bound `4 u L` of section 8.2 (defence in depth: a wider margin only adds
+/// candidate pairs and near terms). It also covers the rounding of
+/// `y0 - margin` and `y1 + margin` themselves (at most `u L` each), so a
+/// computed `y0`/`y1` still clears the true end points' range by more than
+/// `4 u L`.
+fn margin_for(max_abs: f64) -> f64 {
     2.0 * robust_arith::y_at_x_error_bound(max_abs)
 }
 
@@ -671,38 +758,55 @@ fn margin(a: &PolygonSet2, b: &PolygonSet2) -> f64 {
 pub(crate) fn level2_fast(
     a: &PolygonSet2,
     b: &PolygonSet2,
+    max_abs: f64,
 ) -> Result<(LevelData, Level2Times), BooleanError> {
     let mut times = Level2Times::default();
+    let parallel = a.edge_count() + b.edge_count() >= PARALLEL_EDGES;
     let clock = Instant::now();
-    let margin = margin(a, b);
-    let boxes_a = edge_boxes(a, margin);
-    let boxes_b = edge_boxes(b, margin);
-    let pairs = overlapping_pairs(&boxes_a, &boxes_b);
-    times.broad_phase = ms(clock);
+    let margin = margin_for(max_abs);
+    let (boxes_a, boxes_b) = join(parallel, || edge_boxes(a, margin), || edge_boxes(b, margin));
+    let boxes_time = ms(clock);
+
+    // The candidate pairs and their `X11`, beside the propagation orders
+    // and the ray casts, which need neither.
+    let crossings = || -> Result<_, BooleanError> {
+        let clock = Instant::now();
+        let pairs = sort_pairs(&overlapping_pairs(&boxes_a, &boxes_b), a.edge_count());
+        let broad_phase = ms(clock);
+        let clock = Instant::now();
+        let hits = intersections(a, b, &pairs)?;
+        Ok((hits, broad_phase, ms(clock)))
+    };
+    let windings = || {
+        let clock = Instant::now();
+        let casts = |order: &[(u32, Source)]| -> Vec<u32> {
+            order
+                .iter()
+                .filter(|(_, s)| matches!(s, Source::Cast))
+                .map(|&(v, _)| v)
+                .collect()
+        };
+        let side_a = || {
+            let order = propagation_order(a);
+            let cast = cast_rays(&casts(&order), a, &boxes_b, b, Ray::Up);
+            (order, cast)
+        };
+        let side_b = || {
+            let order = propagation_order(b);
+            let cast = cast_rays(&casts(&order), b, &boxes_a, a, Ray::Down);
+            (order, cast)
+        };
+        let sides = join(parallel, side_a, side_b);
+        (sides, ms(clock))
+    };
+    let (crossings, ((order_cast_a, order_cast_b), cast_time)) =
+        join(parallel, crossings, windings);
+    let (hits, broad_phase, x11_time) = crossings?;
+    times.broad_phase = boxes_time + broad_phase;
+    times.intersections = x11_time;
 
     let clock = Instant::now();
-    let hits = intersections(a, b, &pairs)?;
-    drop(pairs);
-    times.intersections = ms(clock);
-
-    let clock = Instant::now();
-    let order_a = propagation_order(a);
-    let order_b = propagation_order(b);
-    let casts = |order: &[(u32, Source)]| -> Vec<u32> {
-        order
-            .iter()
-            .filter(|(_, s)| matches!(s, Source::Cast))
-            .map(|&(v, _)| v)
-            .collect()
-    };
-    let (cast_a, cast_b) = (casts(&order_a), casts(&order_b));
-    let cast_x02 = || cast_rays(&cast_a, a, &boxes_b, b, Ray::Up);
-    let cast_x20 = || cast_rays(&cast_b, b, &boxes_a, a, Ray::Down);
-    let (x02_cast, x20_cast) = if a.edge_count() + b.edge_count() >= PARALLEL_EDGES {
-        rayon::join(cast_x02, cast_x20)
-    } else {
-        (cast_x02(), cast_x20())
-    };
+    let ((order_a, x02_cast), (order_b, x20_cast)) = (order_cast_a, order_cast_b);
     let delta_a: Vec<i32> = crossing_sums(&hits, a.edge_count(), true, b.edges())
         .into_iter()
         .map(|d| -d)
@@ -710,7 +814,7 @@ pub(crate) fn level2_fast(
     let delta_b = crossing_sums(&hits, b.edge_count(), false, a.edges());
     let x02 = propagate(&order_a, &x02_cast, &delta_a, a.vertex_count());
     let x20 = propagate(&order_b, &x20_cast, &delta_b, b.vertex_count());
-    times.winding = ms(clock);
+    times.winding = cast_time + ms(clock);
 
     Ok((
         LevelData {
@@ -721,6 +825,19 @@ pub(crate) fn level2_fast(
         },
         times,
     ))
+}
+
+/// `(f(), g())`, side by side on the rayon pool when `parallel`.
+fn join<A: Send, B: Send>(
+    parallel: bool,
+    f: impl FnOnce() -> A + Send,
+    g: impl FnOnce() -> B + Send,
+) -> (A, B) {
+    if parallel {
+        rayon::join(f, g)
+    } else {
+        (f(), g())
+    }
 }
 
 #[cfg(test)]
@@ -916,6 +1033,26 @@ mod tests {
                 let sweeps = cast_by_sweeps(&queries, &own, &boxes, &other, ray);
                 assert_eq!(sweeps, want, "sweeps, {ray:?}, round {round}");
             }
+        }
+    }
+
+    #[test]
+    fn pairs_sort_as_a_comparison_sort_does() {
+        let mut rng = Xorshift64::new(0x51f1_5eed_0bad_cafe);
+        for round in 0..200 {
+            let a_edges = 1 + rng.below(50) as usize;
+            let b_edges = 1 + rng.below(50);
+            let mut all: Vec<(u32, u32)> = (0..rng.below(300))
+                .map(|_| (rng.below(a_edges as u64) as u32, rng.below(b_edges) as u32))
+                .collect();
+            all.sort_unstable();
+            all.dedup();
+            // The sweep's order: any permutation.
+            let mut shuffled = all.clone();
+            for i in (1..shuffled.len()).rev() {
+                shuffled.swap(i, rng.below(i as u64 + 1) as usize);
+            }
+            assert_eq!(sort_pairs(&shuffled, a_edges), all, "round {round}");
         }
     }
 

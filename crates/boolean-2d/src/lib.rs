@@ -98,8 +98,8 @@ pub fn boolean_audit(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
-    run(a, b, op, |timings| {
-        let (data, t) = fast::level2_fast(a, b)?;
+    run(a, b, op, |timings, max_abs| {
+        let (data, t) = fast::level2_fast(a, b, max_abs)?;
         timings.broad_phase = t.broad_phase;
         timings.intersections = t.intersections;
         timings.winding = t.winding;
@@ -115,7 +115,7 @@ pub fn boolean_reference(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
-    run(a, b, op, |timings| {
+    run(a, b, op, |timings, _| {
         let clock = Instant::now();
         let data = reference::level2_brute_force(a, b)?;
         timings.intersections = ms(clock);
@@ -124,35 +124,36 @@ pub fn boolean_reference(
 }
 
 /// One Boolean: validation, level 2 by `level2` (which records its own
-/// phase timings), levels 3-4, the output.
+/// phase timings and gets the largest coordinate magnitude of both
+/// operands), levels 3-4, the output.
 fn run(
     a: &PolygonSet2,
     b: &PolygonSet2,
     op: BooleanOp,
-    level2: impl FnOnce(&mut Timings) -> Result<LevelData, BooleanError>,
+    level2: impl FnOnce(&mut Timings, f64) -> Result<LevelData, BooleanError>,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
     let start = Instant::now();
     let mut timings = Timings::default();
     validate(a, Operand::A)?;
     validate(b, Operand::B)?;
     timings.validate = ms(start);
-    let mut data = level2(&mut timings)?;
+    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
+    let mut data = level2(&mut timings, max_abs)?;
     let clock = Instant::now();
     let shape = construct::construct(a, b, op, &mut data)?;
     timings.construct = ms(clock);
     timings.total = ms(start);
-    Ok((output(a, b, shape, &data, timings), data))
+    Ok((output(max_abs, shape, &data, timings), data))
 }
 
-/// Assembles a [`BooleanOutput`].
+/// Assembles a [`BooleanOutput`]; `max_abs` is the largest coordinate
+/// magnitude of both operands.
 pub(crate) fn output(
-    a: &PolygonSet2,
-    b: &PolygonSet2,
+    max_abs: f64,
     shape: PolygonSet2,
     data: &LevelData,
     timings: Timings,
 ) -> BooleanOutput {
-    let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
     BooleanOutput {
         shape,
         epsilon: robust_arith::intersection_error_bound(max_abs),

@@ -3,7 +3,7 @@
 //! and the simplified shape for a rule.
 
 use crate::collection::EdgeCollection;
-use crate::point::Pt;
+use crate::point::{Pt, SortKey};
 use crate::winding::Winding;
 use crate::SimplifyError;
 use rayon::slice::ParallelSliceMut;
@@ -329,7 +329,7 @@ fn shape_of(v: &[[f64; 2]], sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
     let mut order: Vec<u32> = Vec::with_capacity(v.len());
     order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
     if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
-        let mut keyed: Vec<(u128, u32)> = order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
+        let mut keyed: Vec<(SortKey, u32)> = order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
         sort_unstable(&mut keyed);
         order = keyed.into_iter().map(|(_, i)| i).collect();
     }

@@ -41,7 +41,7 @@
 //! order. Per event this costs a few array updates instead of a heap
 //! operation per edge or a hash operation per update.
 
-use crate::point::Pt;
+use crate::point::{Pt, SortKey};
 use std::cmp::Reverse;
 use std::collections::BinaryHeap;
 
@@ -55,11 +55,11 @@ pub(crate) struct EndPoints {
     /// The right points of the input edges (as [`Pt::sort_key`]) with the
     /// positions they were given in, sorted by point; those before `next`
     /// have been passed. The first of a run of equal points is its slot.
-    input: Vec<(u128, u32)>,
+    input: Vec<(SortKey, u32)>,
     next: usize,
     /// Right points not covered by `input` or the pending edges, with
     /// their slots.
-    extra: BinaryHeap<Reverse<(u128, Slot)>>,
+    extra: BinaryHeap<Reverse<(SortKey, Slot)>>,
     /// The number of sweep-line edges by slot.
     count: Vec<u32>,
     /// The largest candidate passed so far: a right point beyond it is
@@ -75,7 +75,7 @@ impl EndPoints {
         // and, through the runs of equal points, every position's slot;
         // the order within a run does not matter (the stable merge sort
         // measured a little faster than the unstable one on long inputs).
-        let mut input: Vec<(u128, u32)> = rights
+        let mut input: Vec<(SortKey, u32)> = rights
             .enumerate()
             .map(|(i, r)| (r.sort_key(), i as u32))
             .collect();

@@ -34,21 +34,25 @@ impl Pt {
 
     /// An integer key whose order is the lexicographic order of points
     /// (IEEE total order per coordinate, `robust_arith::total_order_key`),
-    /// for sorting.
+    /// for sorting. Two `u64` rather than one `u128`, whose 16-byte
+    /// alignment would pad the heap and sort entries that carry it.
     #[inline]
-    pub(crate) fn sort_key(self) -> u128 {
-        (u128::from(total_order_key(self.x)) << 64) | u128::from(total_order_key(self.y))
+    pub(crate) fn sort_key(self) -> SortKey {
+        (total_order_key(self.x), total_order_key(self.y))
     }
 
     /// The point whose [`Pt::sort_key`] is `key`.
     #[inline]
-    pub(crate) fn from_sort_key(key: u128) -> Pt {
+    pub(crate) fn from_sort_key(key: SortKey) -> Pt {
         Pt {
-            x: from_total_order_key((key >> 64) as u64),
-            y: from_total_order_key(key as u64),
+            x: from_total_order_key(key.0),
+            y: from_total_order_key(key.1),
         }
     }
 }
+
+/// [`Pt::sort_key`]: compared lexicographically, x's key first.
+pub(crate) type SortKey = (u64, u64);
 
 impl PartialEq for Pt {
     #[inline]

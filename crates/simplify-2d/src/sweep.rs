@@ -26,7 +26,7 @@
 
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
 use crate::end_points::{EndPoints, Slot};
-use crate::point::Pt;
+use crate::point::{Pt, SortKey};
 use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
@@ -64,7 +64,7 @@ struct Pending<W> {
 /// itself is in slot `slot` of the buffer slab.
 #[derive(Clone, Copy)]
 struct BufferKey {
-    key: u128,
+    key: SortKey,
     slot: u32,
     /// The counting slot that this edge's left point covers
     /// (`end_points.rs`), visited when the edge is taken.
