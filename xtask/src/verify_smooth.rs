@@ -309,20 +309,83 @@ fn documented_bound(report: &smooth::SmoothReport) -> f64 {
     report.distortion_bound.max(floor)
 }
 
+/// Whether every facet of `m` lies exactly in one plane (exact
+/// `orient3d` against a non-collinear triple of its vertices; a facet with
+/// all vertices collinear counts as planar).
+fn planar_facets(m: &PolygonMesh) -> bool {
+    let collinear = |a: [f64; 3], b: [f64; 3], c: [f64; 3]| {
+        let proj = |i: usize, j: usize| {
+            robust_arith::orient2d([a[i], a[j]], [b[i], b[j]], [c[i], c[j]])
+                == std::cmp::Ordering::Equal
+        };
+        proj(0, 1) && proj(1, 2) && proj(2, 0)
+    };
+    m.facets.iter().all(|f| {
+        let mut ids: Vec<u32> = f.half_edges.iter().map(|h| h.start).collect();
+        ids.sort_unstable();
+        ids.dedup();
+        let pts: Vec<[f64; 3]> = ids.iter().map(|&i| m.vertices[i as usize]).collect();
+        if pts.len() <= 3 {
+            return true;
+        }
+        let Some(b) = pts.iter().position(|&p| p != pts[0]) else {
+            return true;
+        };
+        let Some(c) = pts.iter().position(|&p| !collinear(pts[0], pts[b], p)) else {
+            return true;
+        };
+        pts.iter().all(|&d| {
+            robust_arith::orient3d(pts[0], pts[b], pts[c], d) == std::cmp::Ordering::Equal
+        })
+    })
+}
+
+/// The volume check. The volume of a mesh with non-planar facets depends
+/// on how its facets are triangulated (for a random quad, by as much as
+/// the tetrahedron of its four corners), so it is not a property of the
+/// shape and smoothing may legitimately change it beyond any bound (the
+/// `garbage` corpus, whose cubes have random corners). Such an input is
+/// triangulated first and the triangle variant is checked on it, so that
+/// the volume before and after is that of definite triangles; an input
+/// with planar facets is checked through `smooth_mesh` itself.
 fn volume3(case: &CaseM) -> Outcome {
-    with3(case, |out| {
-        let before =
-            test_support::exact::triangle_mesh_volume(&topology::triangulate_mesh(&case.mesh));
-        let after =
-            test_support::exact::triangle_mesh_volume(&topology::triangulate_mesh(&out.shape));
-        let allowed = area3(&case.mesh) * documented_bound(&out.report) * (1.0 + 1e-9)
-            + 1e-12 * max_abs(&case.mesh.vertices).powi(3);
+    let allowed = |report: &smooth::SmoothReport| {
+        area3(&case.mesh) * documented_bound(report) * (1.0 + 1e-9)
+            + 1e-12 * max_abs(&case.mesh.vertices).powi(3)
+    };
+    let compare = |before: f64, after: f64, allowed: f64, what: &str| {
         if (after - before).abs() > allowed {
             return Err(format!(
-                "volume moved from {before} to {after} (allowed {allowed})"
+                "volume{what} moved from {before} to {after} (allowed {allowed})"
             ));
         }
         Ok(())
+    };
+    if case.mesh.check_topology().is_ok()
+        && case.mesh.validate_coordinates().is_ok()
+        && !planar_facets(&case.mesh)
+    {
+        let tri = topology::triangulate_mesh(&case.mesh);
+        return match smooth_triangles(&tri, &SmoothOptions::new(case.delta)) {
+            Ok(out) => match compare(
+                test_support::exact::triangle_mesh_volume(&tri),
+                test_support::exact::triangle_mesh_volume(&out.shape),
+                allowed(&out.report),
+                " (non-planar input, triangle variant)",
+            ) {
+                Ok(()) => Outcome::Pass,
+                Err(e) => Outcome::Fail(e),
+            },
+            Err(e) => Outcome::Fail(e.to_string()),
+        };
+    }
+    with3(case, |out| {
+        compare(
+            test_support::exact::triangle_mesh_volume(&topology::triangulate_mesh(&case.mesh)),
+            test_support::exact::triangle_mesh_volume(&topology::triangulate_mesh(&out.shape)),
+            allowed(&out.report),
+            "",
+        )
     })
 }
 
@@ -811,6 +874,41 @@ mod tests {
             "bound {} after {} merges",
             out.report.distortion_bound,
             out.report.counts.vertices_merged
+        );
+    }
+
+    /// A real finding, left to the smoothing crate (corpus `garbage` 2D,
+    /// seed 1, case 182): a needle triangle 4.4e17 long whose vertex
+    /// `(0, -1.446e12)` lies 0.0897 (exactly: the cross product over the
+    /// length) from the opposite edge's interior, tolerance 0.807. The
+    /// first run cracks nothing and returns the triangle; smoothing that
+    /// result (the same triangle, its vertices renumbered by position)
+    /// cracks the edge and cancels everything. The f64 point-segment
+    /// distance loses all its digits at this aspect ratio (the tolerance is
+    /// below the coordinates' resolution), so the decision depends on the
+    /// vertex order: not idempotent, and the first result keeps a vertex
+    /// within the tolerance of an edge that both parts would shorten. The
+    /// 3D `garbage` idempotence failures (seed 1, cases 57 and 116;
+    /// tolerance 0.012 and 0.0057 against coordinates near 1e18) look the
+    /// same.
+    #[test]
+    #[ignore = "smooth's distance tests lose all digits when the tolerance is below the coordinates' resolution (reported to the lead)"]
+    fn needle_triangle_is_smoothed_idempotently() {
+        let mut s = PolygonSet2::new();
+        s.add_loop(&[
+            [27390.359510482816, -4.417812339847444e17],
+            [-3.761998648798771e-9, 2.0986140547907535e-13],
+            [-7.744171575102481e-17, -1446036723199.0815],
+        ]);
+        let delta = 0.8069319098258729;
+        let out = smooth_polygon_set(&s, &SmoothOptions::new(delta)).unwrap();
+        let again = smooth_polygon_set(&out.shape, &SmoothOptions::new(delta)).unwrap();
+        assert_eq!(
+            out.shape.edges().len(),
+            again.shape.edges().len(),
+            "first {:?}, second {:?}",
+            out.shape,
+            again.shape
         );
     }
 }
