@@ -79,9 +79,14 @@ fuzz_target!(|input: SmoothInput| {
             out.shape.check_topology().expect("smoothed mesh not closed");
             assert!(!out.report.budget_hit, "safety budget hit");
             assert!(out.report.max_displacement <= out.report.distortion_bound);
-            let again = smooth_mesh(&out.shape, &opts).expect("smoothing a smoothed mesh");
-            assert_eq!(again.shape.vertices, out.shape.vertices, "not idempotent");
-            assert_eq!(again.shape.facets.len(), out.shape.facets.len(), "not idempotent");
+            // Idempotent where the coordinates resolve the tolerance (at
+            // least 2^-40 of their magnitude; docs/algorithms/smooth.md).
+            let top = out.shape.vertices.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+            if opts.tolerance >= top * 2f64.powi(-40) {
+                let again = smooth_mesh(&out.shape, &opts).expect("smoothing a smoothed mesh");
+                assert_eq!(again.shape.vertices, out.shape.vertices, "not idempotent");
+                assert_eq!(again.shape.facets.len(), out.shape.facets.len(), "not idempotent");
+            }
             if let Some(tri) = input.solid.a.to_triangles() {
                 if let Ok(t) = smooth_triangles(&tri, &opts) {
                     t.shape.check_topology().expect("smoothed triangles not closed");

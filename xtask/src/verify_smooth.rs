@@ -190,8 +190,22 @@ fn closure3(case: &CaseM) -> Outcome {
     })
 }
 
+/// Idempotence is checked where the tolerance is resolved by the
+/// coordinates: at least `2^-40` of their largest magnitude (about 8,000
+/// units in the last place). Below that the point-segment distances that
+/// decide cracking carry rounding errors of the tolerance's own size, so
+/// whether a second run cracks can depend on the vertex order
+/// (`needle_triangle_is_smoothed_idempotently`); `docs/algorithms/smooth.md`
+/// states the exception.
+fn tolerance_resolved(delta: f64, max_abs: f64) -> bool {
+    delta >= max_abs * 2f64.powi(-40)
+}
+
 fn idempotent3(case: &CaseM) -> Outcome {
     with3(case, |out| {
+        if !tolerance_resolved(case.delta, max_abs(&out.shape.vertices)) {
+            return Ok(());
+        }
         let again =
             smooth_mesh(&out.shape, &SmoothOptions::new(case.delta)).map_err(|e| e.to_string())?;
         if again.shape.vertices != out.shape.vertices
@@ -576,6 +590,9 @@ fn closure2(case: &CaseP) -> Outcome {
 
 fn idempotent2(case: &CaseP) -> Outcome {
     with2(case, |out| {
+        if !tolerance_resolved(case.delta, out.shape.max_abs_coordinate()) {
+            return Ok(());
+        }
         let again = smooth_polygon_set(&out.shape, &SmoothOptions::new(case.delta))
             .map_err(|e| e.to_string())?;
         let key = |s: &PolygonSet2| {
@@ -878,17 +895,17 @@ mod tests {
         }
     }
 
-    /// A real finding, left to the smoothing crate: a sliver box of
+    /// A finding of this suite, fixed in the smoothing crate: a sliver box of
     /// thickness below the tolerance (a chain of grid boxes, corpus
     /// `chains`, seed 1, case 2) collapses in full: 4 vertices merge, its
     /// facets cancel, the result is empty, the volume moves from 6.4e-7 to
     /// 0, and the report gives `distortion_bound` 0 and `max_adjustments`
     /// 0. The algorithm note says the bound is the tolerance whenever input
     /// vertices merged, and issue 10's guarantee (volume change within
-    /// area x bound) needs it. The suite's checks use the documented bound
-    /// (`documented_bound`); this test asserts the report itself.
+    /// area x bound) needs it; the report now counts every adjusted vertex,
+    /// also one whose facets were all cancelled. This test asserts the
+    /// report itself.
     #[test]
-    #[ignore = "smooth reports distortion_bound 0 when a merged sliver vanishes (reported to the lead)"]
     fn report_bound_covers_collapsed_slivers() {
         let lo = [2.000000000000808, 1.0000001846522832, 2.0000000000003557];
         let hi = [3.9999999991121573, 1.0000005057971384, 2.999999999998388];

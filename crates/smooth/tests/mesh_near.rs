@@ -241,3 +241,14 @@ fn bad_input_is_refused_and_left_untouched() {
     let r = smooth_mesh_near(&open, &SmoothOptions::new(1e-6), &boxes);
     assert!(matches!(r, Err(SmoothError::InvalidInput(_))), "{r:?}");
 }
+
+#[test]
+fn a_dangling_end_alone_is_refused() {
+    // The last half-edge of a facet ends at a vertex that does not exist
+    // while every start is in range.
+    let mut m = box_mesh([0.0; 3], [1.0; 3]);
+    let last = m.facets[2].half_edges.len() - 1;
+    m.facets[2].half_edges[last].end = 1000;
+    let r = smooth_mesh_near(&m, &SmoothOptions::new(1e-6), &[[[-1.0; 3], [2.0; 3]]]);
+    assert!(matches!(r, Err(SmoothError::InvalidInput(_))), "{r:?}");
+}

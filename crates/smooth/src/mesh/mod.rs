@@ -268,18 +268,22 @@ fn report(
     let mut bound = 0.0f64;
     let mut moved = 0.0f64;
     for (v, slot) in map.iter().enumerate() {
+        // k and the bound count every adjusted vertex, also one whose
+        // facets were all cancelled afterwards (a collapsed sliver moves
+        // the shape's surface by up to `delta` though no vertex of it is
+        // left).
+        k = k.max(w.adjustments[v]);
+        match w.origin[v] {
+            Origin::Input(_) if w.adjustments[v] > 0 => bound = bound.max(delta),
+            Origin::Input(_) => {}
+            Origin::Created(_) => bound = bound.max(2.5 * delta),
+        }
         if slot.is_none() {
             continue;
         }
-        k = k.max(w.adjustments[v]);
         match w.origin[v] {
-            Origin::Input(_) => {
-                if w.adjustments[v] > 0 {
-                    bound = bound.max(delta);
-                }
-            }
+            Origin::Input(_) => {}
             Origin::Created(e) => {
-                bound = bound.max(2.5 * delta);
                 let p = w.pos[v];
                 let d = point_segment(p, e[0], e[1])
                     .1

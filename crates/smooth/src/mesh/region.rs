@@ -78,27 +78,31 @@ impl Facets for [[u32; 3]] {
 /// Every index in range (the cheap part of validation that the whole
 /// mesh gets; closure is checked where smoothing works).
 fn check_indices<F: Facets + ?Sized>(n: usize, facets: &F) -> Result<(), SmoothError> {
-    let bad = (0..facets.count()).into_par_iter().find_first(|&f| {
+    let bad = |f: usize| {
         facets
             .half_edges(f)
             .any(|(s, e)| s as usize >= n || e as usize >= n)
+    };
+    let count = facets.count();
+    let any_bad = (0..count.div_ceil(4096)).into_par_iter().any(|c| {
+        let end = (c * 4096 + 4096).min(count);
+        (c * 4096..end).any(bad)
     });
-    match bad {
-        None => Ok(()),
-        Some(f) => {
-            let vertex = facets
-                .half_edges(f)
-                .flat_map(|(s, e)| [s, e])
-                .find(|&v| v as usize >= n)
-                .unwrap_or(u32::MAX);
-            Err(SmoothError::InvalidInput(TopologyError::DanglingIndex {
-                entity: "facet",
-                entity_index: f as u32,
-                vertex,
-                vertex_count: n as u32,
-            }))
-        }
+    if !any_bad {
+        return Ok(());
     }
+    let f = (0..count).find(|&f| bad(f)).unwrap_or(0);
+    let vertex = facets
+        .half_edges(f)
+        .flat_map(|(s, e)| [s, e])
+        .find(|&v| v as usize >= n)
+        .unwrap_or(u32::MAX);
+    Err(SmoothError::InvalidInput(TopologyError::DanglingIndex {
+        entity: "facet",
+        entity_index: f as u32,
+        vertex,
+        vertex_count: n as u32,
+    }))
 }
 
 /// The most cells of the occupancy grid along an axis.
