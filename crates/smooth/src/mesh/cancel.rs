@@ -10,6 +10,7 @@ use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::plane::{best_fit_plane, facet_normal, Plane};
 use crate::mesh::structure::Work;
 use crate::SmoothCounts;
+use rayon::prelude::*;
 use std::collections::{HashMap, HashSet};
 use topology::{HalfEdge, Point3};
 
@@ -205,6 +206,28 @@ enum PairResult {
 
 /// Facet cancellation between `i` and `j` (Appendix A), then half-edge
 /// cancellation in both.
+/// How many half-edges of `f` have both ends within `delta` of `p` (the
+/// `near` test of [`cancel_pair`]), not counting those whose reverse is in
+/// `other` when given (`cancel_pair` never takes such a half-edge of the
+/// second facet). Fewer than two in both facets together close no loop
+/// (no half-edge is a loop by itself: zero-length ones are gone before a
+/// pass), so `cancel_pair` would find nothing.
+fn swappable(
+    pos: &[Point3],
+    p: &Plane,
+    f: &[HalfEdge],
+    other: Option<&[HalfEdge]>,
+    delta: f64,
+) -> usize {
+    f.iter()
+        .filter(|h| {
+            p.distance(pos[h.start as usize]).abs() <= delta
+                && p.distance(pos[h.end as usize]).abs() <= delta
+                && other.is_none_or(|o| !o.iter().any(|g| g.start == h.end && g.end == h.start))
+        })
+        .count()
+}
+
 fn cancel_pair(
     w: &mut Work,
     i: usize,
@@ -227,6 +250,12 @@ fn cancel_pair(
         p.distance(pos[h.start as usize]).abs() <= delta
             && p.distance(pos[h.end as usize]).abs() <= delta
     };
+    // Only half-edges within `delta` of the other facet's plane can be
+    // swapped: without any, nothing below applies (the usual case for
+    // facets that merely face each other across a crease).
+    if !f1.iter().any(|h| near(&p2, h)) && !f2.iter().any(|h| near(&p1, h)) {
+        return PairResult::Nothing;
+    }
     let in1: HashSet<(u32, u32)> = f1.iter().map(|g| (g.start, g.end)).collect();
     let in2: HashSet<(u32, u32)> = f2.iter().map(|g| (g.start, g.end)).collect();
     let counteracts = |h: &HalfEdge, other: &HashSet<(u32, u32)>| other.contains(&(h.end, h.start));
@@ -349,22 +378,52 @@ pub(crate) fn facet_cancellation_pass(
             id: i as u32,
         });
     }
-    let mut pairs: Vec<(usize, usize)> = BoxIndex::new(boxes).pairs_where(|i, j| {
+    // The planes `cancel_pair` would compute for facets no pair of this
+    // pass has changed yet, for its first test in the parallel join: a
+    // pair with no half-edge of either facet within `delta` of the other's
+    // plane, or only one, is one `cancel_pair` leaves as it is (`maybe`
+    // is false; [`swappable`]).
+    let planes: Vec<Option<Plane>> = (0..w.facets.len())
+        .into_par_iter()
+        .map(|i| normals[i].and(best_fit_plane(&w.pos, &w.facets[i])))
+        .collect();
+    let pos = &w.pos;
+    let facets = &w.facets;
+    let mut pairs: Vec<(usize, usize, bool)> = BoxIndex::new(boxes).pairs_where(|i, j| {
         let (i, j) = (i as usize, j as usize);
         match (normals[i], normals[j]) {
-            (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => Some((i, j)),
+            (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => {
+                let maybe = match (planes[i], planes[j]) {
+                    (Some(p1), Some(p2)) => {
+                        dot(p1.normal, p2.normal) < 0.0
+                            && swappable(pos, &p2, &facets[i], None, delta)
+                                + swappable(pos, &p1, &facets[j], Some(&facets[i]), delta)
+                                >= 2
+                    }
+                    _ => false,
+                };
+                Some((i, j, maybe))
+            }
             _ => None,
         }
     });
     pairs.sort_unstable();
+    let mut touched = vec![false; w.facets.len()];
     let mut changed = 0;
-    for (i, j) in pairs {
+    for (i, j, maybe) in pairs {
         if over_budget(counts) {
             return (changed, true);
         }
+        if !maybe && !touched[i] && !touched[j] {
+            continue; // `cancel_pair` would find nothing (see above)
+        }
         match cancel_pair(w, i, j, delta, counts) {
             PairResult::Nothing => {}
-            PairResult::Partial | PairResult::Full => changed += 1,
+            PairResult::Partial | PairResult::Full => {
+                changed += 1;
+                touched[i] = true;
+                touched[j] = true;
+            }
         }
     }
     (changed, false)
