@@ -561,31 +561,52 @@ pub fn smooth_mesh_near(
             report,
         } => (created, facets, region, report),
     };
-    let mut cycles: Vec<Vec<u32>> = mesh
+    // The vertices used, in order, then the kept facets renamed in
+    // parallel (one allocation per facet) and the region's appended.
+    let n = mesh.vertices.len();
+    let mut used = vec![false; n + created.len()];
+    for (f, _) in mesh.facets.iter().zip(&region).filter(|(_, &r)| !r) {
+        for h in &f.half_edges {
+            used[h.start as usize] = true;
+            used[h.end as usize] = true;
+        }
+    }
+    for &(s, e) in region_out.iter().flatten() {
+        used[s as usize] = true;
+        used[e as usize] = true;
+    }
+    let mut map = vec![u32::MAX; used.len()];
+    let mut vertices = Vec::with_capacity(used.len());
+    for (i, &u) in used.iter().enumerate() {
+        if u {
+            map[i] = vertices.len() as u32;
+            vertices.push(if i < n {
+                mesh.vertices[i]
+            } else {
+                created[i - n]
+            });
+        }
+    }
+    let rename = |s: u32, e: u32| HalfEdge {
+        start: map[s as usize],
+        end: map[e as usize],
+    };
+    let mut facets: Vec<Facet> = mesh
         .facets
-        .iter()
-        .zip(&region)
+        .par_iter()
+        .zip(region.par_iter())
         .filter(|(_, &r)| !r)
-        .map(|(f, _)| f.half_edges.iter().flat_map(|h| [h.start, h.end]).collect())
-        .collect();
-    cycles.extend(
-        region_out
-            .iter()
-            .map(|f| f.iter().flat_map(|&(s, e)| [s, e]).collect::<Vec<u32>>()),
-    );
-    let vertices = compact_vertices(&mesh.vertices, &created, &mut cycles);
-    let facets = cycles
-        .iter()
-        .map(|c| Facet {
-            half_edges: c
-                .chunks_exact(2)
-                .map(|p| HalfEdge {
-                    start: p[0],
-                    end: p[1],
-                })
+        .map(|(f, _)| Facet {
+            half_edges: f
+                .half_edges
+                .iter()
+                .map(|h| rename(h.start, h.end))
                 .collect(),
         })
         .collect();
+    facets.extend(region_out.iter().map(|f| Facet {
+        half_edges: f.iter().map(|&(s, e)| rename(s, e)).collect(),
+    }));
     let shape = PolygonMesh::new(vertices, facets);
     #[cfg(debug_assertions)]
     crate::sanity_check_mesh(&shape, options.tolerance)?;
