@@ -11,26 +11,11 @@
 use boolean_3d::{boolean_mesh, boolean_mesh_with_contacts, BooleanOp};
 use libfuzzer_sys::fuzz_target;
 use smooth::{
-    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, SmoothCounts,
-    SmoothError, SmoothOptions,
+    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, SmoothCounts, SmoothError,
+    SmoothOptions,
 };
+use test_support::canonical;
 use topology::PolygonMesh;
-
-/// Facets as sorted lists of half-edges by coordinates, sorted.
-fn canonical(m: &PolygonMesh) -> Vec<Vec<[[u64; 3]; 2]>> {
-    let bits = |v: u32| m.vertices[v as usize].map(f64::to_bits);
-    let mut out: Vec<Vec<[[u64; 3]; 2]>> = m
-        .facets
-        .iter()
-        .map(|f| {
-            let mut k: Vec<_> = f.half_edges.iter().map(|h| [bits(h.start), bits(h.end)]).collect();
-            k.sort_unstable();
-            k
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
 use umbra_fuzz::SmoothInput;
 
 fn tolerance(size: f64, exp: u8) -> f64 {
@@ -51,14 +36,21 @@ fuzz_target!(|input: SmoothInput| {
         1 => BooleanOp::Intersection,
         _ => BooleanOp::Difference,
     };
-    let size = a.vertices.iter().chain(&b.vertices).flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+    let size = a
+        .vertices
+        .iter()
+        .chain(&b.vertices)
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
     let tol = tolerance(size, input.tolerance_exp);
     let opts = SmoothOptions::new(tol);
     // Near the contacts: always closed; where both operands need no
     // smoothing, the same facets as smoothing the whole result.
     if let Ok((out, contacts)) = boolean_mesh_with_contacts(&a, &b, op, tol) {
         if let Ok(near) = smooth_mesh_near(&out.mesh, &opts, &contacts.boxes) {
-            near.shape.check_topology().expect("near smoothing not closed");
+            near.shape
+                .check_topology()
+                .expect("near smoothing not closed");
             assert!(near.report.max_displacement <= near.report.distortion_bound);
             // Needs no smoothing: nothing counted and nothing moved (beyond
             // 2^200 the scaling can flush subnormal coordinates to 0).
@@ -68,33 +60,56 @@ fuzz_target!(|input: SmoothInput| {
             };
             if clean(&a) && clean(&b) {
                 let whole = smooth_mesh(&out.mesh, &opts).expect("whole smoothing");
-                assert_eq!(canonical(&near.shape), canonical(&whole.shape), "near != whole");
+                assert_eq!(
+                    canonical::mesh_facets(&near.shape),
+                    canonical::mesh_facets(&whole.shape),
+                    "near != whole"
+                );
             }
         }
     }
     let mesh = boolean_mesh(&a, &b, op).map(|o| o.mesh).unwrap_or(a);
     match smooth_mesh(&mesh, &opts) {
         Ok(out) => {
-            assert!(mesh.validate_coordinates().is_ok(), "bad coordinates accepted");
-            out.shape.check_topology().expect("smoothed mesh not closed");
+            assert!(
+                mesh.validate_coordinates().is_ok(),
+                "bad coordinates accepted"
+            );
+            out.shape
+                .check_topology()
+                .expect("smoothed mesh not closed");
             assert!(!out.report.budget_hit, "safety budget hit");
             assert!(out.report.max_displacement <= out.report.distortion_bound);
             // Idempotent where the coordinates resolve the tolerance (at
             // least 2^-40 of their magnitude; docs/algorithms/smooth.md).
-            let top = out.shape.vertices.iter().flatten().fold(0.0f64, |m, x| m.max(x.abs()));
+            let top = out
+                .shape
+                .vertices
+                .iter()
+                .flatten()
+                .fold(0.0f64, |m, x| m.max(x.abs()));
             if opts.tolerance >= top * 2f64.powi(-40) {
                 let again = smooth_mesh(&out.shape, &opts).expect("smoothing a smoothed mesh");
                 assert_eq!(again.shape.vertices, out.shape.vertices, "not idempotent");
-                assert_eq!(again.shape.facets.len(), out.shape.facets.len(), "not idempotent");
+                assert_eq!(
+                    again.shape.facets.len(),
+                    out.shape.facets.len(),
+                    "not idempotent"
+                );
             }
             if let Some(tri) = input.solid.a.to_triangles() {
                 if let Ok(t) = smooth_triangles(&tri, &opts) {
-                    t.shape.check_topology().expect("smoothed triangles not closed");
+                    t.shape
+                        .check_topology()
+                        .expect("smoothed triangles not closed");
                 }
             }
         }
         Err(SmoothError::InvalidInput(_)) => {
-            assert!(!coords_ok || mesh.validate_coordinates().is_err(), "valid input refused")
+            assert!(
+                !coords_ok || mesh.validate_coordinates().is_err(),
+                "valid input refused"
+            )
         }
         Err(e) => panic!("{e}"),
     }

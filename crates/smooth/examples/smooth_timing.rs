@@ -17,6 +17,7 @@ use boolean_3d::{boolean_triangles, boolean_triangles_with_contacts, BooleanOp};
 use smooth::{smooth_triangles, smooth_triangles_near, SmoothOptions};
 use std::hint::black_box;
 use std::time::{Duration, Instant};
+use test_support::canonical;
 use test_support::shapes::icosphere;
 use topology::TriangleMesh;
 
@@ -90,27 +91,11 @@ fn main() {
         if let Some(f) = &full {
             println!(
                 "same triangles as full smoothing: {} (reports equal: {})",
-                canonical(&f.shape) == canonical(&n.shape),
+                canonical::triangles(&f.shape) == canonical::triangles(&n.shape),
                 f.report.counts == n.report.counts
             );
         }
     }
-}
-
-/// The triangles as a sorted list of coordinate triples (bits), each
-/// rotated to start at its least vertex.
-fn canonical(m: &TriangleMesh) -> Vec<[[u64; 3]; 3]> {
-    let mut v: Vec<[[u64; 3]; 3]> = m
-        .triangles
-        .iter()
-        .map(|t| {
-            let p = t.map(|i| m.vertices[i as usize].map(f64::to_bits));
-            let k = (0..3).min_by_key(|&k| p[k]).unwrap_or(0);
-            [p[k], p[(k + 1) % 3], p[(k + 2) % 3]]
-        })
-        .collect();
-    v.sort_unstable();
-    v
 }
 
 fn print_result(s: &TriangleMesh) {

@@ -14,47 +14,11 @@ use smooth::{
     sanity_check_mesh, sanity_check_triangles, smooth_mesh, smooth_mesh_near, smooth_triangles,
     smooth_triangles_near, SmoothError, SmoothOptions,
 };
+use test_support::canonical;
 use test_support::shapes::{box_mesh, box_triangles, icosphere};
-use topology::{Facet, Point3, PolygonMesh, TriangleMesh};
+use topology::{Facet, Point3, PolygonMesh};
 
 const DELTA: f64 = 1e-5;
-
-type Key = Vec<[[u64; 3]; 2]>;
-
-/// A polygon mesh as the sorted list of its facets, each the sorted list
-/// of its half-edges by coordinates.
-fn canonical_mesh(m: &PolygonMesh) -> Vec<Key> {
-    let bits = |v: u32| m.vertices[v as usize].map(f64::to_bits);
-    let mut out: Vec<Key> = m
-        .facets
-        .iter()
-        .map(|f| {
-            let mut k: Key = f
-                .half_edges
-                .iter()
-                .map(|h| [bits(h.start), bits(h.end)])
-                .collect();
-            k.sort_unstable();
-            k
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
-fn canonical_triangles(m: &TriangleMesh) -> Vec<[[u64; 3]; 3]> {
-    let mut v: Vec<[[u64; 3]; 3]> = m
-        .triangles
-        .iter()
-        .map(|t| {
-            let p = t.map(|i| m.vertices[i as usize].map(f64::to_bits));
-            let k = (0..3).min_by_key(|&k| p[k]).unwrap_or(0);
-            [p[k], p[(k + 1) % 3], p[(k + 2) % 3]]
-        })
-        .collect();
-    v.sort_unstable();
-    v
-}
 
 /// A grid box (unit 0.25) moved by a jitter of magnitude 10^e.
 fn grid_box() -> impl Strategy<Value = ([f64; 3], [f64; 3])> {
@@ -98,7 +62,7 @@ proptest! {
             let whole = smooth_mesh(&out.mesh, &opts).unwrap();
             let near = smooth_mesh_near(&out.mesh, &opts, &c.boxes).unwrap();
             sanity_check_mesh(&near.shape, DELTA).unwrap();
-            prop_assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+            prop_assert_eq!(canonical::mesh_facets(&near.shape), canonical::mesh_facets(&whole.shape));
             prop_assert_eq!(near.report.counts, whole.report.counts);
             m = whole.shape;
         }
@@ -117,7 +81,7 @@ proptest! {
             let whole = smooth_triangles(&out.mesh, &opts).unwrap();
             let near = smooth_triangles_near(&out.mesh, &opts, &c.boxes).unwrap();
             sanity_check_triangles(&near.shape, DELTA).unwrap();
-            prop_assert_eq!(canonical_triangles(&near.shape), canonical_triangles(&whole.shape));
+            prop_assert_eq!(canonical::triangles(&near.shape), canonical::triangles(&whole.shape));
             m = whole.shape;
         }
     }
@@ -154,8 +118,8 @@ fn spheres_agree_with_whole_smoothing_at_several_tolerances() {
             let whole = smooth_triangles(&out.mesh, &opts).unwrap();
             let near = smooth_triangles_near(&out.mesh, &opts, &c.boxes).unwrap();
             assert_eq!(
-                canonical_triangles(&near.shape),
-                canonical_triangles(&whole.shape),
+                canonical::triangles(&near.shape),
+                canonical::triangles(&whole.shape),
                 "{op:?} at {tol}"
             );
             assert_eq!(near.report.counts, whole.report.counts, "{op:?} at {tol}");
@@ -197,7 +161,10 @@ fn no_contact_keeps_the_mesh_and_a_box_over_everything_is_whole_smoothing() {
     let whole = smooth_mesh(&mesh, &opts).unwrap();
     let everything = [[[-1.0; 3], [2.0; 3]]];
     let near = smooth_mesh_near(&mesh, &opts, &everything).unwrap();
-    assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+    assert_eq!(
+        canonical::mesh_facets(&near.shape),
+        canonical::mesh_facets(&whole.shape)
+    );
     // Infinite boxes, alone or among others, meet everything.
     let inf = [
         [[f64::NEG_INFINITY; 3], [f64::INFINITY; 3]],
@@ -206,12 +173,18 @@ fn no_contact_keeps_the_mesh_and_a_box_over_everything_is_whole_smoothing() {
     ];
     for k in 1..=3 {
         let near = smooth_mesh_near(&mesh, &opts, &inf[..k]).unwrap();
-        assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+        assert_eq!(
+            canonical::mesh_facets(&near.shape),
+            canonical::mesh_facets(&whole.shape)
+        );
     }
     // A box at the sliver alone: the region grows to what smoothing needs.
     let at_sliver = [[[0.0; 3], [1e-9, 0.0, 0.0]]];
     let near = smooth_mesh_near(&mesh, &opts, &at_sliver).unwrap();
-    assert_eq!(canonical_mesh(&near.shape), canonical_mesh(&whole.shape));
+    assert_eq!(
+        canonical::mesh_facets(&near.shape),
+        canonical::mesh_facets(&whole.shape)
+    );
     assert_eq!(near.shape.facets.len(), 4);
 }
 

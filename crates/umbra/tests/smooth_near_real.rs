@@ -7,7 +7,7 @@
 //! coordinates, same counts of every operation) at the default tolerance
 //! and at a coarse one where many vertices merge and edges crack.
 
-use test_support::data_path;
+use test_support::{canonical, data_path};
 use umbra::{
     boolean_solid_with_contacts, default_mesh_tolerance, read_mesh, smooth_solid,
     smooth_solid_near, BooleanOp, MeshReadOptions, MeshVariant, PolygonMesh, SmoothOptions,
@@ -40,26 +40,6 @@ fn moved(m: &PolygonMesh, deg: f64, shift: [f64; 3]) -> PolygonMesh {
     PolygonMesh::new(vertices, m.facets.clone())
 }
 
-/// Facets as sorted lists of half-edges by coordinates, sorted.
-fn canonical(m: &PolygonMesh) -> Vec<Vec<[[u64; 3]; 2]>> {
-    let bits = |v: u32| m.vertices[v as usize].map(f64::to_bits);
-    let mut out: Vec<Vec<[[u64; 3]; 2]>> = m
-        .facets
-        .iter()
-        .map(|f| {
-            let mut k: Vec<_> = f
-                .half_edges
-                .iter()
-                .map(|h| [bits(h.start), bits(h.end)])
-                .collect();
-            k.sort_unstable();
-            k
-        })
-        .collect();
-    out.sort_unstable();
-    out
-}
-
 fn agree(name: &str, moves: &[(f64, [f64; 3])], coarse: f64) {
     let a = mesh(name);
     for &(deg, shift) in moves {
@@ -79,7 +59,11 @@ fn agree(name: &str, moves: &[(f64, [f64; 3])], coarse: f64) {
                     let what = format!("{name} {deg} {shift:?} {variant:?} {op:?} at {tol:e}");
                     assert!(near.shape.check_topology().is_ok(), "{what}");
                     assert_eq!(near.report.counts, whole.report.counts, "{what}");
-                    assert_eq!(canonical(&near.shape), canonical(&whole.shape), "{what}");
+                    assert_eq!(
+                        canonical::mesh_facets(&near.shape),
+                        canonical::mesh_facets(&whole.shape),
+                        "{what}"
+                    );
                 }
             }
         }

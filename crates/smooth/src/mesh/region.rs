@@ -21,7 +21,7 @@
 //! smoothing is redone, and after [`MAX_GROWTHS`] growths the whole mesh
 //! is smoothed.
 
-use crate::mesh::index::{BoxIndex, IdBox};
+use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::run_with;
 use crate::mesh::triangles::triangulate_result;
 use crate::{SmoothError, SmoothOptions, SmoothReport, Smoothed};
@@ -216,15 +216,7 @@ fn near_facets<F: Facets + ?Sized>(
     (0..facets.count())
         .into_par_iter()
         .map(|f| {
-            let mut lo = [f64::INFINITY; 3];
-            let mut hi = [f64::NEG_INFINITY; 3];
-            for v in facets.starts(f) {
-                let p = pos[v as usize];
-                for c in 0..3 {
-                    lo[c] = lo[c].min(p[c]);
-                    hi[c] = hi[c].max(p[c]);
-                }
-            }
+            let (lo, hi) = grown_box(facets.starts(f).map(|v| pos[v as usize]), 0.0);
             if (0..3).any(|c| lo[c] > all_hi[c] || hi[c] < all_lo[c]) {
                 return false;
             }
@@ -390,40 +382,23 @@ fn untouched(delta: f64) -> SmoothReport {
     }
 }
 
-/// The vertices of `pos` followed by `created` that `facets` (vertex
-/// lists of any kind) use, in their order, and the facets renumbered to
-/// them.
-fn compact_vertices<T: AsMut<[u32]> + AsRef<[u32]> + Send>(
-    pos: &[Point3],
-    created: &[Point3],
-    facets: &mut [T],
-) -> Vec<Point3> {
-    let all = |i: usize| {
-        if i < pos.len() {
-            pos[i]
-        } else {
-            created[i - pos.len()]
-        }
-    };
-    let total = pos.len() + created.len();
-    let mut used = vec![false; total];
-    for f in facets.iter() {
-        for &v in f.as_ref() {
-            used[v as usize] = true;
-        }
-    }
-    let mut map = vec![u32::MAX; total];
-    let mut out = Vec::with_capacity(total);
+/// The used vertices of `pos` followed by `created` (`used` flags both,
+/// in that order), in their order, and every vertex's new index
+/// (`u32::MAX` for unused ones).
+fn compact_vertices(pos: &[Point3], created: &[Point3], used: &[bool]) -> (Vec<Point3>, Vec<u32>) {
+    let mut map = vec![u32::MAX; used.len()];
+    let mut out = Vec::with_capacity(used.len());
     for (i, &u) in used.iter().enumerate() {
         if u {
             map[i] = out.len() as u32;
-            out.push(all(i));
+            out.push(if i < pos.len() {
+                pos[i]
+            } else {
+                created[i - pos.len()]
+            });
         }
     }
-    facets
-        .par_iter_mut()
-        .for_each(|f| f.as_mut().iter_mut().for_each(|v| *v = map[*v as usize]));
-    out
+    (out, map)
 }
 
 /// What smoothing a region gave.
@@ -575,18 +550,7 @@ pub fn smooth_mesh_near(
         used[s as usize] = true;
         used[e as usize] = true;
     }
-    let mut map = vec![u32::MAX; used.len()];
-    let mut vertices = Vec::with_capacity(used.len());
-    for (i, &u) in used.iter().enumerate() {
-        if u {
-            map[i] = vertices.len() as u32;
-            vertices.push(if i < n {
-                mesh.vertices[i]
-            } else {
-                created[i - n]
-            });
-        }
-    }
+    let (vertices, map) = compact_vertices(&mesh.vertices, &created, &used);
     let rename = |s: u32, e: u32| HalfEdge {
         start: map[s as usize],
         end: map[e as usize],
@@ -654,7 +618,14 @@ pub fn smooth_triangles_near(
         .map(|(t, _)| *t)
         .collect();
     triangles.extend(region_out.iter().map(|f| [f[0].0, f[1].0, f[2].0]));
-    let vertices = compact_vertices(&mesh.vertices, &created, &mut triangles);
+    let mut used = vec![false; mesh.vertices.len() + created.len()];
+    for &v in triangles.iter().flatten() {
+        used[v as usize] = true;
+    }
+    let (vertices, map) = compact_vertices(&mesh.vertices, &created, &used);
+    triangles
+        .par_iter_mut()
+        .for_each(|t| *t = t.map(|v| map[v as usize]));
     let shape = TriangleMesh::new(vertices, triangles);
     #[cfg(debug_assertions)]
     crate::sanity_check_triangles(&shape, options.tolerance)?;
