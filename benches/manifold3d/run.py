@@ -9,14 +9,21 @@ Optional and outside CI. Usage (from the repository root):
     cargo run --release -p umbra-benches --bin write-inputs-3d
     python3 benches/manifold3d/run.py [--dir target/bench-inputs] [--cpus 1]
         [--sizes 2000,20000,200000,1000000] [--csv docs/images/manifold3d.csv]
+        [--skip-batch] [--skip-chain]
 
 Each operand is read from binary PLY (double coordinates, the same f64
 bits the Rust benches use) and turned into a `Manifold` through `Mesh64`
 before any timing. Timed: `a - b` (the sphere difference of
 `perf-table-3d`), `Manifold.batch_boolean(spheres, Add)` (the union of the
 1,000 spheres of `perf-table-nary`) and `Manifold.batch_boolean([slab] +
-boxes, Subtract)` (the slab minus 1,000 boxes); Manifold evaluates lazily,
-so each timing ends with `num_tri()`, which forces the Boolean. Time is
+boxes, Subtract)` (the slab minus 1,000 boxes), and the iterated-CSG chain
+of `csg-chain` (`chain-slab.ply` minus the boxes of `chain-boxes-1000.ply`
+one difference at a time, in file order, each result feeding the next:
+the summed time of the 1,000 differences). Manifold evaluates lazily, so
+each timing ends with `num_tri()`, which forces the Boolean; in the chain
+every step is forced, as a user who looks at each result would (left
+lazy, Manifold folds the whole chain into one batch difference, which is
+the n-ary row). Time is
 the best of 3 runs (1 run at >= 1M triangles per operand).
 
 Threads: the package runs its Booleans on TBB, which uses the CPUs the
@@ -75,6 +82,56 @@ def manifold_of(m3d, path):
     return solid
 
 
+def components_in_order(m3d, path):
+    """The connected components of a PLY file's mesh as `Manifold`s, in the
+    order of their first triangle (how `write-inputs-3d` concatenates the
+    chain's boxes). `Manifold.decompose` does not promise an order, and the
+    chain needs it."""
+    import numpy as np
+
+    verts, tris = read_ply(path)
+    parent = list(range(len(verts)))
+
+    def find(v):
+        while parent[v] != v:
+            parent[v] = parent[parent[v]]
+            v = parent[v]
+        return v
+
+    for a, b, c in tris.tolist():
+        ra, rb, rc = find(a), find(b), find(c)
+        parent[rb] = ra
+        parent[find(rc)] = ra
+    groups = {}
+    for t, tri in enumerate(tris.tolist()):
+        groups.setdefault(find(tri[0]), []).append(t)
+    parts = []
+    for k, members in enumerate(groups.values()):  # insertion order = first triangle
+        sub = tris[members]
+        used, local = np.unique(sub, return_inverse=True)
+        mesh = m3d.Mesh64(
+            vert_properties=np.array(verts[used]),
+            tri_verts=np.array(local.reshape(-1, 3), dtype=np.uint64),
+        )
+        solid = m3d.Manifold(mesh)
+        if str(solid.status()) not in ("Error.NoError", "NoError"):
+            raise ValueError(f"{path}: component {k}: {solid.status()}")
+        parts.append(solid)
+    return parts
+
+
+def chain_of(slab, boxes):
+    """The chain: `slab - box` for every box in order, each step forced;
+    returns the summed time (ms) and the final result."""
+    total, shape = 0.0, slab
+    for b in boxes:
+        t = time.perf_counter()
+        shape = shape - b
+        shape.num_tri()
+        total += (time.perf_counter() - t) * 1e3
+    return total, shape
+
+
 def best_of(runs, op):
     best, out = float("inf"), None
     for _ in range(runs):
@@ -92,6 +149,7 @@ def main():
     ap.add_argument("--cpus", type=int, default=0, help="run on the first K CPUs only")
     ap.add_argument("--csv", default="", help="append the rows to this CSV file too")
     ap.add_argument("--skip-batch", action="store_true", help="only the sphere differences")
+    ap.add_argument("--skip-chain", action="store_true", help="no iterated-CSG chain")
     args = ap.parse_args()
     if args.cpus > 0:
         cpus = sorted(os.sched_getaffinity(0))[: args.cpus]
@@ -134,6 +192,12 @@ def main():
             1, lambda: m3d.Manifold.batch_boolean([slab] + boxes, m3d.OpType.Subtract)
         )
         record("slab-minus-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes))
+
+    if not args.skip_chain:
+        slab = manifold_of(m3d, os.path.join(args.dir, "chain-slab.ply"))
+        boxes = components_in_order(m3d, os.path.join(args.dir, "chain-boxes-1000.ply"))
+        ms, out = chain_of(slab, boxes)
+        record("chain-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes))
 
     fields = ["library", "op", "size", "cpus", "ms", "triangles", "volume", "input_triangles"]
     writer = csv.DictWriter(sys.stdout, fieldnames=fields)

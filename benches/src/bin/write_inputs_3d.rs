@@ -8,7 +8,11 @@
 //!   each size `N` (triangles per operand);
 //! - `spheres-K.ply`: the `K` overlapping spheres of `perf-table-nary` in
 //!   one file (one connected component each);
-//! - `slab.ply`, `boxes-K.ply`: the slab and its `K` boxes.
+//! - `slab.ply`, `boxes-K.ply`: the slab and its `K` boxes;
+//! - `chain-slab.ply`, `chain-boxes-1000.ply`: the slab and the 1,000
+//!   boxes of the iterated-CSG chain of `csg-chain`
+//!   (`umbra_benches::chain`), the boxes in chain order, triangulated as
+//!   the chain's triangle-mesh variant sees them.
 //!
 //! ```text
 //! cargo run --release -p umbra-benches --bin write-inputs-3d -- [--sizes 2000,20000,200000,1000000] [--dir target/bench-inputs]
@@ -17,6 +21,7 @@
 use std::path::{Path, PathBuf};
 use topology::{PolygonMesh, TriangleMesh};
 use umbra_benches::batch::{slab_case, sphere_union_case};
+use umbra_benches::chain;
 use umbra_benches::solid::sphere_pair;
 
 /// All meshes in one, vertex indices shifted.
@@ -60,6 +65,13 @@ fn run() -> Result<(), String> {
         write(&dir, "slab.ply", &a.to_polygon_mesh())?;
     }
     write(&dir, "boxes-1000.ply", &merged(&slab.operands))?;
+    let chain_slab = umbra::triangulate_mesh(&chain::slab());
+    write(&dir, "chain-slab.ply", &chain_slab.to_polygon_mesh())?;
+    let chain_boxes: Vec<TriangleMesh> = chain::holes(chain::MAX_BOXES)
+        .iter()
+        .map(umbra::triangulate_mesh)
+        .collect();
+    write(&dir, "chain-boxes-1000.ply", &merged(&chain_boxes))?;
     Ok(())
 }
 
