@@ -132,14 +132,50 @@ def chain_of(slab, boxes):
     return total, shape
 
 
+def status_kib(field):
+    """A `/proc/self/status` field in KiB (0 where there is none)."""
+    try:
+        with open("/proc/self/status") as f:
+            for line in f:
+                if line.startswith(field):
+                    return int(line.split()[1])
+    except OSError:
+        pass
+    return 0
+
+
+class RssGrowth:
+    """The resident set's growth during a block, as `perf-table-3d`
+    measures Umbra's: `VmRSS` before, the kernel's peak RSS reset
+    (`/proc/self/clear_refs`, value 5), `VmHWM` after. It sees every
+    allocation of the C++ library (allocator retention included)."""
+
+    def __enter__(self):
+        self.base = status_kib("VmRSS:")
+        try:
+            with open("/proc/self/clear_refs", "w") as f:
+                f.write("5")
+        except OSError:
+            pass
+        return self
+
+    def __exit__(self, *exc):
+        self.mib = max(0, status_kib("VmHWM:") - self.base) / 1024.0
+        return False
+
+
 def best_of(runs, op):
+    """Best time (ms) of `runs` runs, the last output, and the RSS growth
+    (MiB) over all runs."""
     best, out = float("inf"), None
-    for _ in range(runs):
-        t = time.perf_counter()
-        out = op()
-        out.num_tri()
-        best = min(best, (time.perf_counter() - t) * 1e3)
-    return best, out
+    with RssGrowth() as rss:
+        for _ in range(runs):
+            out = None  # the previous output is freed before the next run
+            t = time.perf_counter()
+            out = op()
+            out.num_tri()
+            best = min(best, (time.perf_counter() - t) * 1e3)
+    return best, out, rss.mib
 
 
 def main():
@@ -160,7 +196,7 @@ def main():
     version = getattr(m3d, "__version__", "")
     rows = []
 
-    def record(op, size, ms, out, inputs):
+    def record(op, size, ms, out, inputs, rss_mib):
         rows.append(
             {
                 "library": "manifold3d" + (f" {version}" if version else ""),
@@ -171,46 +207,56 @@ def main():
                 "triangles": out.num_tri(),
                 "volume": repr(out.volume()),
                 "input_triangles": inputs,
+                "rss_growth_mib": f"{rss_mib:.1f}",
             }
         )
-        print(f"{op} {size}: {ms:.1f} ms, {out.num_tri()} triangles, volume {out.volume():.9f}", file=sys.stderr)
+        print(
+            f"{op} {size}: {ms:.1f} ms, {out.num_tri()} triangles, volume {out.volume():.9f}, "
+            f"RSS growth {rss_mib:.1f} MiB",
+            file=sys.stderr,
+        )
 
     for size in [int(s) for s in args.sizes.split(",") if s.strip()]:
         a = manifold_of(m3d, os.path.join(args.dir, f"sphere-a-{size}.ply"))
         b = manifold_of(m3d, os.path.join(args.dir, f"sphere-b-{size}.ply"))
         runs = 1 if size >= 1_000_000 else 3
-        ms, out = best_of(runs, lambda: a - b)
-        record("sphere-difference", size, ms, out, a.num_tri() + b.num_tri())
+        ms, out, rss = best_of(runs, lambda: a - b)
+        record("sphere-difference", size, ms, out, a.num_tri() + b.num_tri(), rss)
 
     if not args.skip_batch:
         spheres = manifold_of(m3d, os.path.join(args.dir, "spheres-1000.ply")).decompose()
-        ms, out = best_of(1, lambda: m3d.Manifold.batch_boolean(spheres, m3d.OpType.Add))
-        record("union-1000-spheres", len(spheres), ms, out, sum(s.num_tri() for s in spheres))
+        ms, out, rss = best_of(1, lambda: m3d.Manifold.batch_boolean(spheres, m3d.OpType.Add))
+        record("union-1000-spheres", len(spheres), ms, out, sum(s.num_tri() for s in spheres), rss)
         slab = manifold_of(m3d, os.path.join(args.dir, "slab.ply"))
         boxes = manifold_of(m3d, os.path.join(args.dir, "boxes-1000.ply")).decompose()
-        ms, out = best_of(
+        ms, out, rss = best_of(
             1, lambda: m3d.Manifold.batch_boolean([slab] + boxes, m3d.OpType.Subtract)
         )
-        record("slab-minus-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes))
+        record("slab-minus-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes), rss)
 
     if not args.skip_chain:
         slab = manifold_of(m3d, os.path.join(args.dir, "chain-slab.ply"))
         boxes = components_in_order(m3d, os.path.join(args.dir, "chain-boxes-1000.ply"))
-        ms, out = chain_of(slab, boxes)
-        record("chain-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes))
+        with RssGrowth() as rss:
+            ms, out = chain_of(slab, boxes)
+        record("chain-1000-boxes", len(boxes), ms, out, slab.num_tri() + sum(x.num_tri() for x in boxes), rss.mib)
 
-    fields = ["library", "op", "size", "cpus", "ms", "triangles", "volume", "input_triangles"]
+    fields = ["library", "op", "size", "cpus", "ms", "triangles", "volume", "input_triangles", "rss_growth_mib"]
     writer = csv.DictWriter(sys.stdout, fieldnames=fields)
     writer.writeheader()
     writer.writerows(rows)
     if args.csv:
-        new = not os.path.exists(args.csv)
-        with open(args.csv, "a", newline="") as f:
-            w = csv.DictWriter(f, fieldnames=fields)
-            if new:
-                w.writeheader()
+        # Rows already in the file are kept; a file written before a column
+        # existed is rewritten with that column empty in its old rows.
+        old = []
+        if os.path.exists(args.csv):
+            with open(args.csv, newline="") as f:
+                old = list(csv.DictReader(f))
+        with open(args.csv, "w", newline="") as f:
+            w = csv.DictWriter(f, fieldnames=fields, restval="", extrasaction="ignore")
+            w.writeheader()
+            w.writerows(old)
             w.writerows(rows)
-
 
 if __name__ == "__main__":
     main()
