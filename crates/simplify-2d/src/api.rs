@@ -2,7 +2,7 @@
 //! rule, and Booleans of two or more through simplification (section 6.1).
 
 use crate::cells::{CellStructure, SweepStats};
-use crate::sweep::{run, InputEdge, Rotations};
+use crate::sweep::{run, InputEdge, Output};
 use crate::winding::{FillRule, Winding};
 use crate::SimplifyError;
 use topology::BooleanOp;
@@ -25,15 +25,23 @@ pub struct Simplified {
 }
 
 impl Simplified {
-    /// The shape the rule selects, consuming the cell structure.
-    fn from_cells<W: Winding>(cells: CellStructure<W>, keep: impl Fn(&W) -> bool) -> Self {
+    /// The shape `keep` selects from the cell structure that `cells`
+    /// computes, the sweep keeping only the edges `keep` will select
+    /// ([`Output::Boundary`]): the same shape, bounds and counters as
+    /// selecting from the complete structure, without holding the rest of
+    /// the arrangement.
+    fn select<W: Winding>(
+        keep: impl Fn(&W) -> bool,
+        cells: impl FnOnce(Output<'_, W>) -> Result<CellStructure<W>, SimplifyError>,
+    ) -> Result<Self, SimplifyError> {
+        let cells = cells(Output::Boundary(&keep))?;
         let (k_max, epsilon, stats) = (cells.k_max(), cells.epsilon(), cells.stats());
-        Simplified {
+        Ok(Simplified {
             shape: cells.into_shape_with(keep),
             k_max,
             epsilon,
             stats,
-        }
+        })
     }
 }
 
@@ -105,13 +113,13 @@ fn max_abs(sets: &[&PolygonSet2]) -> f64 {
 /// assert_eq!(cells.vertices().len(), 5); // the crossing (1, 1) was added
 /// ```
 pub fn cell_structure(set: &PolygonSet2) -> Result<CellStructure<i32>, SimplifyError> {
-    cells_of_one(set, Rotations::Record)
+    cells_of_one(set, Output::All)
 }
 
-/// The cell structure of one polygon set, recording the rotations or not.
+/// The cell structure of one polygon set, with what `output` keeps.
 fn cells_of_one(
     set: &PolygonSet2,
-    rotations: Rotations,
+    output: Output<'_, i32>,
 ) -> Result<CellStructure<i32>, SimplifyError> {
     validate(set, 0)?;
     run(
@@ -119,7 +127,7 @@ fn cells_of_one(
         set.edge_count(),
         1,
         max_abs(&[set]),
-        rotations,
+        output,
     )
 }
 
@@ -141,8 +149,7 @@ fn cells_of_one(
 /// assert_eq!(both.shape.signed_area(), 1.0);
 /// ```
 pub fn simplify(set: &PolygonSet2, rule: FillRule) -> Result<Simplified, SimplifyError> {
-    let cells = cells_of_one(set, Rotations::Skip)?;
-    Ok(Simplified::from_cells(cells, |w| rule.contains(*w)))
+    Simplified::select(|w| rule.contains(*w), |out| cells_of_one(set, out))
 }
 
 /// The cell structure of two polygon sets assembled, with the winding
@@ -151,14 +158,14 @@ pub fn boolean_cells(
     a: &PolygonSet2,
     b: &PolygonSet2,
 ) -> Result<CellStructure<[i32; 2]>, SimplifyError> {
-    cells_of_two(a, b, Rotations::Record)
+    cells_of_two(a, b, Output::All)
 }
 
-/// The cell structure of two polygon sets, recording the rotations or not.
+/// The cell structure of two polygon sets, with what `output` keeps.
 fn cells_of_two(
     a: &PolygonSet2,
     b: &PolygonSet2,
-    rotations: Rotations,
+    output: Output<'_, [i32; 2]>,
 ) -> Result<CellStructure<[i32; 2]>, SimplifyError> {
     validate(a, 0)?;
     validate(b, 1)?;
@@ -168,7 +175,7 @@ fn cells_of_two(
         a.edge_count() + b.edge_count(),
         2,
         max_abs(&[a, b]),
-        rotations,
+        output,
     )
 }
 
@@ -194,23 +201,23 @@ pub fn boolean(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<Simplified, SimplifyError> {
-    let cells = cells_of_two(a, b, Rotations::Skip)?;
-    Ok(Simplified::from_cells(cells, |w| {
-        op.selects(w[0] > 0, w[1] > 0)
-    }))
+    Simplified::select(
+        |w: &[i32; 2]| op.selects(w[0] > 0, w[1] > 0),
+        |out| cells_of_two(a, b, out),
+    )
 }
 
 /// The cell structure of any number of polygon sets assembled, with the
 /// winding number of every operand tracked separately.
 pub fn cell_structure_n(sets: &[PolygonSet2]) -> Result<CellStructure<Vec<i32>>, SimplifyError> {
-    cells_of_many(sets, Rotations::Record)
+    cells_of_many(sets, Output::All)
 }
 
-/// The cell structure of any number of polygon sets, recording the
-/// rotations or not.
+/// The cell structure of any number of polygon sets, with what `output`
+/// keeps.
 fn cells_of_many(
     sets: &[PolygonSet2],
-    rotations: Rotations,
+    output: Output<'_, Vec<i32>>,
 ) -> Result<CellStructure<Vec<i32>>, SimplifyError> {
     for (i, s) in sets.iter().enumerate() {
         validate(s, i)?;
@@ -224,7 +231,7 @@ fn cells_of_many(
         })
     });
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    run(input, total_edges(sets), n, max_abs(&refs), rotations)
+    run(input, total_edges(sets), n, max_abs(&refs), output)
 }
 
 /// An n-ary Boolean in one sweep: `keep` receives the winding number of
@@ -235,8 +242,7 @@ pub fn boolean_n(
     sets: &[PolygonSet2],
     keep: impl Fn(&[i32]) -> bool,
 ) -> Result<Simplified, SimplifyError> {
-    let cells = cells_of_many(sets, Rotations::Skip)?;
-    Ok(Simplified::from_cells(cells, |w| keep(w)))
+    Simplified::select(|w: &Vec<i32>| keep(w), |out| cells_of_many(sets, out))
 }
 
 /// The union of any number of polygon sets in one sweep (section 6.1: the
@@ -250,6 +256,8 @@ pub fn union_all(sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
     }
     let input = operands(sets).flat_map(|(_, s, offset)| edges_of(s, offset, |m| m));
     let refs: Vec<&PolygonSet2> = sets.iter().collect();
-    let cells = run(input, total_edges(sets), 1, max_abs(&refs), Rotations::Skip)?;
-    Ok(Simplified::from_cells(cells, |w| *w > 0))
+    Simplified::select(
+        |w: &i32| *w > 0,
+        |out| run(input, total_edges(sets), 1, max_abs(&refs), out),
+    )
 }

@@ -23,6 +23,16 @@
 //! staying on the sweep line and the right parts going to the buffer
 //! (section 7.4.1). Split parts are never re-tested (section 8.4, footnote
 //! 2): the sweep never iterates to a fixed point (section 7.6.3).
+//!
+//! What the output keeps ([`Output`]): a cell structure handed to the
+//! caller keeps every edge and the rotations around the vertices; a
+//! simplification or Boolean keeps only the edges its rule will select
+//! (the edges separating an accepted cell from a rejected one, section
+//! 7.4.3), decided as each edge leaves the sweep line. The sweep's
+//! decisions never depend on the output, so both runs compute the same
+//! arrangement; the second just does not hold the edges inside or outside
+//! the result (most of a random polygon's arrangement, section 7.7), which
+//! bounds its memory by the result instead of the arrangement.
 
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
 use crate::end_points::{EndPoints, Slot};
@@ -205,7 +215,7 @@ struct NewEdge<W> {
     rslot: Slot,
 }
 
-struct Sweep<W: Winding> {
+struct Sweep<'k, W: Winding> {
     dims: usize,
     /// The input edges, merged (section 7.1.2) and sorted by `(l, r)`.
     input: Vec<Pending<W>>,
@@ -223,26 +233,70 @@ struct Sweep<W: Winding> {
     scratch_block: Vec<NewEdge<W>>,
     scratch_new: Vec<SweepEdge<W>>,
     scratch_pending: Vec<Pending<W>>,
-    edges: Vec<CellEdge<W>>,
+    /// The output edges.
+    out: Emitted<'k, W>,
     /// Whether the rotations around the vertices are recorded (below), for
     /// [`CellStructure::check_cells`].
     record: bool,
-    /// The output edge of each sweep-line edge id, while recording.
-    id_to_edge: Vec<u32>,
     fans: Vec<Fan<W>>,
     fan_ids: Vec<u32>,
     x_s: f64,
     stats: SweepStats,
 }
 
-/// Whether a sweep records the rotation of the edges around every vertex
-/// (the fans that [`CellStructure::check_cells`] verifies). A structure
-/// handed to the caller records them; one that a simplification or Boolean
-/// consumes at once need not (the sweep decides the same either way).
-#[derive(Clone, Copy, Debug, PartialEq, Eq)]
-pub(crate) enum Rotations {
-    Record,
-    Skip,
+/// What a sweep keeps (the sweep decides the same either way).
+#[derive(Clone, Copy)]
+pub(crate) enum Output<'k, W> {
+    /// Every edge, and the rotation of the edges around every vertex (the
+    /// fans that [`CellStructure::check_cells`] verifies): a structure
+    /// handed to the caller.
+    All,
+    /// Only the edges separating a cell that `keep` accepts from one it
+    /// rejects (`keep(left) != keep(right)`, zero-length edges dropped),
+    /// and no rotations: the edges that
+    /// [`CellStructure::into_shape_with`] with the same `keep` selects,
+    /// for a simplification or Boolean that consumes the structure at once.
+    Boundary(&'k dyn Fn(&W) -> bool),
+}
+
+/// The edges the sweep sends to the output, filtered by [`Output`], and the
+/// largest adjustment count of every edge sent, kept or not (section 8.4:
+/// the bound covers the whole arrangement, as when every edge is kept).
+struct Emitted<'k, W> {
+    edges: Vec<CellEdge<W>>,
+    /// The output edge of each sweep-line edge id, while recording.
+    id_to_edge: Vec<u32>,
+    keep: Option<&'k dyn Fn(&W) -> bool>,
+    k_max: u32,
+}
+
+impl<W: Winding> Emitted<'_, W> {
+    /// Sends a finished sweep-line edge (from `l` to the vertex `end`) to
+    /// the output edges; it leaves the sweep line.
+    fn emit(&mut self, e: &SweepEdge<W>, end: u32, k: u32) {
+        self.k_max = self.k_max.max(k);
+        let start = e.lid;
+        let mut left = e.below.clone();
+        left.add_assign(&e.m);
+        if let Some(keep) = self.keep {
+            if start == end || keep(&left) == keep(&e.below) {
+                return;
+            }
+        }
+        let idx = self.edges.len() as u32;
+        self.edges.push(CellEdge {
+            start,
+            end,
+            mult: e.m.clone(),
+            left,
+            right: e.below.clone(),
+            k,
+            origin: e.origin,
+        });
+        if let Some(slot) = self.id_to_edge.get_mut(e.id as usize) {
+            *slot = idx;
+        }
+    }
 }
 
 /// Runs the sweep on the given edges (about `n` of them) and returns the
@@ -252,7 +306,7 @@ pub(crate) fn run<W: Winding>(
     n: usize,
     dims: usize,
     max_abs: f64,
-    rotations: Rotations,
+    output: Output<'_, W>,
 ) -> Result<CellStructure<W>, SimplifyError> {
     // The edge collection of section 7.1.2 for the input: keyed by
     // (leftmost, rightmost) point, negative multiplicity for edges running
@@ -279,7 +333,7 @@ pub(crate) fn run<W: Winding>(
             rslot: 0,
         });
     }
-    sweep(keyed, count, dims, max_abs, rotations)
+    sweep(keyed, count, dims, max_abs, output)
 }
 
 /// The sweep proper, on the keyed input edges (in input order, `seq` the
@@ -290,9 +344,12 @@ fn sweep<W: Winding>(
     n: usize,
     dims: usize,
     max_abs: f64,
-    rotations: Rotations,
+    output: Output<'_, W>,
 ) -> Result<CellStructure<W>, SimplifyError> {
-    let record = rotations == Rotations::Record;
+    let (record, keep) = match output {
+        Output::All => (true, None),
+        Output::Boundary(keep) => (false, Some(keep)),
+    };
     let log_cap = |c: usize| if record { c } else { 0 };
     // Sorted by key; identical edges stay in input order (a stable sort),
     // as the collection would have merged them one at a time. The stable
@@ -326,11 +383,17 @@ fn sweep<W: Winding>(
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_pending: Vec::new(),
-        // Room for one crossing per input edge (each adds two edges), so
-        // that the largest output vector rarely moves.
-        edges: Vec::with_capacity(n * 3),
+        out: Emitted {
+            // Every edge: room for one crossing per input edge (each adds
+            // two edges), so that the largest output vector rarely moves.
+            // The boundary: the input's size (it grows when the result
+            // has more edges than the input).
+            edges: Vec::with_capacity(if record { n * 3 } else { n }),
+            id_to_edge: Vec::with_capacity(log_cap(n * 3)),
+            keep,
+            k_max: 0,
+        },
         record,
-        id_to_edge: Vec::with_capacity(log_cap(n * 3)),
         fans: Vec::with_capacity(log_cap(n * 2)),
         fan_ids: Vec::with_capacity(log_cap(n * 6)),
         x_s: f64::NEG_INFINITY,
@@ -398,7 +461,7 @@ fn sweep<W: Winding>(
     let mut fan_edges = std::mem::take(&mut s.fan_ids);
     for slot in &mut fan_edges {
         let id = *slot;
-        let e = s.id_to_edge.get(id as usize).copied().unwrap_or(NO_ID);
+        let e = s.out.id_to_edge.get(id as usize).copied().unwrap_or(NO_ID);
         if e == NO_ID {
             return Err(SimplifyError::Internal(format!(
                 "sweep edge {id} was never sent to the output"
@@ -406,20 +469,19 @@ fn sweep<W: Winding>(
         }
         *slot = e;
     }
-    let k_max = s.edges.iter().map(|e| e.k).max().unwrap_or(0);
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
     Ok(CellStructure::new(
         s.points.vertices,
-        s.edges,
+        s.out.edges,
         record.then_some((s.fans, fan_edges)),
-        k_max,
+        s.out.k_max,
         max_abs,
         dims,
         s.stats,
     ))
 }
 
-impl<W: Winding> Sweep<W> {
+impl<W: Winding> Sweep<'_, W> {
     /// Adds the directed buffer edge `a -> b` (multiplicity `m`) to the
     /// pending edges (section 7.4.1). It is keyed like the edge collection
     /// of section 7.1.2, so a buffer edge going downwards vertically is
@@ -629,33 +691,6 @@ impl<W: Winding> Sweep<W> {
         Ok((lo, hi))
     }
 
-    /// Sends a finished sweep-line edge (from `l` to the vertex `end`) to
-    /// the output edges; it leaves the sweep line.
-    fn emit(
-        edges: &mut Vec<CellEdge<W>>,
-        id_to_edge: &mut [u32],
-        e: &SweepEdge<W>,
-        end: u32,
-        k: u32,
-    ) {
-        let start = e.lid;
-        let mut left = e.below.clone();
-        left.add_assign(&e.m);
-        let idx = edges.len() as u32;
-        edges.push(CellEdge {
-            start,
-            end,
-            mult: e.m.clone(),
-            left,
-            right: e.below.clone(),
-            k,
-            origin: e.origin,
-        });
-        if let Some(slot) = id_to_edge.get_mut(e.id as usize) {
-            *slot = idx;
-        }
-    }
-
     /// Processes event point `p` (section 7.6.2), at which `expected`
     /// sweep-line edges end, with the pending edges starting there (merged,
     /// sorted by right point). `split_point` is `false` when no edge was
@@ -698,8 +733,7 @@ impl<W: Winding> Sweep<W> {
         };
         // The group leaves the sweep line (replaced below); its edges are
         // read in place.
-        let (edges, id_to_edge, fan_ids) =
-            (&mut self.edges, &mut self.id_to_edge, &mut self.fan_ids);
+        let (out, fan_ids) = (&mut self.out, &mut self.fan_ids);
         let (ends, stats, record) = (&mut self.ends, &mut self.stats, self.record);
         self.line.for_range(lo, hi, |e| {
             if record {
@@ -707,7 +741,7 @@ impl<W: Winding> Sweep<W> {
                 fan_ids.push(e.id);
             }
             if e.r == p {
-                Self::emit(edges, id_to_edge, e, vid, e.k);
+                out.emit(e, vid, e.k);
             } else {
                 // Passes through p, or misgrouped (section 7.6.2): split at p.
                 match Self::classify(e, p) {
@@ -715,7 +749,7 @@ impl<W: Winding> Sweep<W> {
                     Class::Under | Class::Over => stats.misgrouped_splits += 1,
                 }
                 let k = (e.k + 1).max(k_p);
-                Self::emit(edges, id_to_edge, e, vid, k);
+                out.emit(e, vid, k);
                 // Its right part is inserted again below (or merged away).
                 ends.remove(e.rslot);
                 let (vertical, slope) = gradient(e.r);
@@ -772,9 +806,9 @@ impl<W: Winding> Sweep<W> {
             if it.m.is_zero() {
                 continue;
             }
-            let id = self.id_to_edge.len() as u32;
+            let id = self.out.id_to_edge.len() as u32;
             if self.record {
-                self.id_to_edge.push(NO_ID);
+                self.out.id_to_edge.push(NO_ID);
                 self.fan_ids.push(id);
             }
             self.ends.add(it.r, it.rslot);

@@ -71,6 +71,10 @@ proptest! {
             let out = boolean(&a, &b, op).unwrap();
             out.shape.check_topology().unwrap();
             prop_assert!(out.epsilon > 0.0);
+            // The sweep kept only the boundary edges: the same shape and
+            // bound as selecting from the complete cell structure.
+            prop_assert_eq!(&out.shape, &cells.shape_with(|w| op.selects(w[0] > 0, w[1] > 0)));
+            prop_assert_eq!(out.k_max, cells.k_max());
             for &p in &pts {
                 let w = [winding_exact(&a, p), winding_exact(&b, p)];
                 prop_assert_eq!(winding_f64(&out.shape, p), i32::from(op.selects(w[0] > 0, w[1] > 0)), "{:?} at {:?} w {:?}", op, p, w);
@@ -94,6 +98,10 @@ proptest! {
         for out in [&any_pos, &two, &summed] {
             out.shape.check_topology().unwrap();
         }
+        // Boundary-only sweeps against selecting from every edge.
+        prop_assert_eq!(&any_pos.shape, &cells.shape_with(|w| w.iter().any(|&x| x > 0)));
+        prop_assert_eq!(&two.shape, &cells.shape_with(|w| w.iter().filter(|&&x| x > 0).count() >= 2));
+        prop_assert_eq!(any_pos.k_max, cells.k_max());
         let segs = cell_segments(&cells);
         let mut rng = Xorshift64Star::new(specs[0].1);
         for _ in 0..40 {

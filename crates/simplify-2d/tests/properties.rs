@@ -6,7 +6,8 @@
 //! Random polygons of 4 to 120 vertices run many cases; those of 200 to
 //! 1,000 vertices (the top of section 7.7's range) run a few.
 //!
-//! Always: valid cell structure, closure for every rule, O(n^2) vertices,
+//! Always: valid cell structure, closure for every rule, `simplify` equal
+//! to selecting from the complete cell structure, O(n^2) vertices,
 //! every cell edge within the reported eps of its original edge (exact
 //! rational distance behind a certified floating-point filter). In general
 //! position (undisplaced): winding numbers
@@ -87,6 +88,13 @@ fn check_always(input: &PolygonSet2, n: usize) -> CellStructure<i32> {
         let out = cells.shape_with(|w| rule.contains(*w));
         out.check_topology().unwrap();
         out.validate_coordinates().unwrap();
+        // `simplify` keeps only the boundary edges during the sweep: the
+        // same shape, bounds and counters as selecting from every edge.
+        let simplified = simplify(input, rule).unwrap();
+        assert_eq!(simplified.shape, out, "{rule:?}");
+        assert_eq!(simplified.k_max, cells.k_max(), "{rule:?}");
+        assert_eq!(simplified.epsilon, cells.epsilon(), "{rule:?}");
+        assert_eq!(simplified.stats, cells.stats(), "{rule:?}");
     }
     let nv = cells.vertices().len();
     assert!(nv <= 2 * n * n + 8, "{nv} vertices for n = {n}");
