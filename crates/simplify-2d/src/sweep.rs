@@ -24,16 +24,16 @@
 //! (section 7.4.1). Split parts are never re-tested (section 8.4, footnote
 //! 2): the sweep never iterates to a fixed point (section 7.6.3).
 
+use crate::buffer_heap::{BufferHeap, Entry};
 use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
 use crate::end_points::{EndPoints, Slot};
-use crate::point::{Pt, SortKey};
+use crate::point::Pt;
 use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
 use crate::SimplifyError;
 use robust_arith::{interpolate, y_at_x};
 use std::cmp::Ordering;
-use std::collections::BinaryHeap;
 
 /// One directed input edge `a -> b` with multiplicity `mult`, and the index
 /// of the original edge it stands for (provenance).
@@ -56,40 +56,6 @@ struct Pending<W> {
     origin: u32,
     /// The counting slot of `r` (`end_points.rs`).
     rslot: Slot,
-}
-
-/// A buffer edge's place in the min-heap of pending buffer edges, ordered
-/// by its left point (as [`Pt::sort_key`]) alone: the edges taken at a point
-/// are ordered by right point and insertion order afterwards. The edge
-/// itself is in slot `slot` of the buffer slab.
-#[derive(Clone, Copy)]
-struct BufferKey {
-    key: SortKey,
-    slot: u32,
-    /// The counting slot that this edge's left point covers
-    /// (`end_points.rs`), visited when the edge is taken.
-    lslot: Slot,
-}
-
-impl PartialEq for BufferKey {
-    fn eq(&self, other: &Self) -> bool {
-        self.key == other.key
-    }
-}
-
-impl Eq for BufferKey {}
-
-impl PartialOrd for BufferKey {
-    fn partial_cmp(&self, other: &Self) -> Option<Ordering> {
-        Some(self.cmp(other))
-    }
-}
-
-impl Ord for BufferKey {
-    fn cmp(&self, other: &Self) -> Ordering {
-        // Reversed: `BinaryHeap` is a max-heap.
-        other.key.cmp(&self.key)
-    }
 }
 
 /// Merges pending edges in place, given sorted by `(l, r, seq)`, exactly
@@ -211,9 +177,12 @@ struct Sweep<W: Winding> {
     input: Vec<Pending<W>>,
     next_input: usize,
     /// Buffer edges (section 7.4.1), by left point.
-    buffer: BinaryHeap<BufferKey>,
+    buffer: BufferHeap,
     /// The buffer edges by slot, and the free slots.
     slab: Vec<Option<Pending<W>>>,
+    /// The next slot of the buffer edges that share one heap entry (both
+    /// right parts of a crossing start at its point), `NO_ID` at the end.
+    links: Vec<u32>,
     free: Vec<u32>,
     next_seq: u64,
     line: SweepLine<SweepEdge<W>>,
@@ -316,8 +285,9 @@ fn sweep<W: Winding>(
         dims,
         input: merged,
         next_input: 0,
-        buffer: BinaryHeap::new(),
+        buffer: BufferHeap::default(),
         slab: Vec::new(),
+        links: Vec::new(),
         free: Vec::new(),
         next_seq: 1,
         line: SweepLine::default(),
@@ -425,11 +395,33 @@ impl<W: Winding> Sweep<W> {
     /// of section 7.1.2, so a buffer edge going downwards vertically is
     /// reversed with its multiplicity negated (section 7.6.1); identical
     /// pending edges merge when their left point is reached.
-    fn add_pending(&mut self, a: (Pt, Slot), b: (Pt, Slot), m: W, k: u32, origin: u32) {
-        let (l, r, m) = match a.0.cmp(&b.0) {
-            Ordering::Less => (a, b, m),
-            Ordering::Greater => (b, a, m.negated()),
-            Ordering::Equal => return,
+    ///
+    /// The new edge joins to the heap entry of
+    /// the buffer edge in slab slot `join` when that edge starts at the
+    /// same point with the same counting slot (the two right parts of one
+    /// crossing): one heap entry stands for both, which the sweep pops
+    /// together, as it would have popped the two entries of one key at the
+    /// same event. Returns the slab slot of the new edge when it has one
+    /// and is keyed by its first point `a` (not reversed), so that a later
+    /// edge from `a` may join it.
+    fn add_pending(
+        &mut self,
+        a: (Pt, Slot),
+        b: (Pt, Slot),
+        m: W,
+        k: u32,
+        origin: u32,
+        join: Option<u32>,
+    ) -> Option<u32> {
+        let forward = match a.0.cmp(&b.0) {
+            Ordering::Less => true,
+            Ordering::Greater => false,
+            Ordering::Equal => return None,
+        };
+        let (l, r, m) = if forward {
+            (a, b, m)
+        } else {
+            (b, a, m.negated())
         };
         let ((l, lslot), (r, rslot)) = (l, r);
         let seq = self.next_seq;
@@ -446,24 +438,39 @@ impl<W: Winding> Sweep<W> {
         let slot = match self.free.pop() {
             Some(slot) => {
                 self.slab[slot as usize] = edge;
+                self.links[slot as usize] = NO_ID;
                 slot
             }
             None => {
                 self.slab.push(edge);
+                self.links.push(NO_ID);
                 (self.slab.len() - 1) as u32
             }
         };
-        self.buffer.push(BufferKey {
-            key: l.sort_key(),
-            slot,
-            lslot,
-        });
+        // The edge in `join` starts at `a` with the counting slot of `a`
+        // (the caller passes only such a slot): this one does too when
+        // forward, so it rides on that entry, at the end of its chain.
+        if let (true, Some(first)) = (forward, join) {
+            let mut at = first as usize;
+            while let Some(&next) = self.links.get(at) {
+                if next == NO_ID {
+                    break;
+                }
+                at = next as usize;
+            }
+            if let Some(link) = self.links.get_mut(at) {
+                *link = slot;
+                return Some(slot);
+            }
+        }
+        self.buffer.push(Entry::new(l.sort_key(), slot, lslot));
+        forward.then_some(slot)
     }
 
     /// The smallest left point of a pending edge.
     fn first_pending(&self) -> Option<Pt> {
         let a = self.input.get(self.next_input).map(|e| e.l);
-        let b = self.buffer.peek().map(|e| Pt::from_sort_key(e.key));
+        let b = self.buffer.peek_key().map(Pt::from_sort_key);
         match (a, b) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, None) => a,
@@ -497,14 +504,18 @@ impl<W: Winding> Sweep<W> {
         let key = p.sort_key();
         let mut ending = 0;
         let mut buffered = false;
-        while self.buffer.peek().is_some_and(|e| e.key == key) {
+        while self.buffer.peek_key() == Some(key) {
             buffered = true;
             if let Some(e) = self.buffer.pop() {
                 ending += self.ends.take(e.lslot);
-                if let Some(edge) = self.slab.get_mut(e.slot as usize).and_then(Option::take) {
-                    out.push(edge);
+                let mut slot = e.slot;
+                while slot != NO_ID {
+                    if let Some(edge) = self.slab.get_mut(slot as usize).and_then(Option::take) {
+                        out.push(edge);
+                    }
+                    self.free.push(slot);
+                    slot = self.links.get(slot as usize).copied().unwrap_or(NO_ID);
                 }
-                self.free.push(e.slot);
             }
         }
         // The input edges alone are merged and sorted by right point
@@ -872,11 +883,13 @@ impl<W: Winding> Sweep<W> {
     /// Shortens sweep-line edge `i` to end at `q`, sending the rest to the
     /// buffer (section 7.4.1). Both parts get the adjustment count of
     /// section 8.4: one more than the edge's, at least the vertex's `k_q`.
-    /// `q_slot` is the counting slot of `q` (`end_points.rs`).
-    fn split(&mut self, i: usize, q: Pt, q_slot: Slot, k_q: u32) {
-        let Some(e) = self.line.get_mut(i) else {
-            return;
-        };
+    /// `q_slot` is the counting slot of `q` (`end_points.rs`). The buffer
+    /// part joins the heap entry of the buffer edge in slab slot `join`, an
+    /// edge from `q` with counting slot `q_slot` too, when it can
+    /// ([`Sweep::add_pending`]), and its own slab slot is returned
+    /// when another part from `q` may join it.
+    fn split(&mut self, i: usize, q: Pt, q_slot: Slot, k_q: u32, join: Option<u32>) -> Option<u32> {
+        let e = self.line.get_mut(i)?;
         let (old_r, old_slot, m, k, origin) = {
             let k = (e.k + 1).max(k_q);
             let old = (e.r, e.rslot);
@@ -894,7 +907,7 @@ impl<W: Winding> Sweep<W> {
         } else {
             self.ends.add_uncovered(q, q_slot);
         }
-        self.add_pending((q, q_slot), (old_r, old_slot), m, k, origin);
+        self.add_pending((q, q_slot), (old_r, old_slot), m, k, origin, join)
     }
 
     /// Tests the adjacent sweep-line edges `i` (logically below) and `i + 1`.
@@ -911,14 +924,14 @@ impl<W: Winding> Sweep<W> {
         if Self::on_interior(a.r, b) {
             let (v, v_slot) = (a.r, a.rslot);
             let kv = self.vertex_k(v);
-            self.split(i + 1, v, v_slot, kv);
+            self.split(i + 1, v, v_slot, kv, None);
             self.stats.vertex_on_edge_splits += 1;
             return;
         }
         if Self::on_interior(b.r, a) {
             let (v, v_slot) = (b.r, b.rslot);
             let kv = self.vertex_k(v);
-            self.split(i, v, v_slot, kv);
+            self.split(i, v, v_slot, kv, None);
             self.stats.vertex_on_edge_splits += 1;
             return;
         }
@@ -983,11 +996,14 @@ impl<W: Winding> Sweep<W> {
             k_new = k_new.max(b.k + 1);
         }
         *info = k_new;
+        // Both right parts start at q with its counting slot: one heap
+        // entry carries them.
+        let mut join = None;
         if split_a {
-            self.split(i, q, q_slot, k_q);
+            join = self.split(i, q, q_slot, k_q, None);
         }
         if split_b {
-            self.split(i + 1, q, q_slot, k_q);
+            self.split(i + 1, q, q_slot, k_q, join);
         }
     }
 }
