@@ -52,6 +52,7 @@
 #![warn(missing_docs)]
 
 mod api;
+mod buffer_heap;
 mod cells;
 mod collection;
 mod end_points;
