@@ -263,3 +263,90 @@ pub struct SmoothInput {
     /// The tolerance's exponent.
     pub tolerance_exp: u8,
 }
+
+/// A facet for the triangulator (`topology::triangulate_facet`): closed
+/// loops lifted onto a plane of 3D space, some vertices identified
+/// (touching loops, pinched vertices, loops running back on themselves),
+/// and a *plate* built valid by construction: a rectangle with square
+/// holes in distinct cells of a grid, for the count and orientation
+/// checks that hold on valid facets only.
+#[derive(Clone, Arbitrary, Debug)]
+pub struct FacetInput {
+    /// Loops in the plane (multiplicity: repeated, or reversed if negative).
+    pub loops: Loops,
+    /// Vertex pairs `(a, b)` (modulo the vertex count): `b` becomes `a`.
+    pub identify: Vec<(u8, u8)>,
+    /// How the plane sits in space: 0 xy, 1 yz, 2 zx, 3 tilted.
+    pub plane: u8,
+    /// The plate: `(columns, rows, hole cells)`, cells modulo the grid.
+    pub plate: (u8, u8, Vec<(u8, u8)>),
+}
+
+impl FacetInput {
+    /// Lifts a plane point into space.
+    pub fn lift(&self, p: [f64; 2]) -> [f64; 3] {
+        match self.plane % 4 {
+            0 => [p[0], p[1], 0.0],
+            1 => [0.5, p[0], p[1]],
+            2 => [p[1], -2.0, p[0]],
+            _ => [p[0], p[1], 0.5 * p[0] - 0.25 * p[1] + 1.0],
+        }
+    }
+
+    /// The loops as positions and half-edges, identified vertices merged.
+    pub fn loops_facet(&self) -> (Vec<[f64; 3]>, Vec<(u32, u32)>) {
+        let set = self.loops.to_set();
+        let positions: Vec<[f64; 3]> = set.vertices().iter().map(|&p| self.lift(p)).collect();
+        let n = positions.len();
+        let mut alias: Vec<u32> = (0..n as u32).collect();
+        if n > 0 {
+            for &(a, b) in self.identify.iter().take(8) {
+                let (a, b) = (usize::from(a) % n, usize::from(b) % n);
+                alias[b] = alias[a];
+            }
+        }
+        let mut half_edges = Vec::new();
+        for e in set.edges() {
+            let (s, t) = (alias[e.start as usize], alias[e.end as usize]);
+            for _ in 0..e.mult.unsigned_abs() {
+                half_edges.push(if e.mult > 0 { (s, t) } else { (t, s) });
+            }
+        }
+        (positions, half_edges)
+    }
+
+    /// The plate: positions, half-edges (outer boundary anticlockwise in
+    /// the plane, holes clockwise), the plane positions, and the hole count.
+    pub fn plate_facet(&self) -> (Vec<[f64; 3]>, Vec<(u32, u32)>, Vec<[f64; 2]>, usize) {
+        let (w, h) = (
+            u32::from(self.plate.0 % 12) + 1,
+            u32::from(self.plate.1 % 12) + 1,
+        );
+        let mut cells: Vec<(u32, u32)> = self
+            .plate
+            .2
+            .iter()
+            .take(64)
+            .map(|&(i, j)| (u32::from(i) % w, u32::from(j) % h))
+            .collect();
+        cells.sort_unstable();
+        cells.dedup();
+        let (fw, fh) = (f64::from(4 * w), f64::from(4 * h));
+        let mut plane = vec![[0.0, 0.0], [fw, 0.0], [fw, fh], [0.0, fh]];
+        let mut half_edges = vec![(0, 1), (1, 2), (2, 3), (3, 0)];
+        for &(i, j) in &cells {
+            let (x, y) = (f64::from(4 * i), f64::from(4 * j));
+            let b = plane.len() as u32;
+            // Clockwise: a hole.
+            plane.extend([
+                [x + 1.0, y + 1.0],
+                [x + 1.0, y + 3.0],
+                [x + 3.0, y + 3.0],
+                [x + 3.0, y + 1.0],
+            ]);
+            half_edges.extend([(b, b + 1), (b + 1, b + 2), (b + 2, b + 3), (b + 3, b)]);
+        }
+        let positions = plane.iter().map(|&p| self.lift(p)).collect();
+        (positions, half_edges, plane, cells.len())
+    }
+}
