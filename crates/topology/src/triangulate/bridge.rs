@@ -15,9 +15,20 @@
 //! the same bridges.
 
 use super::grid::{bounds, Grid};
-use super::{in_box_and_triangle, ring_area, Search, P2};
+use super::{in_box_and_triangle, orient, ring_area, Search, P2};
 
 const NONE: u32 = u32::MAX;
+
+/// Which edges with an end on the bridge's ray cross it.
+#[derive(Clone, Copy)]
+enum Ray {
+    /// Every edge meeting the ray.
+    Closed,
+    /// The ray just above: edges ending on it from below miss it.
+    Above,
+    /// The ray just below: edges ending on it from above miss it.
+    Below,
+}
 
 /// Merges every hole inside a region into an outer polygon by bridges
 /// (two opposite half-edges each) and returns the outer polygons followed
@@ -84,6 +95,7 @@ struct Lists {
     /// A node's vertex and position.
     node: Vec<(u32, P2)>,
     next: Vec<u32>,
+    prev: Vec<u32>,
     /// The order label along the node's polygon.
     key: Vec<u64>,
     /// The outer polygon the node belongs to (`NONE`: an unmerged hole).
@@ -113,6 +125,7 @@ impl Lists {
         let mut l = Lists {
             node: Vec::with_capacity(cap),
             next: Vec::with_capacity(cap),
+            prev: Vec::with_capacity(cap),
             key: Vec::with_capacity(cap),
             owner: Vec::with_capacity(cap),
             ring_base: Vec::with_capacity(rings.len()),
@@ -130,6 +143,7 @@ impl Lists {
             for (i, &v) in r.iter().enumerate() {
                 l.node.push(v);
                 l.next.push(base + ((i + 1) % r.len()) as u32);
+                l.prev.push(base + ((i + r.len() - 1) % r.len()) as u32);
                 l.key.push(0);
                 l.owner.push(NONE);
                 l.node_edge.push(NONE);
@@ -190,6 +204,7 @@ impl Lists {
         let v = self.node.len() as u32;
         self.node.push(self.node[of as usize]);
         self.next.push(NONE);
+        self.prev.push(NONE);
         self.key.push(0);
         self.owner.push(self.owner[of as usize]);
         self.node_edge.push(NONE);
@@ -202,8 +217,23 @@ impl Lists {
     /// the smallest angle with the ray. Ties go to the first outer polygon
     /// and the first node along it. `None` when `m` is not inside a
     /// region: the ray meets no boundary, or meets a boundary going down
-    /// (entering a region from outside) strictly first.
+    /// (entering a region from outside) strictly first, beyond `m`.
+    ///
+    /// A boundary with a vertex on the ray is first met the closed way
+    /// (both edges at the vertex cross the ray there). Where that finds
+    /// `m` outside, the ray is also taken just above and just below `m`
+    /// (an edge whose upper, resp. lower, end is on the ray misses it): a
+    /// hole touching others or the outer polygon at its rightmost vertex
+    /// can have a boundary running along the ray from `m` on that the
+    /// closed way takes for an entry, while on one side of the ray it
+    /// is plainly inside.
     fn find_bridge(&self, m: P2) -> Option<u32> {
+        [Ray::Closed, Ray::Above, Ray::Below]
+            .into_iter()
+            .find_map(|ray| self.find_bridge_by(m, ray))
+    }
+
+    fn find_bridge_by(&self, m: P2, ray: Ray) -> Option<u32> {
         // (crossing u, outer, label, vertex)
         let mut best: Option<(f64, u32, u64, u32)> = None;
         let mut entering = f64::INFINITY;
@@ -211,8 +241,15 @@ impl Lists {
             let s = self.edge_start[e as usize];
             let t = self.next[s as usize];
             let (p, q) = (self.pos(s), self.pos(t));
-            if p[1] == q[1] || m[1] < p[1].min(q[1]) || m[1] > p[1].max(q[1]) {
+            let (y0, y1) = (p[1].min(q[1]), p[1].max(q[1]));
+            if p[1] == q[1] || m[1] < y0 || m[1] > y1 {
                 return;
+            }
+            match ray {
+                Ray::Closed => {}
+                Ray::Above if m[1] == y1 => return,
+                Ray::Below if m[1] == y0 => return,
+                Ray::Above | Ray::Below => {}
             }
             // Exact at the endpoints, so that the two edges at a vertex on
             // the ray cross it at the same u; elsewhere interpolated from
@@ -249,7 +286,10 @@ impl Lists {
                     let v = if p[0] > q[0] { s } else { t };
                     *best = Some((x, oi, key, v));
                 }
-            } else {
+            } else if x > m[0] {
+                // A boundary through `m` itself (a hole touching another
+                // one, or the outer polygon, at its rightmost vertex)
+                // neither encloses `m` nor shuts it out.
                 *entering = entering.min(x);
             }
         };
@@ -318,7 +358,61 @@ impl Lists {
                 .filter(|&v| self.owner[v as usize] != NONE)
                 .for_each(&mut visit),
         }
-        Some(vi)
+        Some(self.facing_copy(oi, vi, m))
+    }
+
+    /// Of the nodes of outer polygon `oi` at the position of node `v` (a
+    /// vertex a bridge reached before is there once per visit), the first
+    /// along the polygon whose corner opens towards `m`: a bridge from
+    /// another copy would leave the corner through the polygon's own
+    /// edges and cross them. `v` when none does (a degenerate corner).
+    fn facing_copy(&self, oi: u32, v: u32, m: P2) -> u32 {
+        let c = self.pos(v);
+        let mut best: Option<(u64, u32)> = None;
+        let mut visit = |w: u32| {
+            if self.owner[w as usize] == oi
+                && self.pos(w) == c
+                && best.is_none_or(|b| self.key[w as usize] < b.0)
+                && self.opens_towards(w, m)
+            {
+                best = Some((self.key[w as usize], w));
+            }
+        };
+        match &self.points {
+            Some(g) => {
+                g.any_in(c, c, |w| {
+                    visit(w);
+                    false
+                });
+            }
+            None => (0..self.node.len() as u32).for_each(&mut visit),
+        }
+        best.map_or(v, |b| b.1)
+    }
+
+    /// Whether the direction from node `a` to `m` lies in `a`'s corner of
+    /// the polygon (closed: along either side counts), the sweep
+    /// anticlockwise from the way to the next node to the way back to the
+    /// previous one.
+    fn opens_towards(&self, a: u32, m: P2) -> bool {
+        let pa = self.pos(a);
+        let next = self.pos(self.next[a as usize]);
+        let prev = self.pos(self.prev[a as usize]);
+        let turn = orient(pa, next, prev);
+        let (to_next, from_prev) = (orient(pa, next, m), orient(pa, m, prev));
+        if turn > 0.0 {
+            to_next >= 0.0 && from_prev >= 0.0
+        } else if turn < 0.0 {
+            to_next >= 0.0 || from_prev >= 0.0
+        } else {
+            // Straight on (the half-plane on the left), or a spike (the
+            // corner is the full turn).
+            let (u, w) = (
+                [next[0] - pa[0], next[1] - pa[1]],
+                [prev[0] - pa[0], prev[1] - pa[1]],
+            );
+            u[0] * w[0] + u[1] * w[1] > 0.0 || to_next >= 0.0
+        }
     }
 
     /// Merges the hole of `len` nodes from node `base` into the polygon of
@@ -336,6 +430,10 @@ impl Lists {
         self.next[before as usize] = hk2;
         self.next[hk2 as usize] = x2;
         self.next[x2 as usize] = old_next;
+        self.prev[hk as usize] = x;
+        self.prev[hk2 as usize] = before;
+        self.prev[x2 as usize] = hk2;
+        self.prev[old_next as usize] = x2;
         // The edge x -> old next now starts at x2.
         let e = self.node_edge[x as usize];
         self.edge_start[e as usize] = x2;

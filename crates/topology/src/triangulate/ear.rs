@@ -24,7 +24,9 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
     }
     let pos = |i: usize| poly[i].1;
     let grid = match search {
-        Search::Indexed if n >= INDEXED && poly.iter().all(|p| p.1.iter().all(|c| c.is_finite())) => {
+        Search::Indexed
+            if n >= INDEXED && poly.iter().all(|p| p.1.iter().all(|c| c.is_finite())) =>
+        {
             bounds(poly.iter().map(|p| p.1)).map(|(lo, hi)| {
                 let mut g = Grid::new(lo, hi, n);
                 for (i, p) in poly.iter().enumerate() {

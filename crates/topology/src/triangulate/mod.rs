@@ -48,6 +48,8 @@ mod bridge;
 mod ear;
 mod grid;
 mod optimal;
+#[cfg(test)]
+mod props;
 
 use crate::{HalfEdge, PolygonMesh, TriangleMesh};
 use robust_arith::Point3;
