@@ -62,7 +62,8 @@ fn disc() -> Facet {
     for i in 0..40 {
         for j in 0..25 {
             let (x, y) = (-13.0 + 0.65 * f64::from(i), -13.0 + 1.05 * f64::from(j));
-            let hole = [[x + 0.2, y], [x, y + 0.3], [x - 0.2, y], [x, y - 0.3]];
+            // Clockwise, as the holes of `plate`.
+            let hole = [[x + 0.2, y], [x, y - 0.3], [x - 0.2, y], [x, y + 0.3]];
             push_loop(&mut pts, &mut hes, &hole);
         }
     }

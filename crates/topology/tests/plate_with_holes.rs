@@ -34,7 +34,12 @@ fn plate(w: u32, h: u32) -> (PolygonMesh, f64) {
             let y = f64::from(j) + 0.25 + f64::from((i * 3 + j * 5) % 5) / 32.0 - 2.0 / 32.0;
             let b = v.len() as u32;
             for z in [0.0, 1.0] {
-                v.extend([[x, y, z], [x + 0.5, y, z], [x + 0.5, y + 0.5, z], [x, y + 0.5, z]]);
+                v.extend([
+                    [x, y, z],
+                    [x + 0.5, y, z],
+                    [x + 0.5, y + 0.5, z],
+                    [x, y + 0.5, z],
+                ]);
             }
             hole_area += 0.25;
             // The caps' holes run against the caps' outer loops; the

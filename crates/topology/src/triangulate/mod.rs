@@ -456,10 +456,9 @@ mod tests {
     #[test]
     fn every_hole_of_a_grid_is_bridged() {
         // V + 2H - 2 triangles: no hole left on its own (each would save
-        // 4 triangles and overlap the region around it), and the signed
-        // area exactly the facet's. (Ear clipping of the bridged polygon
-        // can still leave a few zero-area or reversed slivers where bridges
-        // run along collinear hole edges: a known limit of the ears.)
+        // 4 triangles and overlap the region around it), the signed area
+        // exactly the facet's, and no triangle reversed (a bridge from the
+        // wrong copy of a vertex reached twice would cross another one).
         let (w, h) = (16, 10);
         let (pts, hes) = grid_of_holes(w, h);
         let holes = (w * h) as usize;
@@ -471,6 +470,11 @@ mod tests {
         for tri in &t {
             let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
             area += orient(a, b, c) / 2.0;
+            assert_ne!(
+                robust_arith::orient2d(a, b, c),
+                std::cmp::Ordering::Less,
+                "{tri:?}"
+            );
         }
         assert_eq!(area, f64::from(w * h) * 0.75);
     }
