@@ -217,7 +217,7 @@ impl Lists {
     /// the smallest angle with the ray. Ties go to the first outer polygon
     /// and the first node along it. `None` when `m` is not inside a
     /// region: the ray meets no boundary, or meets a boundary going down
-    /// (entering a region from outside) strictly first, beyond `m`.
+    /// (entering a region from outside) strictly first.
     ///
     /// A boundary with a vertex on the ray is first met the closed way
     /// (both edges at the vertex cross the ray there). Where that finds
@@ -286,10 +286,7 @@ impl Lists {
                     let v = if p[0] > q[0] { s } else { t };
                     *best = Some((x, oi, key, v));
                 }
-            } else if x > m[0] {
-                // A boundary through `m` itself (a hole touching another
-                // one, or the outer polygon, at its rightmost vertex)
-                // neither encloses `m` nor shuts it out.
+            } else {
                 *entering = entering.min(x);
             }
         };

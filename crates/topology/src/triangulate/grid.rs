@@ -28,7 +28,8 @@ impl Grid {
     pub(super) fn new(lo: P2, hi: P2, items: usize) -> Grid {
         let cells = (items / PER_CELL).max(1);
         let (w, h) = (hi[0] - lo[0], hi[1] - lo[1]);
-        let (nx, ny) = if !(w > 0.0) || !(h > 0.0) || !(w / h).is_finite() {
+        // Finite corners: `w` and `h` are never NaN (at most infinite).
+        let (nx, ny) = if w <= 0.0 || h <= 0.0 || !(w / h).is_finite() {
             // A flat or needle-like box: cells along its longer side only.
             if w >= h {
                 (cells, 1)

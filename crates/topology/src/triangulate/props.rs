@@ -78,8 +78,8 @@ fn cut(corners: &[[i64; 2]], cuts: u8) -> Vec<[i64; 2]> {
 /// Builds the plate: `w x h` cells of 192 units, the outer ring's sides
 /// cut into `outer_cuts` pieces, every ring starting at a vertex chosen by
 /// `rot`, `dup` vertices of the outer ring doubled (a second vertex at
-/// the same position), embedded in the plane `axis = 7` (mirrored when
-/// `flip`).
+/// the same position), embedded in the plane `frame.0 = 7` (mirrored
+/// when `frame.1`).
 fn plate(
     w: i64,
     h: i64,
@@ -87,9 +87,9 @@ fn plate(
     outer_cuts: u8,
     rot: usize,
     dup: &[usize],
-    axis: usize,
-    flip: bool,
+    frame: (usize, bool),
 ) -> Plate {
+    let (axis, flip) = frame;
     const S: i64 = 192; // the cell side: sixteenths times 12
     let mut uv: Vec<P2> = Vec::new();
     let mut loops: Vec<Vec<u32>> = Vec::new();
@@ -175,7 +175,7 @@ fn plate_strategy() -> impl Strategy<Value = Plate> {
             )
         })
         .prop_map(|(w, h, cells, oc, rot, dup, axis, flip)| {
-            plate(w, h, &cells, oc, rot, &dup, axis, flip)
+            plate(w, h, &cells, oc, rot, &dup, (axis, flip))
         })
 }
 
@@ -297,11 +297,11 @@ fn a_plate_of_1000_holes_keeps_the_invariants() {
             _ => Cell::Rect([1 + (i % 3) as u8, 12 + (i % 4) as u8, 2, 14], 1),
         })
         .collect();
-    let p = plate(40, 25, &cells, 3, 5, &[], 2, false);
+    let p = plate(40, 25, &cells, 3, 5, &[], (2, false));
     assert_eq!(p.holes, 1000);
     assert!(p.strict);
     let tris = run(&p, Search::Indexed);
     check(&p, &tris).unwrap();
-    let small = plate(40, 4, &cells, 3, 5, &[], 2, false);
+    let small = plate(40, 4, &cells, 3, 5, &[], (2, false));
     assert_eq!(run(&small, Search::Indexed), run(&small, Search::Linear));
 }
