@@ -22,7 +22,9 @@
 //!    a region (the ray meets no boundary, or first meets one from outside)
 //!    bounds an inside-out region (section 4.7): a bridge would only drag
 //!    the region's triangles across the facet, so it is triangulated on its
-//!    own, mirrored.
+//!    own, mirrored. Where a vertex is on the polygon more than once (a
+//!    bridge reached it before), the bridge leaves from the copy whose
+//!    corner opens towards the hole, so that bridges never cross.
 //! 4. Each outer polygon is ear-clipped: an ear `(a, b, c)` adds the
 //!    internal edge `c -> a` to the triangle and `a -> c` to the remaining
 //!    polygon. A valid ear (anticlockwise, no other vertex in it) is taken
@@ -43,11 +45,38 @@
 //!    absolute triangle area over all its triangulations by internal edges
 //!    (section 4.8: "minimises how far any geometrically invalid region is
 //!    extended").
+//!
+//! Cost. Facets of many vertices and holes (a slab's face pierced by
+//! 1,000 boxes) take `O(n log n)`-like time rather than the quadratic one
+//! of plain hole elimination and ear clipping: holes are merged into
+//! linked lists (`bridge`), and both the bridges' ray and triangle
+//! searches and the ear tests look their candidates up in a uniform grid
+//! (`grid`) instead of scanning the polygon. The grid only narrows the
+//! candidates, never the tests they go through, so the indexed and the
+//! linear search (kept for small polygons and non-finite coordinates)
+//! build the same triangles; the property tests check it.
+
+mod bridge;
+mod ear;
+mod grid;
+mod optimal;
+#[cfg(test)]
+mod props;
 
 use crate::{HalfEdge, PolygonMesh, TriangleMesh};
 use robust_arith::Point3;
 
 type P2 = [f64; 2];
+
+/// How the hole bridging and the ear tests find their candidates: in a
+/// spatial index (big polygons with finite coordinates) or by scanning
+/// every vertex and edge. Both find the same bridges and ears; the linear
+/// scan is kept for small polygons and as the tests' reference.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
+enum Search {
+    Linear,
+    Indexed,
+}
 
 /// Triangulates one facet given as half-edges `(start, end)` between
 /// vertices of `positions` (section 4.8), appending triangles to `out`.
@@ -64,6 +93,21 @@ type P2 = [f64; 2];
 /// extending the invalid region as little as possible, and triangulates
 /// inside-out loops lying outside every region on their own.
 pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &mut Vec<[u32; 3]>) {
+    let search = if half_edges.len() >= ear::INDEXED {
+        Search::Indexed
+    } else {
+        Search::Linear
+    };
+    triangulate_facet_by(positions, half_edges, search, out);
+}
+
+/// [`triangulate_facet`] with the given candidate search.
+fn triangulate_facet_by(
+    positions: &[Point3],
+    half_edges: &[(u32, u32)],
+    search: Search,
+    out: &mut Vec<[u32; 3]>,
+) {
     let n = positions.len();
     if half_edges
         .iter()
@@ -122,8 +166,8 @@ pub fn triangulate_facet(positions: &[Point3], half_edges: &[(u32, u32)], out: &
     if rings.is_empty() {
         return;
     }
-    for polygon in bridge_holes(rings) {
-        triangulate_polygon(polygon, out);
+    for polygon in bridge::bridge_holes(rings, search) {
+        triangulate_polygon(polygon, search, out);
     }
 }
 
@@ -134,7 +178,7 @@ const MAX_OPTIMAL: usize = 160;
 
 /// Triangulates one polygon (an outer boundary with its holes bridged in,
 /// or an inside-out loop on its own), appending triangles of vertex ids.
-fn triangulate_polygon(mut poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
+fn triangulate_polygon(mut poly: Vec<(u32, P2)>, search: Search, out: &mut Vec<[u32; 3]>) {
     // A polygon of negative area (an inside-out loop, section 4.7) is
     // clipped mirrored, so that its ears are valid, and flipped back:
     // reversing a ring and every triangle keeps the internal edges paired.
@@ -143,13 +187,13 @@ fn triangulate_polygon(mut poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
         poly.reverse();
     }
     let mut tris = Vec::with_capacity(poly.len().saturating_sub(2));
-    ear_clip(&poly, &mut tris);
+    ear::ear_clip(&poly, search, &mut tris);
     let twice_area = |t: &[usize; 3]| orient(poly[t[0]].1, poly[t[1]].1, poly[t[2]].1);
     if poly.len() <= MAX_OPTIMAL && tris.iter().any(|t| twice_area(t) < 0.0) {
         // Figure 4.10 generalised: the triangulation covering the least
         // total area, if it beats the ears.
         let clipped: f64 = tris.iter().map(|t| twice_area(t).abs()).sum();
-        let (least, optimal) = min_overlap(&poly);
+        let (least, optimal) = optimal::min_overlap(&poly);
         if least < clipped {
             tris = optimal;
         }
@@ -162,46 +206,6 @@ fn triangulate_polygon(mut poly: Vec<(u32, P2)>, out: &mut Vec<[u32; 3]>) {
             [a, b, c]
         }
     }));
-}
-
-/// The triangulation of a polygon (as positions in `poly`) of least total
-/// absolute area, and twice that area, by the classic recurrence over
-/// sub-polygons `i..=j` (every internal edge splits a polygon in two, so
-/// these are all the triangulations by internal edges). Non-finite areas
-/// (garbage coordinates) never win a comparison, so the result is always a
-/// complete triangulation.
-fn min_overlap(poly: &[(u32, P2)]) -> (f64, Vec<[usize; 3]>) {
-    let n = poly.len();
-    let mut cost = vec![0.0f64; n * n];
-    let mut split = vec![0u32; n * n];
-    for len in 2..n {
-        for i in 0..n - len {
-            let j = i + len;
-            let (mut best, mut arg) = (f64::INFINITY, i + 1);
-            for k in i + 1..j {
-                let c = cost[i * n + k]
-                    + cost[k * n + j]
-                    + orient(poly[i].1, poly[k].1, poly[j].1).abs();
-                if c < best {
-                    best = c;
-                    arg = k;
-                }
-            }
-            cost[i * n + j] = best;
-            split[i * n + j] = arg as u32;
-        }
-    }
-    let mut tris = Vec::with_capacity(n.saturating_sub(2));
-    let mut stack = vec![(0, n - 1)];
-    while let Some((i, j)) = stack.pop() {
-        if j - i >= 2 {
-            let k = split[i * n + j] as usize;
-            tris.push([i, k, j]);
-            stack.push((k, j));
-            stack.push((i, k));
-        }
-    }
-    (cost[n - 1], tris)
 }
 
 /// Triangulates every facet of a polygon mesh (section 4.8). The result
@@ -309,242 +313,23 @@ fn ring_area(r: &[(u32, P2)]) -> f64 {
     s / 2.0
 }
 
-/// Merges every hole inside a region into an outer polygon by bridges
-/// (two opposite half-edges each) and returns the outer polygons followed
-/// by the holes left on their own (inside-out regions).
-fn bridge_holes(rings: Vec<Vec<(u32, P2)>>) -> Vec<Vec<(u32, P2)>> {
-    let areas: Vec<f64> = rings.iter().map(|r| ring_area(r)).collect();
-    let mut outer_idx: Vec<usize> = (0..rings.len()).filter(|&i| areas[i] > 0.0).collect();
-    if outer_idx.is_empty() {
-        // An inside-out or degenerate facet: the loop of largest extent
-        // plays the outer boundary.
-        let mut best = 0;
-        for i in 1..rings.len() {
-            if areas[i].abs() > areas[best].abs() {
-                best = i;
-            }
-        }
-        outer_idx.push(best);
-    }
-    let mut is_outer = vec![false; rings.len()];
-    for &i in &outer_idx {
-        is_outer[i] = true;
-    }
-    let rightmost = |r: &[(u32, P2)]| {
-        let mut k = 0;
-        for i in 1..r.len() {
-            let (p, q) = (r[i].1, r[k].1);
-            if p[0] > q[0] || (p[0] == q[0] && p[1] > q[1]) {
-                k = i;
-            }
-        }
-        k
-    };
-    let mut holes: Vec<(usize, usize)> = (0..rings.len())
-        .filter(|&i| !is_outer[i])
-        .map(|i| (i, rightmost(&rings[i])))
-        .collect();
-    // Rightmost holes first, so a hole further left may bridge into one
-    // already merged (its edges are then part of the outer polygon).
-    holes.sort_by(|&(i, ki), &(j, kj)| {
-        let (p, q) = (rings[i][ki].1, rings[j][kj].1);
-        q[0].total_cmp(&p[0])
-            .then(q[1].total_cmp(&p[1]))
-            .then(i.cmp(&j))
-    });
-    let mut outers: Vec<Vec<(u32, P2)>> = outer_idx.iter().map(|&i| rings[i].clone()).collect();
-    let mut alone = Vec::new();
-    for (h, k) in holes {
-        let hole = &rings[h];
-        let m = hole[k].1;
-        let Some((oi, pi)) = find_bridge(&outers, m) else {
-            alone.push(hole.clone());
-            continue;
-        };
-        let outer = &mut outers[oi];
-        let mut merged = Vec::with_capacity(outer.len() + hole.len() + 2);
-        merged.extend_from_slice(&outer[..=pi]);
-        for t in 0..hole.len() {
-            merged.push(hole[(k + t) % hole.len()]);
-        }
-        merged.push(hole[k]);
-        merged.push(outer[pi]);
-        merged.extend_from_slice(&outer[pi + 1..]);
-        *outer = merged;
-    }
-    outers.extend(alone);
-    outers
-}
-
-/// The outer polygon and vertex a hole's rightmost point `m` is bridged
-/// to: the nearest boundary crossing of the ray from `m` in +u, its
-/// endpoint of larger u, or a vertex inside the triangle (m, crossing,
-/// endpoint) making the smallest angle with the ray. `None` when `m` is
-/// not inside a region: the ray meets no boundary, or meets a boundary
-/// going down (entering a region from outside) strictly first.
-fn find_bridge(outers: &[Vec<(u32, P2)>], m: P2) -> Option<(usize, usize)> {
-    let mut best: Option<(f64, usize, usize)> = None; // (crossing u, outer, vertex)
-    let mut entering = f64::INFINITY;
-    for (oi, r) in outers.iter().enumerate() {
-        for i in 0..r.len() {
-            let p = r[i].1;
-            let q = r[(i + 1) % r.len()].1;
-            if p[1] == q[1] || m[1] < p[1].min(q[1]) || m[1] > p[1].max(q[1]) {
-                continue;
-            }
-            // Exact at the endpoints, so that the two edges at a vertex on
-            // the ray cross it at the same u; elsewhere interpolated from
-            // the lower endpoint, so that a segment crosses at the same u
-            // whichever way it runs (a bridge and its way back, or a merged
-            // hole's edge and the outer's: a rounding difference between
-            // the two would make the way down seem nearer and the hole be
-            // taken for an inside-out region).
-            let (lo, up) = if p[1] < q[1] { (p, q) } else { (q, p) };
-            let x = if m[1] == p[1] {
-                p[0]
-            } else if m[1] == q[1] {
-                q[0]
-            } else {
-                lo[0] + (m[1] - lo[1]) * (up[0] - lo[0]) / (up[1] - lo[1])
-            };
-            if x < m[0] {
-                continue;
-            }
-            if p[1] < q[1] {
-                // Edges going up cross the +u ray on the right of an
-                // anticlockwise outer boundary.
-                if best.is_none_or(|(bx, _, _)| x < bx) {
-                    let v = if p[0] > q[0] { i } else { (i + 1) % r.len() };
-                    best = Some((x, oi, v));
-                }
-            } else {
-                entering = entering.min(x);
-            }
-        }
-    }
-    let (qx, oi, mut vi) = best?;
-    if entering < qx {
-        return None;
-    }
-    // Refine: a vertex inside the triangle (m, (qx, m.v), candidate) may
-    // block the bridge; the one at the smallest angle to the ray does not.
-    let r = &outers[oi];
-    let c = r[vi].1;
-    let (t0, t1, t2) = if m[1] < c[1] {
-        (m, [qx, m[1]], c)
-    } else {
-        ([qx, m[1]], m, c)
-    };
-    let mut tan_min = f64::INFINITY;
-    for (i, &(_, p)) in r.iter().enumerate() {
-        if p[0] >= m[0] && p[0] <= c[0] && p[0] != m[0] && p != c && in_triangle(t0, t1, t2, p) {
-            let tan = (m[1] - p[1]).abs() / (p[0] - m[0]);
-            if tan < tan_min || (tan == tan_min && p[0] < r[vi].1[0]) {
-                tan_min = tan;
-                vi = i;
-            }
-        }
-    }
-    Some((oi, vi))
-}
-
-/// Whether `p` lies in the closed triangle `(a, b, c)` of either
-/// orientation.
+/// Whether `p` lies in the closed box and the closed triangle `(a, b, c)`
+/// of either orientation. (A point in the triangle is in its box; the box
+/// only rules out points that rounding puts in a thin triangle's
+/// supporting lines, and lets the spatial index find every candidate.)
 #[inline]
-fn in_triangle(a: P2, b: P2, c: P2, p: P2) -> bool {
+fn in_box_and_triangle(a: P2, b: P2, c: P2, p: P2) -> bool {
+    if p[0] < a[0].min(b[0]).min(c[0])
+        || p[0] > a[0].max(b[0]).max(c[0])
+        || p[1] < a[1].min(b[1]).min(c[1])
+        || p[1] > a[1].max(b[1]).max(c[1])
+    {
+        return false;
+    }
     let d1 = orient(a, b, p);
     let d2 = orient(b, c, p);
     let d3 = orient(c, a, p);
     (d1 >= 0.0 && d2 >= 0.0 && d3 >= 0.0) || (d1 <= 0.0 && d2 <= 0.0 && d3 <= 0.0)
-}
-
-/// Ear clipping of one polygon (possibly with repeated vertices from
-/// bridges, possibly self-overlapping), as triangles of positions in `poly`.
-fn ear_clip(poly: &[(u32, P2)], out: &mut Vec<[usize; 3]>) {
-    let n = poly.len();
-    if n < 3 {
-        return; // one or two half-edges balance by themselves
-    }
-    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
-    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
-    let mut alive = vec![true; n];
-    let mut remaining = n;
-    let mut cur = 0;
-    let pos = |i: usize| poly[i].1;
-    while remaining > 3 {
-        if remaining == 4 {
-            // Figure 4.10: of the two diagonals take the one whose
-            // triangles cover less area (no more than the quadrilateral
-            // when it is valid, else the smaller overlap).
-            let a = cur;
-            let b = next[a];
-            let c = next[b];
-            let d = next[c];
-            let (pa, pb, pc, pd) = (pos(a), pos(b), pos(c), pos(d));
-            let ac_valid = orient(pa, pb, pc) > 0.0 && orient(pa, pc, pd) > 0.0;
-            let bd_valid = orient(pb, pc, pd) > 0.0 && orient(pb, pd, pa) > 0.0;
-            let ac = orient(pa, pb, pc).abs() + orient(pa, pc, pd).abs();
-            let bd = orient(pb, pc, pd).abs() + orient(pb, pd, pa).abs();
-            let use_ac = if ac_valid != bd_valid {
-                ac_valid
-            } else {
-                ac <= bd
-            };
-            let (p, q, r, s) = if use_ac { (a, b, c, d) } else { (b, c, d, a) };
-            out.push([p, q, r]);
-            out.push([p, r, s]);
-            return;
-        }
-        // Pass 1: a valid ear; pass 2: a degenerate one; pass 3: the
-        // smallest absolute area.
-        let mut chosen = None;
-        let mut degenerate = None;
-        let mut smallest: Option<(f64, usize)> = None;
-        let mut i = cur;
-        for _ in 0..remaining {
-            let (a, c) = (prev[i], next[i]);
-            let (pa, pb, pc) = (pos(a), pos(i), pos(c));
-            let area = orient(pa, pb, pc);
-            if area > 0.0 {
-                let mut empty = true;
-                let mut j = next[c];
-                while j != a {
-                    let p = pos(j);
-                    if p != pa && p != pb && p != pc && in_triangle(pa, pb, pc, p) {
-                        empty = false;
-                        break;
-                    }
-                    j = next[j];
-                }
-                if empty {
-                    chosen = Some(i);
-                    break;
-                }
-            } else if area == 0.0 && degenerate.is_none() {
-                degenerate = Some(i);
-            }
-            if smallest.is_none_or(|(s, _)| area.abs() < s) {
-                smallest = Some((area.abs(), i));
-            }
-            i = next[i];
-        }
-        let ear = chosen
-            .or(degenerate)
-            .or(smallest.map(|s| s.1))
-            .unwrap_or(cur);
-        let (a, c) = (prev[ear], next[ear]);
-        out.push([a, ear, c]);
-        alive[ear] = false;
-        next[a] = c;
-        prev[c] = a;
-        remaining -= 1;
-        cur = c;
-    }
-    let a = cur;
-    let b = next[a];
-    let c = next[b];
-    debug_assert!(alive[a] && alive[b] && alive[c]);
-    out.push([a, b, c]);
 }
 
 #[cfg(test)]
@@ -671,10 +456,9 @@ mod tests {
     #[test]
     fn every_hole_of_a_grid_is_bridged() {
         // V + 2H - 2 triangles: no hole left on its own (each would save
-        // 4 triangles and overlap the region around it), and the signed
-        // area exactly the facet's. (Ear clipping of the bridged polygon
-        // can still leave a few zero-area or reversed slivers where bridges
-        // run along collinear hole edges: a known limit of the ears.)
+        // 4 triangles and overlap the region around it), the signed area
+        // exactly the facet's, and no triangle reversed (a bridge from the
+        // wrong copy of a vertex reached twice would cross another one).
         let (w, h) = (16, 10);
         let (pts, hes) = grid_of_holes(w, h);
         let holes = (w * h) as usize;
@@ -686,6 +470,11 @@ mod tests {
         for tri in &t {
             let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
             area += orient(a, b, c) / 2.0;
+            assert_ne!(
+                robust_arith::orient2d(a, b, c),
+                std::cmp::Ordering::Less,
+                "{tri:?}"
+            );
         }
         assert_eq!(area, f64::from(w * h) * 0.75);
     }

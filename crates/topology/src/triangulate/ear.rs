@@ -1,0 +1,141 @@
+//! Ear clipping of one polygon (section 4.8, step 4): possibly with
+//! repeated vertices from bridges, possibly self-overlapping.
+//!
+//! The scan for an ear is the plain one (from the vertex after the last
+//! ear, the first valid ear, else the first degenerate one, else the one
+//! of smallest absolute area); on polygons of [`INDEXED`] vertices or more
+//! it resumes one vertex further on, past the last ear's neighbour, as
+//! the `earcut` library does: ears then stay small, and so do the boxes
+//! below. What makes it fast on big polygons is the test of a valid ear's
+//! emptiness: only vertices in the ear's box can lie in the ear, so on
+//! those polygons (with finite coordinates) they are looked up in a
+//! [`Grid`] instead of scanning the whole polygon. Both ways test the same
+//! vertices with the same predicate, so they clip the same ears.
+
+use super::grid::{bounds, Grid};
+use super::{in_box_and_triangle, orient, Search, P2};
+
+/// Polygons of at least this many vertices have their ear tests indexed.
+pub(super) const INDEXED: usize = 48;
+
+/// Ear clipping of `poly`, appending triangles of positions in `poly`.
+pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize; 3]>) {
+    let n = poly.len();
+    if n < 3 {
+        return; // one or two half-edges balance by themselves
+    }
+    let pos = |i: usize| poly[i].1;
+    let grid = match search {
+        Search::Indexed
+            if n >= INDEXED && poly.iter().all(|p| p.1.iter().all(|c| c.is_finite())) =>
+        {
+            bounds(poly.iter().map(|p| p.1)).map(|(lo, hi)| {
+                let mut g = Grid::new(lo, hi, n);
+                for (i, p) in poly.iter().enumerate() {
+                    g.insert(p.1, p.1, i as u32);
+                }
+                g
+            })
+        }
+        _ => None,
+    };
+    let mut next: Vec<usize> = (0..n).map(|i| (i + 1) % n).collect();
+    let mut prev: Vec<usize> = (0..n).map(|i| (i + n - 1) % n).collect();
+    let mut alive = vec![true; n];
+    let mut remaining = n;
+    let mut cur = 0;
+    while remaining > 3 {
+        if remaining == 4 {
+            // Figure 4.10: of the two diagonals take the one whose
+            // triangles cover less area (no more than the quadrilateral
+            // when it is valid, else the smaller overlap).
+            let a = cur;
+            let b = next[a];
+            let c = next[b];
+            let d = next[c];
+            let (pa, pb, pc, pd) = (pos(a), pos(b), pos(c), pos(d));
+            let ac_valid = orient(pa, pb, pc) > 0.0 && orient(pa, pc, pd) > 0.0;
+            let bd_valid = orient(pb, pc, pd) > 0.0 && orient(pb, pd, pa) > 0.0;
+            let ac = orient(pa, pb, pc).abs() + orient(pa, pc, pd).abs();
+            let bd = orient(pb, pc, pd).abs() + orient(pb, pd, pa).abs();
+            let use_ac = if ac_valid != bd_valid {
+                ac_valid
+            } else {
+                ac <= bd
+            };
+            let (p, q, r, s) = if use_ac { (a, b, c, d) } else { (b, c, d, a) };
+            out.push([p, q, r]);
+            out.push([p, r, s]);
+            return;
+        }
+        // Pass 1: a valid ear; pass 2: a degenerate one; pass 3: the
+        // smallest absolute area.
+        let mut chosen = None;
+        let mut degenerate = None;
+        let mut smallest: Option<(f64, usize)> = None;
+        let mut i = cur;
+        for _ in 0..remaining {
+            let (a, c) = (prev[i], next[i]);
+            let (pa, pb, pc) = (pos(a), pos(i), pos(c));
+            let area = orient(pa, pb, pc);
+            if area > 0.0 {
+                // Another remaining vertex, not at a corner, in the ear.
+                let blocks = |j: usize| {
+                    let p = pos(j);
+                    p != pa && p != pb && p != pc && in_box_and_triangle(pa, pb, pc, p)
+                };
+                let blocked = match &grid {
+                    Some(g) => {
+                        let (lo, hi) = bounds([pa, pb, pc]).unwrap_or((pa, pa));
+                        g.any_in(lo, hi, |j| {
+                            let j = j as usize;
+                            alive[j] && j != a && j != i && j != c && blocks(j)
+                        })
+                    }
+                    None => {
+                        let mut j = next[c];
+                        let mut hit = false;
+                        while j != a {
+                            if blocks(j) {
+                                hit = true;
+                                break;
+                            }
+                            j = next[j];
+                        }
+                        hit
+                    }
+                };
+                if !blocked {
+                    chosen = Some(i);
+                    break;
+                }
+            } else if area == 0.0 && degenerate.is_none() {
+                degenerate = Some(i);
+            }
+            if smallest.is_none_or(|(s, _)| area.abs() < s) {
+                smallest = Some((area.abs(), i));
+            }
+            i = next[i];
+        }
+        let ear = chosen
+            .or(degenerate)
+            .or(smallest.map(|s| s.1))
+            .unwrap_or(cur);
+        let (a, c) = (prev[ear], next[ear]);
+        out.push([a, ear, c]);
+        alive[ear] = false;
+        next[a] = c;
+        prev[c] = a;
+        remaining -= 1;
+        // On big polygons the scan goes on past the next vertex, so that
+        // each round clips every other ear instead of fanning out from
+        // one vertex (a fan's ears grow to the polygon's size, and so
+        // would the boxes the ear tests look up).
+        cur = if n >= INDEXED { next[c] } else { c };
+    }
+    let a = cur;
+    let b = next[a];
+    let c = next[b];
+    debug_assert!(alive[a] && alive[b] && alive[c]);
+    out.push([a, b, c]);
+}
