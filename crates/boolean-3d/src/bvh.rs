@@ -2,6 +2,7 @@
 //! boxes. It only ever skips pairs whose boxes are disjoint; see
 //! [`crate::level3`] for why that is conservative for every X of Table 4.1.
 
+use crate::par;
 use rayon::prelude::*;
 use smallvec::SmallVec;
 
@@ -130,6 +131,7 @@ impl Bvh {
         }
         let keys: Vec<u32> = live
             .par_iter()
+            .with_min_len(par::min_len(1))
             .map(|&i| morton(&centroid(&boxes[i as usize]), &cb))
             .collect();
         let items = radix_sort_by_key(&live, &keys);
@@ -316,14 +318,18 @@ impl Bvh {
             }
             frontier = next;
         }
-        let parts: Vec<Vec<(u32, u32)>> = frontier
-            .par_iter()
-            .map(|&start| {
-                let mut out = Vec::new();
-                self.descend(boxes, other, other_boxes, margin, start, &mut out);
-                out
-            })
-            .collect();
+        let descend = |&start: &(u32, u32)| {
+            let mut out = Vec::new();
+            self.descend(boxes, other, other_boxes, margin, start, &mut out);
+            out
+        };
+        // Subtrees in parallel only when both hierarchies are large.
+        let parts: Vec<Vec<(u32, u32)>> =
+            if par::worth_splitting(self.items.len().min(other.items.len())) {
+                frontier.par_iter().map(descend).collect()
+            } else {
+                frontier.iter().map(descend).collect()
+            };
         parts.concat()
     }
 

@@ -17,6 +17,7 @@
 //! the exact tests only decide where merging keeps the facets planar.
 
 use crate::mesh::Flat;
+use crate::par;
 use rayon::prelude::*;
 use robust_arith::{orient2d, orient3d, Point3};
 use std::cmp::Ordering;
@@ -162,12 +163,13 @@ impl Merged {
         let n_t = n_he / 3;
         let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
             .into_par_iter()
-            .with_min_len(1024)
+            .with_min_len(par::min_len(1))
             .map(|t| flat_axis(&flat, t))
             .collect();
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
+            .with_min_len(par::min_len(1))
             .filter_map(|e| {
                 let hs = flat.edge_half_edges(e);
                 if hs.len() != 2 {

@@ -299,6 +299,7 @@ impl<'a> Flat<'a> {
     pub fn facet_boxes(&self, margin: f64) -> Vec<Aabb> {
         (0..self.facet_count() as u32)
             .into_par_iter()
+            .with_min_len(crate::par::min_len(1))
             .map(|f| {
                 // Exact bounds first (by facet closure every end is also a
                 // start), rounded outwards once.

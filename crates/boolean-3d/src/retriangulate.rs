@@ -32,6 +32,7 @@
 use crate::construct::{Retained, VertexMap};
 use crate::merge::{Merged, NONE};
 use crate::mesh::Flat;
+use crate::par;
 use rayon::prelude::*;
 use robust_arith::Point3;
 use topology::{triangulate_facet, TriangleMesh};
@@ -80,8 +81,16 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             pieces.push((c, lo, list.len(), start));
         }
     }
+    // Pieces in parallel only when there is enough work for two threads.
+    let total: usize = r.chunks.iter().map(|c| c.1.len()).sum();
+    let split = if par::worth_splitting(total / 2) {
+        1
+    } else {
+        usize::MAX
+    };
     let parts: Vec<Vec<[u32; 3]>> = pieces
         .par_iter()
+        .with_min_len(split)
         .map(|&(c, lo, hi, start)| {
             let (operand, hes, list) = &r.chunks[c];
             let k = *operand as usize;
