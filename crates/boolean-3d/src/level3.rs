@@ -220,7 +220,9 @@ impl FacetBuckets {
     /// a bucket.
     #[inline]
     fn bucket(&self, x: f64) -> usize {
-        let b = ((x - self.x0) * self.scale).floor();
+        // The conversion truncates towards zero, which is the floor for
+        // `b >= 0` (and saturates); below 0, and for NaN, bucket 0.
+        let b = (x - self.x0) * self.scale;
         if b >= 0.0 {
             (b as usize).min(self.n - 1)
         } else {
