@@ -588,6 +588,13 @@ pub(crate) fn level3(
     level3_with_contacts(a, b, winding, None).map(|(l3, _)| l3)
 }
 
+/// An operand with at most this many facets is met by a scan of the
+/// other operand's facet boxes instead of a hierarchy over them: at most
+/// this many box tests per facet of the larger operand, and at most this
+/// many ray casts into it on the fast path (one per connected component
+/// of the small one).
+const SCAN_AGAINST: usize = 32;
+
 /// The facets of A and of B near the other operand (sorted).
 pub(crate) type NearFacets = [Vec<u32>; 2];
 
@@ -606,7 +613,20 @@ pub(crate) fn level3_with_contacts(
     // overlap test below involves one facet box.
     let smaller = a.facet_count().min(b.facet_count());
     let (boxes_a, boxes_b) = par::join(smaller, || a.facet_boxes(margin), || b.facet_boxes(margin));
-    let (bvh_a, bvh_b) = par::join(smaller, || Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    // Against an operand of a few facets, the other's boxes are scanned
+    // rather than put in a hierarchy (see `bvh`).
+    let hierarchy = |boxes: &[Aabb], other_facets: usize| {
+        if other_facets <= SCAN_AGAINST && boxes.len() > other_facets {
+            Bvh::scan(boxes)
+        } else {
+            Bvh::new(boxes)
+        }
+    };
+    let (bvh_a, bvh_b) = par::join(
+        smaller,
+        || hierarchy(&boxes_a, b.facet_count()),
+        || hierarchy(&boxes_b, a.facet_count()),
+    );
     // Overlapping facet pairs; with a proximity, the pairs within it (a
     // superset: `candidates` tests every edge box against the other facet
     // box, so the extra pairs add no candidate and change nothing), from
