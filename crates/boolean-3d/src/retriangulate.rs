@@ -137,6 +137,7 @@ fn net_half_edges(
     hes.clear();
     if residual.len() > HASHED_RESIDUAL {
         net.clear();
+        net.reserve(residual.len());
         for &(a, b, sign) in residual.iter() {
             *net.entry((a, b)).or_insert(0) += sign;
         }
