@@ -415,7 +415,8 @@ fn boolean_mesh_impl(
     proximity: Option<f64>,
 ) -> Result<(MeshOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
-    par::on_pool(|| {
+    let larger = a.half_edge_count().max(b.half_edge_count());
+    par::on_pool(larger, || {
         let smaller = a.facets.len().min(b.facets.len());
         let (fa, fb) = flat_pair(a, b, smaller, flat_polygon)?;
         let (r, l3, audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
@@ -488,7 +489,8 @@ fn boolean_triangles_impl(
     proximity: Option<f64>,
 ) -> Result<(TriangleOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
-    par::on_pool(|| {
+    let larger = 3 * a.triangles.len().max(b.triangles.len());
+    par::on_pool(larger, || {
         let smaller = a.triangles.len().min(b.triangles.len());
         let (ta, tb) = flat_pair(a, b, smaller, flat_triangles)?;
         // The coplanar merge (module `merge`): the Boolean runs on the merged

@@ -561,8 +561,7 @@ mod tests {
         let mut scanned = boxes.clone();
         scanned[7] = Aabb::EMPTY;
         let (tree, flat) = (Bvh::new(&scanned), Bvh::scan(&scanned));
-        for k in 0..50 {
-            let b = &other[k];
+        for b in &other[..50] {
             let (mut x, mut y) = (Vec::new(), Vec::new());
             tree.query(b, &scanned, |i| x.push(i));
             flat.query(b, &scanned, |i| y.push(i));

@@ -8,7 +8,8 @@
 //! every split would wake idle workers that find nothing to steal; on
 //! millisecond steps that hand-over (futex waits, yields) costs as much as
 //! the work. So each entry point runs its whole body on a worker
-//! ([`on_pool`]), `join`s whose smaller side is below [`SEQUENTIAL_BELOW`]
+//! ([`on_pool`]; on the caller's thread when nothing is large enough to
+//! split), `join`s whose smaller side is below [`SEQUENTIAL_BELOW`]
 //! items run one after the other ([`join`]), and parallel iterators are
 //! not split below [`MIN_LEN`] items.
 //!
@@ -75,11 +76,15 @@ pub(crate) fn join<RA: Send, RB: Send>(
     }
 }
 
-/// Runs `f` on a worker thread of the current pool (the global one when
-/// called from outside any pool), so that the parallel steps inside it do
-/// not each cross from the caller's thread into the pool.
-pub(crate) fn on_pool<R: Send>(f: impl FnOnce() -> R + Send) -> R {
-    if rayon::current_thread_index().is_some() {
+/// Runs `f`, whose largest array has `items` items, on a worker thread of
+/// the current pool (the global one when called from outside any pool),
+/// so that the parallel steps inside it do not each cross from the
+/// caller's thread into the pool. When nothing in `f` is large enough to
+/// be split, `f` runs on the caller's thread and never wakes the pool (an
+/// unsplit parallel iterator runs where it is called).
+pub(crate) fn on_pool<R: Send>(items: usize, f: impl FnOnce() -> R + Send) -> R {
+    // A parallel iterator over `n` items splits once `n >= 2 min_len(1)`.
+    if rayon::current_thread_index().is_some() || min_len(1).saturating_mul(2) > items {
         f()
     } else {
         rayon::scope(|_| f())
