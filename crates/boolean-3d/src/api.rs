@@ -8,6 +8,7 @@ use crate::level3::{
 };
 use crate::merge::Merged;
 use crate::mesh::Flat;
+use crate::par;
 use crate::retriangulate::{to_triangle_mesh, Source};
 use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
@@ -146,14 +147,15 @@ fn flat_triangles(m: &TriangleMesh, operand: Operand) -> Result<Flat<'_>, Boolea
         .map_err(|source| Boolean3Error::InvalidInput { operand, source })
 }
 
-/// Both operands' flat forms, built in parallel; A's error is reported
-/// first.
+/// Both operands' flat forms, built in parallel when the smaller has at
+/// least `smaller` facets worth splitting for; A's error is reported first.
 fn flat_pair<'a, M: Sync>(
     a: &'a M,
     b: &'a M,
+    smaller: usize,
     f: impl Fn(&'a M, Operand) -> Result<Flat<'a>, Boolean3Error> + Sync,
 ) -> Result<(Flat<'a>, Flat<'a>), Boolean3Error> {
-    let (fa, fb) = rayon::join(|| f(a, Operand::A), || f(b, Operand::B));
+    let (fa, fb) = par::join(smaller, || f(a, Operand::A), || f(b, Operand::B));
     Ok((fa?, fb?))
 }
 
@@ -330,6 +332,7 @@ fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
     let facets = r
         .chunks
         .par_iter()
+        .with_min_len(par::min_len(1024))
         .flat_map_iter(|(_, hes, list)| {
             let mut k = 0usize;
             list.iter().map(move |&(_, n)| {
@@ -412,18 +415,23 @@ fn boolean_mesh_impl(
     proximity: Option<f64>,
 ) -> Result<(MeshOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
-    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
-    let (r, l3, audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
-    let intersections = l3.x12.len() + l3.x21.len();
-    // The operands' flat arrays and the level data are no longer needed:
-    // free them before the output is assembled, to lower the peak memory.
-    drop((fa, fb, l3));
-    let out = MeshOutput {
-        mesh: to_polygon_mesh(&r),
-        sources: r.facets().map(|(src, _)| src).collect(),
-        intersections,
-    };
-    Ok((out, audit, contacts))
+    let larger = a.half_edge_count().max(b.half_edge_count());
+    par::on_pool(larger, || {
+        let smaller = a.facets.len().min(b.facets.len());
+        let (fa, fb) = flat_pair(a, b, smaller, flat_polygon)?;
+        let (r, l3, audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
+        let intersections = l3.x12.len() + l3.x21.len();
+        // The operands' flat arrays and the level data are no longer
+        // needed: free them before the output is assembled, to lower the
+        // peak memory.
+        drop((fa, fb, l3));
+        let out = MeshOutput {
+            mesh: to_polygon_mesh(&r),
+            sources: r.facets().map(|(src, _)| src).collect(),
+            intersections,
+        };
+        Ok((out, audit, contacts))
+    })
 }
 
 /// The Boolean `op` of two triangle meshes (the triangle-mesh variant):
@@ -481,55 +489,61 @@ fn boolean_triangles_impl(
     proximity: Option<f64>,
 ) -> Result<(TriangleOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
     supported(op)?;
-    let (ta, tb) = flat_pair(a, b, flat_triangles)?;
-    // The coplanar merge (module `merge`): the Boolean runs on the merged
-    // facets; an operand without any merge keeps its triangle form.
-    let internal =
-        |e: TopologyError| Boolean3Error::Internal(format!("coplanar merge broke closure: {e}"));
-    let (ma, mb) = rayon::join(|| Merged::new(ta), || Merged::new(tb));
-    let ((ma, fa), (mb, fb)) = (ma.map_err(internal)?, mb.map_err(internal)?);
-    let (r, l3, mut audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
-    let intersections = l3.x12.len() + l3.x21.len();
-    drop(l3);
-    let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
-    let mesh = to_triangle_mesh(
-        r,
-        [
-            Source {
-                triangles: &a.triangles,
-                pos: &a.vertices,
-                merged: &ma,
-                facets: &fa,
-                sigma: 1,
-            },
-            Source {
-                triangles: &b.triangles,
-                pos: &b.vertices,
-                merged: &mb,
-                facets: &fb,
-                sigma: sigma_b,
-            },
-        ],
-    );
-    if let Some(au) = audit.as_mut() {
-        // Theorem 4 on the polygon result the Boolean built, then shape
-        // boundary closure of its triangulation.
-        if au.shape_closure.is_ok() {
-            au.shape_closure = mesh.check_topology();
+    let larger = 3 * a.triangles.len().max(b.triangles.len());
+    par::on_pool(larger, || {
+        let smaller = a.triangles.len().min(b.triangles.len());
+        let (ta, tb) = flat_pair(a, b, smaller, flat_triangles)?;
+        // The coplanar merge (module `merge`): the Boolean runs on the merged
+        // facets; an operand without any merge keeps its triangle form.
+        let internal = |e: TopologyError| {
+            Boolean3Error::Internal(format!("coplanar merge broke closure: {e}"))
+        };
+        let (ma, mb) = par::join(smaller, || Merged::new(ta), || Merged::new(tb));
+        let ((ma, fa), (mb, fb)) = (ma.map_err(internal)?, mb.map_err(internal)?);
+        let (r, l3, mut audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
+        let intersections = l3.x12.len() + l3.x21.len();
+        drop(l3);
+        let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
+        let mesh = to_triangle_mesh(
+            r,
+            [
+                Source {
+                    triangles: &a.triangles,
+                    pos: &a.vertices,
+                    merged: &ma,
+                    facets: &fa,
+                    sigma: 1,
+                },
+                Source {
+                    triangles: &b.triangles,
+                    pos: &b.vertices,
+                    merged: &mb,
+                    facets: &fb,
+                    sigma: sigma_b,
+                },
+            ],
+        );
+        if let Some(au) = audit.as_mut() {
+            // Theorem 4 on the polygon result the Boolean built, then shape
+            // boundary closure of its triangulation.
+            if au.shape_closure.is_ok() {
+                au.shape_closure = mesh.check_topology();
+            }
         }
-    }
-    let out = TriangleOutput {
-        mesh,
-        intersections,
-    };
-    Ok((out, audit, contacts))
+        let out = TriangleOutput {
+            mesh,
+            intersections,
+        };
+        Ok((out, audit, contacts))
+    })
 }
 
 /// The level-3 data of two polygon meshes by the fast path (broad phase,
 /// propagated winding numbers). Operands are validated as in
 /// [`boolean_mesh`].
 pub fn level3(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
-    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
+    let smaller = a.facets.len().min(b.facets.len());
+    let (fa, fb) = flat_pair(a, b, smaller, flat_polygon)?;
     Ok(level3_fast(&fa, &fb, Winding::Propagate)?.with_edges(&fa, &fb))
 }
 
@@ -537,6 +551,6 @@ pub fn level3(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Er
 /// broad phase, no propagation): the oracle the fast path is tested
 /// against. Quadratic in the input size.
 pub fn level3_reference(a: &PolygonMesh, b: &PolygonMesh) -> Result<Level3Data, Boolean3Error> {
-    let (fa, fb) = flat_pair(a, b, flat_polygon)?;
+    let (fa, fb) = flat_pair(a, b, 0, flat_polygon)?;
     level3_brute(&fa, &fb)
 }

@@ -1,7 +1,15 @@
 //! The broad phase: a bounding-volume hierarchy over closed axis-aligned
 //! boxes. It only ever skips pairs whose boxes are disjoint; see
 //! [`crate::level3`] for why that is conservative for every X of Table 4.1.
+//!
+//! Against an operand of a few facets (one step of a chain of small
+//! operations), building a hierarchy over the large operand costs more
+//! than it saves: [`Bvh::scan`] stands for the plain list of boxes,
+//! queried by testing every box. Queries and pair searches report the
+//! same items and pairs either way (every live box that overlaps), only
+//! in another order, and every caller sums or sorts what it is given.
 
+use crate::par;
 use rayon::prelude::*;
 use smallvec::SmallVec;
 
@@ -114,6 +122,15 @@ struct Node {
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     items: Vec<u32>,
+    /// For [`Bvh::scan`]: the box holding every live box (no nodes, no
+    /// items).
+    scan: Option<Aabb>,
+}
+
+/// Whether a box is live (not empty; empty boxes are never reported).
+#[inline]
+fn live(b: &Aabb) -> bool {
+    b.lo[0] <= b.hi[0]
 }
 
 const LEAF: usize = 4;
@@ -130,6 +147,7 @@ impl Bvh {
         }
         let keys: Vec<u32> = live
             .par_iter()
+            .with_min_len(par::min_len(1))
             .map(|&i| morton(&centroid(&boxes[i as usize]), &cb))
             .collect();
         let items = radix_sort_by_key(&live, &keys);
@@ -140,13 +158,39 @@ impl Bvh {
             build(boxes, &items, 0, items.len(), &mut nodes);
         }
         debug_assert_eq!(nodes.len(), node_count(items.len()));
-        Bvh { nodes, items }
+        Bvh {
+            nodes,
+            items,
+            scan: None,
+        }
+    }
+
+    /// No hierarchy over `boxes`: queries test every box. For the large
+    /// operand against a small one.
+    pub fn scan(boxes: &[Aabb]) -> Bvh {
+        let mut bound = Aabb::EMPTY;
+        for b in boxes.iter().filter(|b| live(b)) {
+            bound.union(b);
+        }
+        Bvh {
+            nodes: Vec::new(),
+            items: Vec::new(),
+            scan: Some(bound),
+        }
     }
 
     /// Calls `f` for every item whose box overlaps the closed box `q`, in a
     /// deterministic order.
     #[inline]
     pub fn query(&self, q: &Aabb, boxes: &[Aabb], mut f: impl FnMut(u32)) {
+        if self.scan.is_some() {
+            for (i, b) in boxes.iter().enumerate() {
+                if live(b) && b.overlaps(q) {
+                    f(i as u32);
+                }
+            }
+            return;
+        }
         if self.nodes.is_empty() {
             return;
         }
@@ -297,6 +341,9 @@ impl Bvh {
         other_boxes: &[Aabb],
         margin: f32,
     ) -> Vec<(u32, u32)> {
+        if self.scan.is_some() || other.scan.is_some() {
+            return self.scan_pairs(boxes, other, other_boxes, margin);
+        }
         if self.nodes.is_empty() || other.nodes.is_empty() {
             return Vec::new();
         }
@@ -316,15 +363,65 @@ impl Bvh {
             }
             frontier = next;
         }
-        let parts: Vec<Vec<(u32, u32)>> = frontier
-            .par_iter()
-            .map(|&start| {
-                let mut out = Vec::new();
-                self.descend(boxes, other, other_boxes, margin, start, &mut out);
-                out
-            })
-            .collect();
+        let descend = |&start: &(u32, u32)| {
+            let mut out = Vec::new();
+            self.descend(boxes, other, other_boxes, margin, start, &mut out);
+            out
+        };
+        // Subtrees in parallel only when both hierarchies are large.
+        let parts: Vec<Vec<(u32, u32)>> =
+            if par::worth_splitting(self.items.len().min(other.items.len())) {
+                frontier.par_iter().map(descend).collect()
+            } else {
+                frontier.iter().map(descend).collect()
+            };
         parts.concat()
+    }
+
+    /// [`Bvh::pairs_within`] when one side is a [`Bvh::scan`]: every live
+    /// box of the scanned side near the other side's bound, against every
+    /// live box of the other side (the small operand), by item order of
+    /// the scanned side.
+    fn scan_pairs(
+        &self,
+        boxes: &[Aabb],
+        other: &Bvh,
+        other_boxes: &[Aabb],
+        margin: f32,
+    ) -> Vec<(u32, u32)> {
+        // The outer loop runs over the scanned side; `swap` when that is
+        // `other`.
+        let swap = self.scan.is_none();
+        let (outer, inner, inner_bvh) = if swap {
+            (other_boxes, boxes, self)
+        } else {
+            (boxes, other_boxes, other)
+        };
+        let bound = inner_bvh.bound();
+        let inner_live: Vec<u32> = (0..inner.len() as u32)
+            .filter(|&j| live(&inner[j as usize]))
+            .collect();
+        let mut out = Vec::new();
+        for (i, bi) in outer.iter().enumerate() {
+            if !live(bi) || !bi.within(&bound, margin) {
+                continue;
+            }
+            for &j in &inner_live {
+                if bi.within(&inner[j as usize], margin) {
+                    out.push(if swap { (j, i as u32) } else { (i as u32, j) });
+                }
+            }
+        }
+        out
+    }
+
+    /// The box holding every live box.
+    fn bound(&self) -> Aabb {
+        match (self.scan, self.nodes.first()) {
+            (Some(b), _) => b,
+            (None, Some(root)) => root.bb,
+            (None, None) => Aabb::EMPTY,
+        }
     }
 
     #[inline]
@@ -459,5 +556,31 @@ mod tests {
             }
         }
         assert_eq!(got, want);
+        // A scanned side, either way round, with an empty box among the
+        // scanned ones and a margin: the same queries and pairs (as sets).
+        let mut scanned = boxes.clone();
+        scanned[7] = Aabb::EMPTY;
+        let (tree, flat) = (Bvh::new(&scanned), Bvh::scan(&scanned));
+        for b in &other[..50] {
+            let (mut x, mut y) = (Vec::new(), Vec::new());
+            tree.query(b, &scanned, |i| x.push(i));
+            flat.query(b, &scanned, |i| y.push(i));
+            x.sort_unstable();
+            assert_eq!(x, y);
+        }
+        let small = Bvh::new(&other[..20]);
+        for margin in [0.0, 0.01] {
+            let mut t = tree.pairs_within(&scanned, &small, &other[..20], margin);
+            let mut f = flat.pairs_within(&scanned, &small, &other[..20], margin);
+            t.sort_unstable();
+            f.sort_unstable();
+            assert!(!t.is_empty());
+            assert_eq!(t, f);
+            let mut t = small.pairs_within(&other[..20], &tree, &scanned, margin);
+            let mut f = small.pairs_within(&other[..20], &flat, &scanned, margin);
+            t.sort_unstable();
+            f.sort_unstable();
+            assert_eq!(t, f);
+        }
     }
 }

@@ -6,6 +6,7 @@
 use crate::composite::CompositeEdge3;
 use crate::level3::Level3Data;
 use crate::mesh::Flat;
+use crate::par;
 use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
 use robust_arith::Point3;
@@ -140,6 +141,7 @@ fn edge_segments(
     type Chunk = (Vec<(u32, u32)>, Vec<u32>, Vec<CompositeRecord>);
     let parts: Vec<Chunk> = idx
         .par_chunks(1024)
+        .with_min_len(par::min_len(1024))
         .map(|chunk| {
             let mut segs = Vec::new();
             let mut counts = Vec::with_capacity(chunk.len());
@@ -287,7 +289,8 @@ pub(crate) fn construct(
 
     // Level 4: retained parts of the edges of A and of B.
     let ((seg_a, rec_a), (seg_b, rec_b)) = {
-        let (x, y) = rayon::join(
+        let (x, y) = par::join(
+            a.edges.len().min(b.edges.len()),
             || edge_segments(a, &l3.x12, base12, &vid_a, &i03, ci, true, record),
             || edge_segments(b, &l3.x21, base21, &vid_b, &i30, ci, false, record),
         );
@@ -439,6 +442,7 @@ fn retained_facets(
 ) -> Vec<FacetChunk> {
     let idx: Vec<u32> = (0..mesh.facet_count() as u32).collect();
     idx.par_chunks(1024)
+        .with_min_len(par::min_len(1024))
         .map(|chunk| {
             let mut hes = Vec::new();
             let mut list = Vec::new();

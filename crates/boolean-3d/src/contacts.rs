@@ -96,6 +96,7 @@ pub(crate) fn near_facets(
 ) -> [Vec<u32>; 2] {
     let near: Vec<(u32, u32)> = pairs
         .par_iter()
+        .with_min_len(crate::par::min_len(1))
         .filter(|&&(fa, fb)| {
             !separated(a, fa, b, fb, proximity) && !separated(b, fb, a, fa, proximity)
         })

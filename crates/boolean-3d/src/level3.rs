@@ -49,6 +49,7 @@
 
 use crate::bvh::{Aabb, Bvh};
 use crate::mesh::Flat;
+use crate::par;
 use crate::Boolean3Error;
 use rayon::prelude::*;
 use robust_arith::{power_of_two_bound, Point3, UNIT_ROUNDOFF};
@@ -219,7 +220,9 @@ impl FacetBuckets {
     /// a bucket.
     #[inline]
     fn bucket(&self, x: f64) -> usize {
-        let b = ((x - self.x0) * self.scale).floor();
+        // The conversion truncates towards zero, which is the floor for
+        // `b >= 0` (and saturates); below 0, and for NaN, bucket 0.
+        let b = (x - self.x0) * self.scale;
         if b >= 0.0 {
             (b as usize).min(self.n - 1)
         } else {
@@ -344,6 +347,7 @@ fn edge_facet_hits(
     let index = XIndex::new(facets);
     let chunks: Vec<Vec<EdgeFacetHit>> = cand
         .par_chunks(256)
+        .with_min_len(par::min_len(256))
         .map(|chunk| {
             let mut hits = Vec::new();
             let mut near = Vec::new();
@@ -392,6 +396,7 @@ fn candidates(
 ) -> Vec<(u32, u32)> {
     let mut cand: Vec<(u32, u32)> = fpairs
         .par_chunks(1024)
+        .with_min_len(par::min_len(1024))
         .flat_map_iter(|chunk| {
             let mut out = Vec::new();
             for &(fa, fb) in chunk {
@@ -521,8 +526,11 @@ fn propagate(
     }
     drop((adj, deg, seen));
     let dsum = edge_sums(mesh.edges.len(), hits);
+    // A ray cast costs a descent of the other operand's hierarchy: a few
+    // dozen of them are worth a piece of their own.
     let cast_values: Vec<i32> = roots
         .par_iter()
+        .with_min_len(par::min_len(64))
         .map(|&r| cast(&mesh.pos[r as usize]))
         .collect::<Result<_, _>>()?;
     let mut x = vec![0i32; n];
@@ -580,6 +588,13 @@ pub(crate) fn level3(
     level3_with_contacts(a, b, winding, None).map(|(l3, _)| l3)
 }
 
+/// An operand with at most this many facets is met by a scan of the
+/// other operand's facet boxes instead of a hierarchy over them: at most
+/// this many box tests per facet of the larger operand, and at most this
+/// many ray casts into it on the fast path (one per connected component
+/// of the small one).
+const SCAN_AGAINST: usize = 32;
+
 /// The facets of A and of B near the other operand (sorted).
 pub(crate) type NearFacets = [Vec<u32>; 2];
 
@@ -596,8 +611,22 @@ pub(crate) fn level3_with_contacts(
     let margin = 4.0 * UNIT_ROUNDOFF * l;
     // Facet boxes widened by the margin in y and z once, here: every
     // overlap test below involves one facet box.
-    let (boxes_a, boxes_b) = rayon::join(|| a.facet_boxes(margin), || b.facet_boxes(margin));
-    let (bvh_a, bvh_b) = rayon::join(|| Bvh::new(&boxes_a), || Bvh::new(&boxes_b));
+    let smaller = a.facet_count().min(b.facet_count());
+    let (boxes_a, boxes_b) = par::join(smaller, || a.facet_boxes(margin), || b.facet_boxes(margin));
+    // Against an operand of a few facets, the other's boxes are scanned
+    // rather than put in a hierarchy (see `bvh`).
+    let hierarchy = |boxes: &[Aabb], other_facets: usize| {
+        if other_facets <= SCAN_AGAINST && boxes.len() > other_facets {
+            Bvh::scan(boxes)
+        } else {
+            Bvh::new(boxes)
+        }
+    };
+    let (bvh_a, bvh_b) = par::join(
+        smaller,
+        || hierarchy(&boxes_a, b.facet_count()),
+        || hierarchy(&boxes_b, a.facet_count()),
+    );
     // Overlapping facet pairs; with a proximity, the pairs within it (a
     // superset: `candidates` tests every edge box against the other facet
     // box, so the extra pairs add no candidate and change nothing), from
@@ -607,7 +636,8 @@ pub(crate) fn level3_with_contacts(
         None => bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b),
     };
     let contacts = proximity.map(|p| crate::contacts::near_facets(a, b, &fpairs, p));
-    let (c12, c21) = rayon::join(
+    let (c12, c21) = par::join(
+        fpairs.len(),
         || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
         || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),
     );
@@ -615,7 +645,8 @@ pub(crate) fn level3_with_contacts(
     // are the largest arrays of the Boolean, and would otherwise all stay
     // alive through the propagation below.
     drop(fpairs);
-    let (r12, r21) = rayon::join(
+    let (r12, r21) = par::join(
+        c12.len().min(c21.len()),
         || edge_facet_hits(a, b, &c12, Side::EdgesOfA),
         || edge_facet_hits(b, a, &c21, Side::EdgesOfB),
     );
@@ -629,8 +660,11 @@ pub(crate) fn level3_with_contacts(
     let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a);
     let (x03, x30, casts) = match winding {
         Winding::Propagate => {
-            let (r03, r30) =
-                rayon::join(|| propagate(a, &x12, cast03), || propagate(b, &x21, cast30));
+            let (r03, r30) = par::join(
+                a.edges.len().min(b.edges.len()),
+                || propagate(a, &x12, cast03),
+                || propagate(b, &x21, cast30),
+            );
             let ((x03, n03), (x30, n30)) = (r03?, r30?);
             (x03, x30, n03 + n30)
         }

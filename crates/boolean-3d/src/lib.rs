@@ -64,6 +64,7 @@ mod error;
 mod level3;
 mod merge;
 mod mesh;
+mod par;
 mod retriangulate;
 
 pub use api::{

@@ -17,6 +17,7 @@
 //! the exact tests only decide where merging keeps the facets planar.
 
 use crate::mesh::Flat;
+use crate::par;
 use rayon::prelude::*;
 use robust_arith::{orient2d, orient3d, Point3};
 use std::cmp::Ordering;
@@ -144,15 +145,6 @@ fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32)
     ) == s1
 }
 
-fn find(parent: &mut [u32], mut x: u32) -> u32 {
-    while parent[x as usize] != x {
-        let up = parent[parent[x as usize] as usize];
-        parent[x as usize] = up;
-        x = up;
-    }
-    x
-}
-
 impl Merged {
     /// Merges the triangles of `flat` (the flat form of a triangle mesh);
     /// returns the merge and the merged facets' flat form (`flat` itself
@@ -162,12 +154,13 @@ impl Merged {
         let n_t = n_he / 3;
         let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
             .into_par_iter()
-            .with_min_len(1024)
+            .with_min_len(par::min_len(1))
             .map(|t| flat_axis(&flat, t))
             .collect();
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
+            .with_min_len(par::min_len(1))
             .filter_map(|e| {
                 let hs = flat.edge_half_edges(e);
                 if hs.len() != 2 {
@@ -183,29 +176,32 @@ impl Merged {
             })
             .collect();
         let mut partner = vec![NONE; n_he];
-        let mut parent: Vec<u32> = (0..n_t as u32).collect();
         for &(h1, h2) in &pairs {
             partner[h1 as usize] = h2;
             partner[h2 as usize] = h1;
-            let (r1, r2) = (find(&mut parent, h1 / 3), find(&mut parent, h2 / 3));
-            if r1 != r2 {
-                // The smaller root wins, so roots are first triangles.
-                let (lo, hi) = if r1 < r2 { (r1, r2) } else { (r2, r1) };
-                parent[hi as usize] = lo;
-            }
         }
-        // Facets numbered by their first triangle; triangles grouped by a
-        // counting sort, in input order within a facet.
+        // Facets: the connected components of the triangles under merged
+        // pairs, numbered by their first triangle (a flood fill from each
+        // triangle not yet reached, in input order); triangles grouped by
+        // a counting sort, in input order within a facet.
         let mut facet_of = vec![NONE; n_t];
         let mut n_f = 0u32;
+        let mut stack: Vec<u32> = Vec::new();
         for t in 0..n_t as u32 {
-            let r = find(&mut parent, t);
-            if r == t {
-                facet_of[t as usize] = n_f;
-                n_f += 1;
-            } else {
-                facet_of[t as usize] = facet_of[r as usize];
+            if facet_of[t as usize] != NONE {
+                continue;
             }
+            facet_of[t as usize] = n_f;
+            stack.push(t);
+            while let Some(u) = stack.pop() {
+                for &p in &partner[3 * u as usize..3 * u as usize + 3] {
+                    if p != NONE && facet_of[(p / 3) as usize] == NONE {
+                        facet_of[(p / 3) as usize] = n_f;
+                        stack.push(p / 3);
+                    }
+                }
+            }
+            n_f += 1;
         }
         let mut tri_off = vec![0u32; n_f as usize + 1];
         for &f in &facet_of {

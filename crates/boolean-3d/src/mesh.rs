@@ -92,11 +92,8 @@ impl<'a> Flat<'a> {
         for (i, &o) in old.iter().enumerate() {
             new_of[o as usize] = i as u32;
         }
+        // A vertex is referenced when some kept edge ends at it.
         let mut referenced = vec![false; parent.pos.len()];
-        for &(s, e) in &he {
-            referenced[s as usize] = true;
-            referenced[e as usize] = true;
-        }
         let mut edges = Vec::with_capacity(he.len() / 2 + 1);
         let mut edge_off = Vec::with_capacity(he.len() / 2 + 2);
         let mut edge_he: Vec<u32> = Vec::with_capacity(he.len());
@@ -115,6 +112,8 @@ impl<'a> Flat<'a> {
             }
             let ne = edges.len() as u32;
             edges.push(key);
+            referenced[key.0 as usize] = true;
+            referenced[key.1 as usize] = true;
             let start = edge_he.len();
             edge_off.push(start as u32);
             for &h in hs {
@@ -122,7 +121,14 @@ impl<'a> Flat<'a> {
                 he_edge[n as usize] = ne;
                 edge_he.push(n);
             }
-            edge_he[start..].sort_unstable();
+            let group = &mut edge_he[start..];
+            if group.len() == 2 {
+                if group[0] > group[1] {
+                    group.swap(0, 1);
+                }
+            } else {
+                group.sort_unstable();
+            }
         }
         edge_off.push(edge_he.len() as u32);
         if edge_he.len() != he.len() {
@@ -172,15 +178,14 @@ impl<'a> Flat<'a> {
         }
         // Group half-edges into edges by their unordered vertex pair: a
         // counting sort by the lower vertex, then a sort of each (small)
-        // bucket by the higher vertex and half-edge index. The edge
+        // bucket by the higher vertex and half-edge index (one u64 key,
+        // `higher << 32 | half-edge`, whose order is that pair's). The edge
         // numbering, by (lower, higher), is independent of thread count.
         let mut referenced = vec![false; n_v];
+        let mut bucket = vec![0u32; n_v + 1];
         for &(s, e) in &he {
             referenced[s as usize] = true;
             referenced[e as usize] = true;
-        }
-        let mut bucket = vec![0u32; n_v + 1];
-        for &(s, e) in &he {
             bucket[s.min(e) as usize + 1] += 1;
         }
         for v in 0..n_v {
@@ -188,10 +193,10 @@ impl<'a> Flat<'a> {
         }
         let mut fill = bucket.clone();
         // (higher vertex, half-edge) scattered by lower vertex.
-        let mut pairs = vec![(0u32, 0u32); n_he];
+        let mut pairs = vec![0u64; n_he];
         for (h, &(s, e)) in he.iter().enumerate() {
             let (lo, hi) = if s <= e { (s, e) } else { (e, s) };
-            pairs[fill[lo as usize] as usize] = (hi, h as u32);
+            pairs[fill[lo as usize] as usize] = (u64::from(hi) << 32) | h as u64;
             fill[lo as usize] += 1;
         }
         drop(fill);
@@ -206,18 +211,19 @@ impl<'a> Flat<'a> {
             }
             let mut k = b0;
             while k < b1 {
-                let hi = pairs[k].0;
+                let hi = (pairs[k] >> 32) as u32;
                 let e = edges.len() as u32;
                 edges.push((v as u32, hi));
                 edge_off.push(k as u32);
                 // Shape boundary closure: as many half-edges each way.
                 let (mut forward, mut backward) = (0u32, 0u32);
-                while k < b1 && pairs[k].0 == hi {
-                    let h = pairs[k].1;
+                while k < b1 && (pairs[k] >> 32) as u32 == hi {
+                    let h = pairs[k] as u32;
                     he_edge[h as usize] = e;
-                    if he[h as usize].0 < he[h as usize].1 {
+                    let (hs, he_end) = he[h as usize];
+                    if hs < he_end {
                         forward += 1;
-                    } else if he[h as usize].0 > he[h as usize].1 {
+                    } else if hs > he_end {
                         backward += 1;
                     }
                     k += 1;
@@ -227,7 +233,7 @@ impl<'a> Flat<'a> {
         }
         // A fresh allocation: collecting in place would keep the pairs'
         // buffer, twice the size needed, alive for the whole Boolean.
-        let edge_he: Vec<u32> = pairs.iter().map(|&(_, h)| h).collect();
+        let edge_he: Vec<u32> = pairs.iter().map(|&p| p as u32).collect();
         drop(pairs);
         edge_off.push(n_he as u32);
         Ok(Flat {
@@ -299,6 +305,7 @@ impl<'a> Flat<'a> {
     pub fn facet_boxes(&self, margin: f64) -> Vec<Aabb> {
         (0..self.facet_count() as u32)
             .into_par_iter()
+            .with_min_len(crate::par::min_len(1))
             .map(|f| {
                 // Exact bounds first (by facet closure every end is also a
                 // start), rounded outwards once.

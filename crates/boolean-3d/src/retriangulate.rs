@@ -32,8 +32,10 @@
 use crate::construct::{Retained, VertexMap};
 use crate::merge::{Merged, NONE};
 use crate::mesh::Flat;
+use crate::par;
 use rayon::prelude::*;
 use robust_arith::Point3;
+use rustc_hash::FxHashMap;
 use topology::{triangulate_facet, TriangleMesh};
 
 /// One operand as the re-triangulation needs it.
@@ -80,8 +82,16 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             pieces.push((c, lo, list.len(), start));
         }
     }
+    // Pieces in parallel only when there is enough work for two threads.
+    let total: usize = r.chunks.iter().map(|c| c.1.len()).sum();
+    let split = if par::worth_splitting(total / 2) {
+        1
+    } else {
+        usize::MAX
+    };
     let parts: Vec<Vec<[u32; 3]>> = pieces
         .par_iter()
+        .with_min_len(split)
         .map(|&(c, lo, hi, start)| {
             let (operand, hes, list) = &r.chunks[c];
             let k = *operand as usize;
@@ -104,7 +114,54 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
 struct Scratch {
     kept: Vec<bool>,
     residual: Vec<(u32, u32, i32)>,
+    net: FxHashMap<(u32, u32), i32>,
     hes: Vec<(u32, u32)>,
+}
+
+/// Residuals longer than this are netted through a hash map rather than
+/// by sorting all of them.
+const HASHED_RESIDUAL: usize = 256;
+
+/// The net half-edges of the signed edges `residual` (lower id, higher id,
+/// +1 for lower to higher), into `hes`: each edge with net `k != 0` gives
+/// `|k|` half-edges in the direction of its sign, edges in increasing
+/// (lower, higher) order. A large residual (a plate with many holes cut
+/// near one of them: most of its entries cancel) is summed per edge in a
+/// hash map and only the surviving edges are sorted; the result is the
+/// same as sorting every entry (integer sums do not depend on order).
+fn net_half_edges(
+    residual: &mut Vec<(u32, u32, i32)>,
+    net: &mut FxHashMap<(u32, u32), i32>,
+    hes: &mut Vec<(u32, u32)>,
+) {
+    hes.clear();
+    if residual.len() > HASHED_RESIDUAL {
+        net.clear();
+        net.reserve(residual.len());
+        for &(a, b, sign) in residual.iter() {
+            *net.entry((a, b)).or_insert(0) += sign;
+        }
+        residual.clear();
+        residual.extend(
+            net.iter()
+                .filter(|(_, &k)| k != 0)
+                .map(|(&(a, b), &k)| (a, b, k)),
+        );
+    }
+    residual.sort_unstable_by_key(|&(a, b, _)| (a, b));
+    let mut i = 0;
+    while i < residual.len() {
+        let (a, b, _) = residual[i];
+        let mut k = 0i32;
+        while i < residual.len() && residual[i].0 == a && residual[i].1 == b {
+            k += residual[i].2;
+            i += 1;
+        }
+        let he = if k > 0 { (a, b) } else { (b, a) };
+        for _ in 0..k.unsigned_abs() {
+            hes.push(he);
+        }
+    }
 }
 
 /// Triangulates the retained facet `part` of merged facet `f`.
@@ -236,21 +293,7 @@ fn facet(
             push(y, x, 1);
         }
     }
-    s.residual.sort_unstable_by_key(|&(a, b, _)| (a, b));
-    s.hes.clear();
-    let mut i = 0;
-    while i < s.residual.len() {
-        let (a, b, _) = s.residual[i];
-        let mut net = 0i32;
-        while i < s.residual.len() && s.residual[i].0 == a && s.residual[i].1 == b {
-            net += s.residual[i].2;
-            i += 1;
-        }
-        let he = if net > 0 { (a, b) } else { (b, a) };
-        for _ in 0..net.unsigned_abs() {
-            s.hes.push(he);
-        }
-    }
+    net_half_edges(&mut s.residual, &mut s.net, &mut s.hes);
     triangulate_facet(vertices, &s.hes, out);
     out.extend(
         tris.iter()
