@@ -40,6 +40,7 @@ pub mod clipper;
 mod error;
 mod generate;
 mod peers;
+pub mod rss;
 pub mod solid;
 pub mod sweep;
 

@@ -27,6 +27,7 @@
 //! only Rust's). Threads: rayon's default (all cores). Linux only (`/proc`).
 
 use std::process::Command;
+use umbra_benches::rss::RssGrowth;
 use umbra_benches::sweep::{
     random_case, Clipper2RustSweep, Clipper2Sweep, IOverlaySweep, SweepCase, SweepPeer, SweepRule,
     UmbraSweep,
@@ -50,28 +51,6 @@ const NGON_PEERS: [&str; 6] = [
 /// The peers of the random-polygon rows, in column order.
 const RANDOM_PEERS: [&str; 4] = ["umbra-sweep", "clipper2", "clipper2-rust", "i_overlay-i64"];
 
-fn status_kb(field: &str) -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/self/status").ok()?;
-    text.lines()
-        .find(|l| l.starts_with(field))?
-        .split_whitespace()
-        .nth(1)?
-        .parse()
-        .ok()
-}
-
-/// Resets the peak RSS and returns the RSS now (KiB).
-fn start() -> u64 {
-    let base = status_kb("VmRSS:").unwrap_or(0);
-    let _ = std::fs::write("/proc/self/clear_refs", "5");
-    base
-}
-
-/// The RSS growth since `start` (KiB).
-fn growth(base: u64) -> u64 {
-    status_kb("VmHWM:").unwrap_or(0).saturating_sub(base)
-}
-
 /// The n-gon row of `vertices` input vertices.
 fn ngon_case(vertices: usize) -> Case {
     let n = vertices / 2;
@@ -85,9 +64,9 @@ fn ngon_case(vertices: usize) -> Case {
 fn child_ring<P: Peer>(peer: &P, case: &Case) {
     let (a, b) = rotated_ngon_pair(case.n, case.alpha_deg);
     let input = peer.prepare(&[a], &[b]);
-    let base = start();
+    let rss = RssGrowth::start();
     let out = peer.union(&input);
-    let kib = growth(base);
+    let kib = rss.kib();
     let correct = peer
         .stats(&out)
         .is_ok_and(|s: RingStats| s.is_exact_union(case));
@@ -102,9 +81,9 @@ fn child_sweep<P: SweepPeer>(peer: &P, case: &SweepCase) {
         println!("0 false");
         return;
     };
-    let base = start();
+    let rss = RssGrowth::start();
     let out = peer.run(&input);
-    let kib = growth(base);
+    let kib = rss.kib();
     let correct = match (case.ngon, peer.stats(&out)) {
         (Some(ngon), Ok(s)) => RingStats {
             rings: s.rings,

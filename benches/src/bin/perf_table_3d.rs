@@ -24,6 +24,7 @@
 
 use std::process::Command;
 use std::time::Instant;
+use umbra_benches::rss::RssGrowth;
 use umbra_benches::solid::{
     analytic_difference_volume, sphere_pair, Boolmesh, ManifoldRust, SolidPeer, UmbraPolygons,
     UmbraQuads, UmbraTriangles,
@@ -38,23 +39,12 @@ const PEERS: [&str; 5] = [
     "boolmesh",
 ];
 
-fn status_kb(field: &str) -> Option<u64> {
-    let text = std::fs::read_to_string("/proc/self/status").ok()?;
-    text.lines()
-        .find(|l| l.starts_with(field))?
-        .split_whitespace()
-        .nth(1)?
-        .parse()
-        .ok()
-}
-
 /// Runs one peer `runs` times; prints `ms peak_kb facets volume valid`.
 fn child_run<P: SolidPeer>(peer: &P, size: usize, runs: usize) {
     let (a, b) = sphere_pair(size);
     let input = peer.prepare(&a, &b);
     drop((a, b));
-    let base = status_kb("VmRSS:").unwrap_or(0);
-    let _ = std::fs::write("/proc/self/clear_refs", "5");
+    let rss = RssGrowth::start();
     let mut best = f64::INFINITY;
     let mut last = None;
     for _ in 0..runs {
@@ -64,7 +54,7 @@ fn child_run<P: SolidPeer>(peer: &P, size: usize, runs: usize) {
         best = best.min(t.elapsed().as_secs_f64() * 1e3);
         last = Some(out);
     }
-    let peak = status_kb("VmHWM:").unwrap_or(0).saturating_sub(base);
+    let peak = rss.kib();
     let s = peer.stats(last.as_ref().expect("at least one run"));
     println!("{best} {peak} {} {} {}", s.facets, s.volume, s.valid);
 }

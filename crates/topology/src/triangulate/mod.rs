@@ -341,8 +341,9 @@ mod tests {
     }
 
     /// The triangles' half-edges minus the facet's must be symmetric
-    /// (internal edges come in opposite pairs).
-    fn balance(tris: &[[u32; 3]], hes: &[(u32, u32)]) -> bool {
+    /// (internal edges come in opposite pairs; zero-length ones aside).
+    /// Shared with the property tests (`props.rs`).
+    pub(super) fn balance(tris: &[[u32; 3]], hes: &[(u32, u32)]) -> bool {
         let mut count = std::collections::HashMap::new();
         for t in tris {
             for (s, e) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {

@@ -7,11 +7,11 @@
 //! triangles for `E` half-edges and `H` holes, and, on strictly valid
 //! plates, no triangle reversed (exact orientation).
 
+use super::tests::balance;
 use super::*;
 use proptest::prelude::*;
 use robust_arith::orient2d;
 use std::cmp::Ordering;
-use std::collections::HashMap;
 
 /// A plate facet: its 3D positions, half-edges, the (u, v) coordinates of
 /// every vertex, the number of holes and whether it is strictly valid
@@ -179,23 +179,6 @@ fn plate_strategy() -> impl Strategy<Value = Plate> {
         })
 }
 
-/// The triangles' directed edges minus the facet's half-edges come in
-/// opposite pairs (zero-length ones aside).
-fn closed(tris: &[[u32; 3]], hes: &[(u32, u32)]) -> bool {
-    let mut count: HashMap<(u32, u32), i64> = HashMap::new();
-    for t in tris {
-        for (s, e) in [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])] {
-            *count.entry((s, e)).or_insert(0) += 1;
-        }
-    }
-    for &(s, e) in hes {
-        *count.entry((s, e)).or_insert(0) -= 1;
-    }
-    count
-        .iter()
-        .all(|(&(s, e), &c)| s == e || c == count.get(&(e, s)).copied().unwrap_or(0))
-}
-
 /// Twice the signed area, exact on these integer coordinates.
 fn twice_area(uv: &[P2], tris: &[[u32; 3]]) -> f64 {
     tris.iter()
@@ -220,7 +203,7 @@ fn run(p: &Plate, search: Search) -> Vec<[u32; 3]> {
 
 /// Asserts the invariants of a plate's triangulation.
 fn check(p: &Plate, tris: &[[u32; 3]]) -> Result<(), TestCaseError> {
-    prop_assert!(closed(tris, &p.hes));
+    prop_assert!(balance(tris, &p.hes));
     prop_assert_eq!(tris.len(), p.hes.len() + 2 * p.holes - 2);
     let want = twice_facet_area(&p.uv, &p.hes);
     prop_assert_eq!(twice_area(&p.uv, tris), want);
@@ -280,7 +263,7 @@ proptest! {
         };
         let mut linear = Vec::new();
         triangulate_facet_by(&pts, &hes, Search::Linear, &mut linear);
-        prop_assert!(closed(&indexed, &hes));
+        prop_assert!(balance(&indexed, &hes));
         prop_assert_eq!(indexed, linear);
     }
 }
