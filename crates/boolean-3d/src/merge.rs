@@ -416,7 +416,7 @@ mod tests {
 
     /// A square pyramid whose base (facing down) is split along 0-2, base
     /// corner 3 at `p`: 6 triangles.
-    fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
+    fn pyramid_mesh(p: Point3) -> TriangleMesh {
         let v = vec![
             [0.0, 0.0, 0.0],
             [1.0, 0.0, 0.0],
@@ -432,7 +432,13 @@ mod tests {
             [2, 3, 4],
             [3, 0, 4],
         ];
-        merged(v, t)
+        TriangleMesh::new(v, t)
+    }
+
+    /// [`merged`] of [`pyramid_mesh`].
+    fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
+        let m = pyramid_mesh(p);
+        merged(m.vertices, m.triangles)
     }
 
     #[test]
@@ -440,22 +446,7 @@ mod tests {
         // Two exactly coplanar pairs (the base, and a side split in two)
         // merge and no vertex is dropped: the merged facets' grouping is
         // derived from the triangles', and must equal a fresh build.
-        let v = vec![
-            [0.0, 0.0, 0.0],
-            [1.0, 0.0, 0.0],
-            [1.0, 1.0, 0.0],
-            [0.0, 1.0, 0.0],
-            [0.5, 0.5, 1.0],
-        ];
-        let t = vec![
-            [0, 2, 1],
-            [0, 3, 2],
-            [0, 1, 4],
-            [1, 2, 4],
-            [2, 3, 4],
-            [3, 0, 4],
-        ];
-        let m = TriangleMesh::new(v, t);
+        let m = pyramid_mesh([0.0, 1.0, 0.0]);
         let flat = Flat::from_triangle_mesh(&m).unwrap();
         let (merge, out) = Merged::new(flat).unwrap();
         assert!(merge.any);

@@ -1,9 +1,12 @@
 //! Shared measures for the 3D smoothing tests: shells by edge
-//! connectivity, facet areas and widths, edge lengths, and the full
-//! result check (sanity checker, closure, displacement within the bound).
+//! connectivity, facet areas and widths, edge lengths, the full result
+//! check (sanity checker, closure, displacement within the bound), and the
+//! strategies of the Boolean-chain property tests.
 
 #![allow(dead_code)]
 
+use boolean_3d::BooleanOp;
+use proptest::prelude::*;
 use smooth::{sanity_check_mesh, SmoothReport};
 use std::collections::HashMap;
 use topology::{PolygonMesh, TriangleMesh};
@@ -109,4 +112,31 @@ pub fn volume(m: &PolygonMesh) -> f64 {
 /// A triangle mesh as a polygon mesh (for the measures above).
 pub fn poly(t: &TriangleMesh) -> PolygonMesh {
     t.to_polygon_mesh()
+}
+
+/// A grid box (unit 0.25) moved by a jitter of magnitude `10^e`, `e` from
+/// -12 to `max_exp`.
+pub fn grid_box(max_exp: i32) -> impl Strategy<Value = ([f64; 3], [f64; 3])> {
+    (
+        prop::array::uniform3(0i32..4),
+        prop::array::uniform3(1i32..4),
+        -12i32..=max_exp,
+        prop::array::uniform3(-1i32..=1),
+    )
+        .prop_map(|(lo, size, e, dir)| {
+            let j = 10f64.powi(e);
+            let lo: [f64; 3] =
+                std::array::from_fn(|k| 0.25 * f64::from(lo[k]) + j * f64::from(dir[k]));
+            let hi: [f64; 3] = std::array::from_fn(|k| lo[k] + 0.25 * f64::from(size[k]));
+            (lo, hi)
+        })
+}
+
+/// Union, difference or intersection.
+pub fn op() -> impl Strategy<Value = BooleanOp> {
+    prop::sample::select(vec![
+        BooleanOp::Union,
+        BooleanOp::Difference,
+        BooleanOp::Intersection,
+    ])
 }

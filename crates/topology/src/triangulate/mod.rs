@@ -371,13 +371,7 @@ mod tests {
         let mut t = Vec::new();
         triangulate_facet(&pts, &hes, &mut t);
         assert_eq!(t.len(), 3);
-        let mut area = 0.0;
-        for tri in &t {
-            let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
-            let o = orient(a, b, c);
-            assert!(o > 0.0, "{t:?}");
-            area += o / 2.0;
-        }
+        let area = ccw_area(&pts, &t);
         assert_eq!(area, 16.0 - 6.0);
         assert!(balance(&t, &hes));
     }
@@ -399,14 +393,20 @@ mod tests {
         let mut t = Vec::new();
         triangulate_facet(&pts, &hes, &mut t);
         assert_eq!(t.len(), 8);
+        let area = ccw_area(&pts, &t);
+        assert_eq!(area, 12.0);
+    }
+
+    /// The area of triangles in the xy-plane, each asserted anticlockwise.
+    fn ccw_area(pts: &[Point3], t: &[[u32; 3]]) -> f64 {
         let mut area = 0.0;
-        for tri in &t {
+        for tri in t {
             let [a, b, c] = tri.map(|i| [pts[i as usize][0], pts[i as usize][1]]);
             let o = orient(a, b, c);
             assert!(o > 0.0, "{t:?}");
             area += o / 2.0;
         }
-        assert_eq!(area, 12.0);
+        area
     }
 
     fn total_abs_area(pts: &[Point3], t: &[[u32; 3]]) -> f64 {
