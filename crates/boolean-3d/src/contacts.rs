@@ -50,12 +50,12 @@ pub(crate) fn margin(proximity: f64) -> f32 {
 /// (`L` the largest coordinate involved). Then no point of `g` comes
 /// within `proximity` of `f`. `false` when the facet has no normal.
 fn separated(m: &Flat<'_>, f: u32, o: &Flat<'_>, g: u32, proximity: f64) -> bool {
-    let edges = &m.he[m.facet_range(f)];
-    let Some(&(first, _)) = edges.first() else {
+    let edges = m.facet_half_edges(f);
+    let Some((first, _)) = edges.clone().next() else {
         return false;
     };
     let mut n = [0.0f64; 3];
-    for &(s, e) in edges {
+    for (s, e) in edges.clone() {
         let (p, q) = (m.pos[s as usize], m.pos[e as usize]);
         n[0] += (p[1] - q[1]) * (p[2] + q[2]);
         n[1] += (p[2] - q[2]) * (p[0] + q[0]);
@@ -72,11 +72,10 @@ fn separated(m: &Flat<'_>, f: u32, o: &Flat<'_>, g: u32, proximity: f64) -> bool
         (n[0] * (x[0] - p0[0]) + n[1] * (x[1] - p0[1]) + n[2] * (x[2] - p0[2])) / len
     };
     let own = edges
-        .iter()
-        .map(|&(s, _)| dist(&m.pos[s as usize]).abs())
+        .map(|(s, _)| dist(&m.pos[s as usize]).abs())
         .fold(0.0, f64::max);
     let (mut above, mut below) = (f64::INFINITY, f64::NEG_INFINITY);
-    for &(s, _) in &o.he[o.facet_range(g)] {
+    for (s, _) in o.facet_half_edges(g) {
         let d = dist(&o.pos[s as usize]);
         above = above.min(d);
         below = below.max(d);
@@ -116,7 +115,7 @@ fn boxes_of(m: &Flat<'_>, facets: &[u32], proximity: f64, out: &mut Vec<[Point3;
     for &f in facets {
         let mut lo = [f64::INFINITY; 3];
         let mut hi = [f64::NEG_INFINITY; 3];
-        for &(s, _) in &m.he[m.facet_range(f)] {
+        for (s, _) in m.facet_half_edges(f) {
             let p = &m.pos[s as usize];
             for c in 0..3 {
                 lo[c] = lo[c].min(p[c]);

@@ -233,7 +233,7 @@ impl FacetBuckets {
     fn new(mesh: &Flat<'_>, f: u32) -> Option<FacetBuckets> {
         let range = mesh.facet_range(f);
         let xr = |h: usize| {
-            let (s, e) = mesh.he[h];
+            let (s, e) = mesh.he(h as u32);
             let (a, b) = (mesh.pos[s as usize][0], mesh.pos[e as usize][0]);
             (a.min(b), a.max(b))
         };
@@ -355,7 +355,7 @@ fn edge_facet_hits(
                 let (p, q) = edges.edge_points(e);
                 let r = if index.select(f, p[0].min(q[0]), p[0].max(q[0]), &mut near) {
                     let pts = near.iter().map(|&h| {
-                        let (s, t) = facets.he[h as usize];
+                        let (s, t) = facets.he(h);
                         (facets.pos[s as usize], facets.pos[t as usize])
                     });
                     match side {

@@ -26,19 +26,22 @@ use topology::TopologyError;
 /// No partner / no facet.
 pub(crate) const NONE: u32 = u32::MAX;
 
-/// A triangle mesh's triangles grouped into merged facets.
+/// A triangle mesh's triangles grouped into merged facets. When nothing
+/// merges (a curved mesh, the usual case at a million triangles), facet
+/// `f` is input triangle `f` and the tables below are left empty: they
+/// would be a quarter of the operand's memory for an identity.
 pub(crate) struct Merged {
     /// `tri_off[f]..tri_off[f + 1]` index `tris`: the input triangles of
     /// facet `f`, in input order.
-    pub tri_off: Vec<u32>,
+    tri_off: Vec<u32>,
     /// Input triangle indices grouped by facet.
-    pub tris: Vec<u32>,
+    tris: Vec<u32>,
     /// For every input triangle, its place in its facet's list
     /// (`tris[tri_off[f] + tri_pos[t]] == t`).
-    pub tri_pos: Vec<u32>,
+    tri_pos: Vec<u32>,
     /// For every input half-edge `3t + k`, the half-edge it was merged
     /// with, or [`NONE`].
-    pub partner: Vec<u32>,
+    partner: Vec<u32>,
     /// Whether any two triangles were merged.
     pub any: bool,
 }
@@ -84,9 +87,9 @@ fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
 /// their entries.
 fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
     let (a, b, c) = (
-        flat.pos[flat.he[3 * t as usize].0 as usize],
-        flat.pos[flat.he[3 * t as usize + 1].0 as usize],
-        flat.pos[flat.he[3 * t as usize + 2].0 as usize],
+        flat.pos[flat.he(3 * t).0 as usize],
+        flat.pos[flat.he(3 * t + 1).0 as usize],
+        flat.pos[flat.he(3 * t + 2).0 as usize],
     );
     let axis = (0..3).find(|&k| a[k] == b[k] && a[k] == c[k])?;
     let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
@@ -112,8 +115,8 @@ fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32)
     if let (Some((k1, o1)), Some((k2, o2))) = (axes[t1 as usize], axes[t2 as usize]) {
         return k1 == k2 && o1 != Ordering::Equal && o1 == o2;
     }
-    let opposite = |h: u32| flat.he[(3 * (h / 3) + (h % 3 + 2) % 3) as usize].0;
-    let (u, v) = flat.he[h1 as usize];
+    let opposite = |h: u32| flat.he(3 * (h / 3) + (h % 3 + 2) % 3).0;
+    let (u, v) = flat.he(h1);
     let (c1, c2) = (opposite(h1), opposite(h2));
     let p = |i: u32| flat.pos[i as usize];
     let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
@@ -150,7 +153,7 @@ impl Merged {
     /// returns the merge and the merged facets' flat form (`flat` itself
     /// when nothing merges).
     pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
-        let n_he = flat.he.len();
+        let n_he = flat.he_count();
         let n_t = n_he / 3;
         let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
             .into_par_iter()
@@ -167,14 +170,24 @@ impl Merged {
                     return None;
                 }
                 let (h1, h2) = (hs[0], hs[1]);
-                let (s1, e1) = flat.he[h1 as usize];
-                let (s2, e2) = flat.he[h2 as usize];
+                let (s1, e1) = flat.he(h1);
+                let (s2, e2) = flat.he(h2);
                 if s1 == e1 || s1 != e2 || e1 != s2 {
                     return None;
                 }
                 mergeable(&flat, &axes, h1, h2).then_some((h1, h2))
             })
             .collect();
+        if pairs.is_empty() {
+            let identity = Merged {
+                tri_off: Vec::new(),
+                tris: Vec::new(),
+                tri_pos: Vec::new(),
+                partner: Vec::new(),
+                any: false,
+            };
+            return Ok((identity, flat));
+        }
         let mut partner = vec![NONE; n_he];
         for &(h1, h2) in &pairs {
             partner[h1 as usize] = h2;
@@ -223,11 +236,8 @@ impl Merged {
             tris,
             tri_pos,
             partner,
-            any: !pairs.is_empty(),
+            any: true,
         };
-        if !merged.any {
-            return Ok((merged, flat));
-        }
         let (tri_off, tris, partner) = (&merged.tri_off, &merged.tris, &merged.partner);
         let mut he = Vec::with_capacity(n_he - 2 * pairs.len());
         let mut old = Vec::with_capacity(n_he - 2 * pairs.len());
@@ -237,7 +247,7 @@ impl Merged {
             for &t in &tris[tri_off[f] as usize..tri_off[f + 1] as usize] {
                 for h in 3 * t..3 * t + 3 {
                     if partner[h as usize] == NONE {
-                        he.push(flat.he[h as usize]);
+                        he.push(flat.he(h));
                         old.push(h);
                     }
                 }
@@ -256,8 +266,10 @@ impl Merged {
         let out = match derived {
             Ok(d) => {
                 debug_assert!(
-                    Flat::from_merged(flat.pos, d.he.clone(), d.facet_off.clone()).as_ref()
-                        == Ok(&d),
+                    {
+                        let (he, off) = d.to_parts();
+                        Flat::from_merged(flat.pos, he, off).as_ref() == Ok(&d)
+                    },
                     "derived edge grouping differs"
                 );
                 d
@@ -267,9 +279,25 @@ impl Merged {
         Ok((merged, out))
     }
 
-    /// The input triangles of merged facet `f`.
+    /// The input triangles of merged facet `f`, in input order; empty
+    /// when nothing merged (facet `f` is then input triangle `f` alone).
     pub fn triangles(&self, f: u32) -> &[u32] {
+        if !self.any {
+            return &[];
+        }
         &self.tris[self.tri_off[f as usize] as usize..self.tri_off[f as usize + 1] as usize]
+    }
+
+    /// The place of input triangle `t` in its merged facet's
+    /// [`Merged::triangles`] (0 when nothing merged).
+    pub fn tri_pos(&self, t: u32) -> u32 {
+        self.tri_pos.get(t as usize).copied().unwrap_or(0)
+    }
+
+    /// The input half-edge that half-edge `h` was merged with, or
+    /// [`NONE`].
+    pub fn partner(&self, h: u32) -> u32 {
+        self.partner.get(h as usize).copied().unwrap_or(NONE)
     }
 }
 
@@ -410,8 +438,10 @@ mod tests {
     fn merged(v: Vec<Point3>, t: Vec<[u32; 3]>) -> (bool, usize, Vec<u32>) {
         let m = TriangleMesh::new(v, t);
         let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let n_he = 3 * m.triangles.len() as u32;
         let (merge, f) = Merged::new(flat).unwrap();
-        (merge.any, f.facet_count(), merge.partner)
+        let partner = (0..n_he).map(|h| merge.partner(h)).collect();
+        (merge.any, f.facet_count(), partner)
     }
 
     /// A square pyramid whose base (facing down) is split along 0-2, base
@@ -450,12 +480,13 @@ mod tests {
         let flat = Flat::from_triangle_mesh(&m).unwrap();
         let (merge, out) = Merged::new(flat).unwrap();
         assert!(merge.any);
-        let built = Flat::from_merged(&m.vertices, out.he.clone(), out.facet_off.clone());
+        let (he, off) = out.to_parts();
+        let built = Flat::from_merged(&m.vertices, he, off);
         assert_eq!(built.as_ref(), Ok(&out));
         // A parent whose edge would keep one half-edge of two is refused.
         let flat = Flat::from_triangle_mesh(&m).unwrap();
         let old: Vec<u32> = (1..18).collect();
-        let he: Vec<(u32, u32)> = old.iter().map(|&h| flat.he[h as usize]).collect();
+        let he: Vec<(u32, u32)> = old.iter().map(|&h| flat.he(h)).collect();
         assert!(Flat::from_subset(&flat, he, vec![0, 17], &old).is_err());
     }
 

@@ -10,28 +10,90 @@ use topology::{PolygonMesh, TopologyError, TriangleMesh};
 /// Half-edges facet by facet and the facets' offsets into them.
 pub(crate) type FacetHalfEdges = (Vec<(u32, u32)>, Vec<u32>);
 
+/// The half-edges of a flat form, facet by facet.
+#[derive(Debug, PartialEq)]
+enum HalfEdges<'a> {
+    /// Owned half-edges (polygon meshes, merged facets):
+    /// `facet_off[f]..facet_off[f + 1]` are the half-edges of facet `f`.
+    Owned {
+        he: Vec<(u32, u32)>,
+        facet_off: Vec<u32>,
+    },
+    /// A triangle mesh's triangles, read in place (the caller's array, so
+    /// a triangle operand's half-edges cost no memory): triangle `[a, b,
+    /// c]` is facet `t` with half-edges `3t, 3t + 1, 3t + 2` =
+    /// `a->b, b->c, c->a`.
+    Triangles(&'a [[u32; 3]]),
+}
+
+impl HalfEdges<'_> {
+    /// The number of half-edges.
+    #[inline]
+    fn len(&self) -> usize {
+        match self {
+            HalfEdges::Owned { he, .. } => he.len(),
+            HalfEdges::Triangles(t) => 3 * t.len(),
+        }
+    }
+
+    /// Half-edge `h` as `(start, end)`.
+    #[inline]
+    fn get(&self, h: usize) -> (u32, u32) {
+        match self {
+            HalfEdges::Owned { he, .. } => he[h],
+            HalfEdges::Triangles(t) => {
+                let tri = &t[h / 3];
+                match h % 3 {
+                    0 => (tri[0], tri[1]),
+                    1 => (tri[1], tri[2]),
+                    _ => (tri[2], tri[0]),
+                }
+            }
+        }
+    }
+
+    /// The facet holding half-edge `h`.
+    #[inline]
+    fn facet_of(&self, h: usize) -> usize {
+        match self {
+            HalfEdges::Owned { facet_off, .. } => {
+                facet_off.partition_point(|&o| o as usize <= h) - 1
+            }
+            HalfEdges::Triangles(_) => h / 3,
+        }
+    }
+}
+
 /// One operand in compressed-row form. Indices are `u32` as in `topology`.
 #[derive(Debug, PartialEq)]
 pub(crate) struct Flat<'a> {
     /// Vertex positions (borrowed from the caller's mesh).
     pub pos: &'a [Point3],
-    /// Half-edges `(start, end)`, facet by facet.
-    pub he: Vec<(u32, u32)>,
-    /// `facet_off[f]..facet_off[f + 1]` are the half-edges of facet `f`.
-    pub facet_off: Vec<u32>,
+    /// Half-edges `(start, end)`, facet by facet ([`Flat::he`]).
+    half_edges: HalfEdges<'a>,
     /// The edge of each half-edge.
     pub he_edge: Vec<u32>,
     /// Whether each vertex is referenced by some half-edge.
     pub referenced: Vec<bool>,
-    /// Whether every facet is a triangle `3f, 3f + 1, 3f + 2`.
-    triangles: bool,
     /// The edges `(start, end)` with `start <= end` (vertex indices): the
     /// forward direction of an edge runs from the lower index to the higher.
     pub edges: Vec<(u32, u32)>,
-    /// `edge_off[e]..edge_off[e + 1]` index `edge_he`: the half-edges of `e`.
-    pub edge_off: Vec<u32>,
+    /// `edge_off[e]..edge_off[e + 1]` index `edge_he`: the half-edges of
+    /// `e`; `None` when every edge has exactly two (those of `e` are then
+    /// `2e, 2e + 1`: a closed two-manifold, the usual operand), which
+    /// saves the array.
+    edge_off: Option<Vec<u32>>,
     /// Half-edge indices grouped by edge.
     pub edge_he: Vec<u32>,
+}
+
+/// `Some(edge_off)` unless every edge has exactly two half-edges.
+fn edge_offsets(edge_off: Vec<u32>) -> Option<Vec<u32>> {
+    let pairs = edge_off
+        .iter()
+        .enumerate()
+        .all(|(e, &o)| o as usize == 2 * e);
+    (!pairs).then_some(edge_off)
 }
 
 impl<'a> Flat<'a> {
@@ -48,20 +110,14 @@ impl<'a> Flat<'a> {
             he.extend(f.half_edges.iter().map(|h| (h.start, h.end)));
             facet_off.push(he.len() as u32);
         }
-        Self::build(&m.vertices, he, facet_off, "facet")
+        Self::build(&m.vertices, HalfEdges::Owned { he, facet_off }, "facet")
     }
 
     /// The flat form of a triangle mesh, checked like
     /// `TriangleMesh::check_topology`: triangle `[a, b, c]` has half-edges
-    /// `a->b, b->c, c->a`.
+    /// `a->b, b->c, c->a`, read from the mesh in place.
     pub fn from_triangle_mesh(m: &'a TriangleMesh) -> Result<Self, TopologyError> {
-        let he: Vec<(u32, u32)> = m
-            .triangles
-            .iter()
-            .flat_map(|t| [(t[0], t[1]), (t[1], t[2]), (t[2], t[0])])
-            .collect();
-        let facet_off = (0..=m.triangles.len() as u32).map(|i| 3 * i).collect();
-        Self::build(&m.vertices, he, facet_off, "triangle")
+        Self::build(&m.vertices, HalfEdges::Triangles(&m.triangles), "triangle")
     }
 
     /// The flat form of facets built by the coplanar merge from a
@@ -71,7 +127,7 @@ impl<'a> Flat<'a> {
         he: Vec<(u32, u32)>,
         facet_off: Vec<u32>,
     ) -> Result<Self, TopologyError> {
-        Self::build(pos, he, facet_off, "merged facet")
+        Self::build(pos, HalfEdges::Owned { he, facet_off }, "merged facet")
     }
 
     /// The flat form of a subset of `parent`'s half-edges (`old[i]` is the
@@ -88,7 +144,7 @@ impl<'a> Flat<'a> {
         facet_off: Vec<u32>,
         old: &[u32],
     ) -> Result<Self, FacetHalfEdges> {
-        let mut new_of = vec![u32::MAX; parent.he.len()];
+        let mut new_of = vec![u32::MAX; parent.he_count()];
         for (i, &o) in old.iter().enumerate() {
             new_of[o as usize] = i as u32;
         }
@@ -136,35 +192,33 @@ impl<'a> Flat<'a> {
         }
         Ok(Flat {
             pos: parent.pos,
-            he,
-            facet_off,
+            half_edges: HalfEdges::Owned { he, facet_off },
             he_edge,
             referenced,
-            triangles: false,
             edges,
-            edge_off,
+            edge_off: edge_offsets(edge_off),
             edge_he,
         })
     }
 
     fn build(
         pos: &'a [Point3],
-        he: Vec<(u32, u32)>,
-        facet_off: Vec<u32>,
+        half_edges: HalfEdges<'a>,
         entity: &'static str,
     ) -> Result<Self, TopologyError> {
-        let n_he = he.len();
+        let n_he = half_edges.len();
         let n_v = pos.len();
+        let he = |h: usize| half_edges.get(h);
         // Data definitions: every index refers to a vertex.
         let vertex_count = n_v as u32;
         // The first half-edge in facet order with a dangling index names
         // the facet; its start is checked before its end.
-        if let Some(h) = he
-            .iter()
-            .position(|&(s, e)| s as usize >= n_v || e as usize >= n_v)
-        {
-            let f = facet_off.partition_point(|&o| o as usize <= h) - 1;
-            let (s, e) = he[h];
+        if let Some(h) = (0..n_he).position(|h| {
+            let (s, e) = he(h);
+            s as usize >= n_v || e as usize >= n_v
+        }) {
+            let f = half_edges.facet_of(h);
+            let (s, e) = he(h);
             return Err(TopologyError::DanglingIndex {
                 entity,
                 entity_index: f as u32,
@@ -173,8 +227,10 @@ impl<'a> Flat<'a> {
             });
         }
         // Facet boundary closure (triangles satisfy it by construction).
-        if entity == "facet" {
-            check_facet_closure(&he, &facet_off)?;
+        if let HalfEdges::Owned { he, facet_off } = &half_edges {
+            if entity == "facet" {
+                check_facet_closure(he, facet_off)?;
+            }
         }
         // Group half-edges into edges by their unordered vertex pair: a
         // counting sort by the lower vertex, then a sort of each (small)
@@ -183,7 +239,8 @@ impl<'a> Flat<'a> {
         // numbering, by (lower, higher), is independent of thread count.
         let mut referenced = vec![false; n_v];
         let mut bucket = vec![0u32; n_v + 1];
-        for &(s, e) in &he {
+        for h in 0..n_he {
+            let (s, e) = he(h);
             referenced[s as usize] = true;
             referenced[e as usize] = true;
             bucket[s.min(e) as usize + 1] += 1;
@@ -194,7 +251,8 @@ impl<'a> Flat<'a> {
         let mut fill = bucket.clone();
         // (higher vertex, half-edge) scattered by lower vertex.
         let mut pairs = vec![0u64; n_he];
-        for (h, &(s, e)) in he.iter().enumerate() {
+        for h in 0..n_he {
+            let (s, e) = he(h);
             let (lo, hi) = if s <= e { (s, e) } else { (e, s) };
             pairs[fill[lo as usize] as usize] = (u64::from(hi) << 32) | h as u64;
             fill[lo as usize] += 1;
@@ -220,7 +278,7 @@ impl<'a> Flat<'a> {
                 while k < b1 && (pairs[k] >> 32) as u32 == hi {
                     let h = pairs[k] as u32;
                     he_edge[h as usize] = e;
-                    let (hs, he_end) = he[h as usize];
+                    let (hs, he_end) = he(h as usize);
                     if hs < he_end {
                         forward += 1;
                     } else if hs > he_end {
@@ -238,41 +296,83 @@ impl<'a> Flat<'a> {
         edge_off.push(n_he as u32);
         Ok(Flat {
             pos,
-            he,
-            facet_off,
+            half_edges,
             he_edge,
             referenced,
-            triangles: entity == "triangle",
             edges,
-            edge_off,
+            edge_off: edge_offsets(edge_off),
             edge_he,
         })
     }
 
+    /// The number of half-edges.
+    #[inline]
+    pub fn he_count(&self) -> usize {
+        self.half_edges.len()
+    }
+
+    /// Half-edge `h` as `(start, end)`.
+    #[inline]
+    pub fn he(&self, h: u32) -> (u32, u32) {
+        self.half_edges.get(h as usize)
+    }
+
+    /// Every half-edge, facet by facet.
+    pub fn half_edges(&self) -> impl Iterator<Item = (u32, u32)> + '_ {
+        (0..self.he_count() as u32).map(|h| self.he(h))
+    }
+
+    /// The half-edges and facet offsets as arrays (a triangle operand's
+    /// are built from its triangles).
+    pub fn to_parts(&self) -> FacetHalfEdges {
+        let mut off: Vec<u32> = (0..self.facet_count() as u32)
+            .map(|f| self.facet_range(f).start as u32)
+            .collect();
+        off.push(self.he_count() as u32);
+        (self.half_edges().collect(), off)
+    }
+
     /// The number of facets.
     pub fn facet_count(&self) -> usize {
-        self.facet_off.len() - 1
+        match &self.half_edges {
+            HalfEdges::Owned { facet_off, .. } => facet_off.len() - 1,
+            HalfEdges::Triangles(t) => t.len(),
+        }
     }
 
     /// The half-edge index range of facet `f`.
     #[inline]
     pub fn facet_range(&self, f: u32) -> std::ops::Range<usize> {
-        self.facet_off[f as usize] as usize..self.facet_off[f as usize + 1] as usize
+        match &self.half_edges {
+            HalfEdges::Owned { facet_off, .. } => {
+                facet_off[f as usize] as usize..facet_off[f as usize + 1] as usize
+            }
+            HalfEdges::Triangles(_) => 3 * f as usize..3 * f as usize + 3,
+        }
+    }
+
+    /// The half-edges of facet `f`.
+    #[inline]
+    pub fn facet_half_edges(&self, f: u32) -> impl Iterator<Item = (u32, u32)> + Clone + '_ {
+        self.facet_range(f).map(|h| self.half_edges.get(h))
     }
 
     /// The half-edges of facet `f` as point pairs (the form the level-2
     /// functions of `shadow-2d` take).
     #[inline]
     pub fn facet_points(&self, f: u32) -> impl Iterator<Item = (Point3, Point3)> + Clone + '_ {
-        self.he[self.facet_range(f)]
-            .iter()
-            .map(|&(s, e)| (self.pos[s as usize], self.pos[e as usize]))
+        self.facet_half_edges(f)
+            .map(|(s, e)| (self.pos[s as usize], self.pos[e as usize]))
     }
 
     /// The half-edges of edge `e`.
     #[inline]
     pub fn edge_half_edges(&self, e: u32) -> &[u32] {
-        &self.edge_he[self.edge_off[e as usize] as usize..self.edge_off[e as usize + 1] as usize]
+        let e = e as usize;
+        match &self.edge_off {
+            Some(off) => &self.edge_he[off[e] as usize..off[e + 1] as usize],
+            None => &self.edge_he[2 * e..2 * e + 2],
+        }
     }
 
     /// The end points of edge `e` (start, end).
@@ -285,18 +385,14 @@ impl<'a> Flat<'a> {
     /// The facet holding half-edge `h`.
     #[inline]
     pub fn he_facet(&self, h: u32) -> u32 {
-        if self.triangles {
-            h / 3
-        } else {
-            (self.facet_off.partition_point(|&o| o <= h) - 1) as u32
-        }
+        self.half_edges.facet_of(h as usize) as u32
     }
 
     /// Whether half-edge `h` is a forward half-edge of its edge (section
     /// 4.2); zero-length half-edges count as forward.
     #[inline]
     pub fn he_fwd(&self, h: u32) -> bool {
-        let (s, e) = self.he[h as usize];
+        let (s, e) = self.he(h);
         s <= e
     }
 
@@ -311,7 +407,7 @@ impl<'a> Flat<'a> {
                 // start), rounded outwards once.
                 let mut lo = [f64::INFINITY; 3];
                 let mut hi = [f64::NEG_INFINITY; 3];
-                for &(s, _) in &self.he[self.facet_range(f)] {
+                for (s, _) in self.facet_half_edges(f) {
                     let p = &self.pos[s as usize];
                     for c in 0..3 {
                         lo[c] = lo[c].min(p[c]);
@@ -388,4 +484,98 @@ fn check_facet_closure(he: &[(u32, u32)], facet_off: &[u32]) -> Result<(), Topol
         }
     }
     Ok(())
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+    use topology::Facet;
+
+    /// Every observable of two flat forms of the same half-edges.
+    fn assert_same(a: &Flat<'_>, b: &Flat<'_>) {
+        assert_eq!(a.to_parts(), b.to_parts());
+        assert_eq!(a.facet_count(), b.facet_count());
+        assert_eq!(a.he_edge, b.he_edge);
+        assert_eq!(a.referenced, b.referenced);
+        assert_eq!(a.edges, b.edges);
+        assert_eq!(a.edge_he, b.edge_he);
+        assert_eq!(a.edge_off, b.edge_off);
+        for e in 0..a.edges.len() as u32 {
+            assert_eq!(a.edge_half_edges(e), b.edge_half_edges(e));
+        }
+        for h in 0..a.he_count() as u32 {
+            assert_eq!(a.he(h), b.he(h));
+            assert_eq!(a.he_facet(h), b.he_facet(h));
+            assert_eq!(a.he_fwd(h), b.he_fwd(h));
+        }
+        for f in 0..a.facet_count() as u32 {
+            assert_eq!(a.facet_range(f), b.facet_range(f));
+            assert!(a.facet_points(f).eq(b.facet_points(f)));
+        }
+    }
+
+    fn as_polygons(m: &TriangleMesh) -> PolygonMesh {
+        let facets = m.triangles.iter().map(|t| Facet::from_loop(t)).collect();
+        PolygonMesh::new(m.vertices.clone(), facets)
+    }
+
+    #[test]
+    fn a_closed_two_manifold_needs_no_edge_offsets() {
+        let m = test_support::shapes::box_triangles([0.0; 3], [1.0; 3]);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        assert!(flat.edge_off.is_none());
+        assert_eq!(flat.edges.len(), 18);
+        assert_same(&flat, &Flat::from_polygon_mesh(&as_polygons(&m)).unwrap());
+        // Two boxes sharing an edge: four half-edges on it.
+        let mut t = m.triangles.clone();
+        let mut v = m.vertices.clone();
+        let shifted = test_support::shapes::box_triangles([1.0, 1.0, 0.0], [2.0, 2.0, 1.0]);
+        v.extend(&shifted.vertices);
+        t.extend(shifted.triangles.iter().map(|t| t.map(|i| i + 8)));
+        let mut two = TriangleMesh::new(v, t);
+        // Weld the shared edge (x = y = 1).
+        let weld: Vec<u32> = (0..two.vertices.len() as u32)
+            .map(|i| {
+                (0..i)
+                    .find(|&j| two.vertices[j as usize] == two.vertices[i as usize])
+                    .unwrap_or(i)
+            })
+            .collect();
+        for t in &mut two.triangles {
+            *t = t.map(|i| weld[i as usize]);
+        }
+        let flat = Flat::from_triangle_mesh(&two).unwrap();
+        assert!(flat.edge_off.is_some());
+        assert!((0..flat.edges.len() as u32).any(|e| flat.edge_half_edges(e).len() == 4));
+        assert_same(&flat, &Flat::from_polygon_mesh(&as_polygons(&two)).unwrap());
+    }
+
+    proptest! {
+        /// A triangle operand read in place gives the same flat form as
+        /// the same triangles copied as polygon facets, and the same first
+        /// violation, on random soups (degenerate, non-manifold, open).
+        #[test]
+        fn triangles_in_place_equal_copied_facets(
+            n_v in 1u32..7,
+            tris in prop::collection::vec([0u32..7, 0u32..7, 0u32..7], 0..14),
+            closed in any::<bool>(),
+        ) {
+            let tris: Vec<[u32; 3]> = tris.into_iter().map(|t| t.map(|i| i % n_v)).collect();
+            // Half of the cases closed by adding every triangle reversed.
+            let tris: Vec<[u32; 3]> = if closed {
+                tris.iter().flat_map(|&[a, b, c]| [[a, b, c], [a, c, b]]).collect()
+            } else {
+                tris
+            };
+            let vertices = (0..n_v).map(|i| [f64::from(i), f64::from(i * i), 1.0]).collect();
+            let m = TriangleMesh::new(vertices, tris);
+            let poly = as_polygons(&m);
+            match (Flat::from_triangle_mesh(&m), Flat::from_polygon_mesh(&poly)) {
+                (Ok(a), Ok(b)) => assert_same(&a, &b),
+                (Err(a), Err(b)) => prop_assert_eq!(a, b),
+                (a, b) => prop_assert!(false, "{:?} against {:?}", a.err(), b.err()),
+            }
+        }
+    }
 }

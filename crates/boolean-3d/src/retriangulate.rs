@@ -196,16 +196,16 @@ fn facet(
         tris.iter()
             .all(|&t| src.triangles[t as usize].iter().all(|&v| retained(v)))
     };
-    let whole = &src.facets.he[src.facets.facet_range(f)];
-    if part.len() == whole.len() {
+    let whole = src.facets.facet_half_edges(f);
+    if part.len() == src.facets.facet_range(f).len() {
         let same = if sigma == 1 {
             part.iter()
                 .zip(whole)
-                .all(|(&(s, e), &(s0, e0))| s == vid(s0) && e == vid(e0))
+                .all(|(&(s, e), (s0, e0))| s == vid(s0) && e == vid(e0))
         } else {
             part.iter()
                 .zip(whole)
-                .all(|(&(s, e), &(s0, e0))| s == vid(e0) && e == vid(s0))
+                .all(|(&(s, e), (s0, e0))| s == vid(e0) && e == vid(s0))
         };
         if same && all_retained() {
             out.extend(tris.iter().map(|&t| oriented(t)));
@@ -257,8 +257,7 @@ fn facet(
     }
     // A merged partner lies in the same merged facet: its place in `tris`
     // is `tri_pos`.
-    let tri_pos = &src.merged.tri_pos;
-    let kept = |t: u32| s.kept[tri_pos[t as usize] as usize];
+    let kept = |t: u32| s.kept[src.merged.tri_pos(t) as usize];
     // The residual as signed edges (lower id, higher id, +1 for lower to
     // higher): F' plus the reversed boundary of the kept triangles, where
     // pairs between two kept triangles are skipped (they cancel).
@@ -286,7 +285,7 @@ fn facet(
             } else {
                 3 * t + 2 - k as u32
             };
-            let p = src.merged.partner[h as usize];
+            let p = src.merged.partner(h);
             if p != NONE && kept(p / 3) {
                 continue;
             }
