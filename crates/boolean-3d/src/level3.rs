@@ -465,67 +465,53 @@ fn x30_cast(a: &Flat<'_>, v: &Point3, bvh: &Bvh, boxes: &[Aabb]) -> Result<i32, 
 /// from one ray cast per connected component (identity in the module
 /// documentation), with `sum_f X(e, f)` per edge `e` from `hits`.
 ///
-/// The two operands propagate in parallel, so each one's temporaries are
-/// freed as soon as the next step no longer needs them (the adjacency
-/// before the edge sums are built): this step holds the heap peak of the
-/// whole Boolean.
+/// The components and the differences `x[v] - x[root]` come from a
+/// union-find whose links carry the difference between a vertex and its
+/// parent (edge `e = (s, t)` says `x[t] = x[s] - sum_f X(e, f)`), so no
+/// vertex-edge adjacency is built: two arrays of one word a vertex. The
+/// root of a component is its lowest vertex (the lower of two roots
+/// becomes the parent), where the ray is cast, in increasing order. The
+/// identity holds along every edge (Theorem 1, which the audit checks
+/// against one cast per vertex), so the values do not depend on the
+/// edges chosen; they are integers, computed exactly (wrapping, so that
+/// no intermediate sum can overflow on the way to a result that fits).
+///
+/// The two operands propagate in parallel; this step holds the heap peak
+/// of the whole Boolean, hence the compact form.
 fn propagate(
     mesh: &Flat<'_>,
     hits: &[EdgeFacetHit],
     cast: impl Fn(&Point3) -> Result<i32, Boolean3Error> + Sync,
 ) -> Result<(Vec<i32>, usize), Boolean3Error> {
     let n = mesh.pos.len();
-    // Vertex -> edge adjacency (compressed rows).
-    let mut deg = vec![0u32; n + 1];
-    for &(s, t) in &mesh.edges {
-        if s != t {
-            deg[s as usize + 1] += 1;
-            deg[t as usize + 1] += 1;
-        }
-    }
-    for i in 0..n {
-        deg[i + 1] += deg[i];
-    }
-    let mut fill = deg.clone();
-    let mut adj = vec![0u32; deg[n] as usize];
+    let dsum = edge_sums(mesh.edges.len(), hits);
+    let mut parent: Vec<u32> = (0..n as u32).collect();
+    // up[v] = x[v] - x[parent[v]].
+    let mut up = vec![0i32; n];
     for (e, &(s, t)) in mesh.edges.iter().enumerate() {
-        if s != t {
-            adj[fill[s as usize] as usize] = e as u32;
-            fill[s as usize] += 1;
-            adj[fill[t as usize] as usize] = e as u32;
-            fill[t as usize] += 1;
-        }
-    }
-    drop(fill);
-    let referenced = &mesh.referenced;
-    let mut seen = vec![false; n];
-    // (vertex, edge it was reached by, or u32::MAX for a root)
-    let mut order: Vec<(u32, u32)> = Vec::with_capacity(n);
-    let mut roots = Vec::new();
-    for r in 0..n {
-        if !referenced[r] || seen[r] {
+        if s == t {
             continue;
         }
-        seen[r] = true;
-        roots.push(r as u32);
-        let first = order.len();
-        order.push((r as u32, u32::MAX));
-        let mut k = first;
-        while k < order.len() {
-            let v = order[k].0 as usize;
-            k += 1;
-            for &e in &adj[deg[v] as usize..deg[v + 1] as usize] {
-                let (s, t) = mesh.edges[e as usize];
-                let w = if s as usize == v { t } else { s };
-                if !seen[w as usize] {
-                    seen[w as usize] = true;
-                    order.push((w, e));
-                }
-            }
+        let (rs, os) = find(&mut parent, &mut up, s);
+        let (rt, ot) = find(&mut parent, &mut up, t);
+        if rs == rt {
+            continue;
+        }
+        // x[rt] - x[rs] = os - d - ot.
+        let diff = os.wrapping_sub(dsum[e]).wrapping_sub(ot);
+        if rs < rt {
+            parent[rt as usize] = rs;
+            up[rt as usize] = diff;
+        } else {
+            parent[rs as usize] = rt;
+            up[rs as usize] = diff.wrapping_neg();
         }
     }
-    drop((adj, deg, seen));
-    let dsum = edge_sums(mesh.edges.len(), hits);
+    drop(dsum);
+    let referenced = &mesh.referenced;
+    let roots: Vec<u32> = (0..n as u32)
+        .filter(|&v| referenced[v as usize] && parent[v as usize] == v)
+        .collect();
     // A ray cast costs a descent of the other operand's hierarchy: a few
     // dozen of them are worth a piece of their own.
     let cast_values: Vec<i32> = roots
@@ -534,22 +520,36 @@ fn propagate(
         .map(|&r| cast(&mesh.pos[r as usize]))
         .collect::<Result<_, _>>()?;
     let mut x = vec![0i32; n];
-    let mut next_root = 0;
-    for &(v, e) in &order {
-        if e == u32::MAX {
-            x[v as usize] = cast_values[next_root];
-            next_root += 1;
-        } else {
-            let (s, t) = mesh.edges[e as usize];
-            let d = dsum[e as usize];
-            if v == t {
-                x[t as usize] = x[s as usize] - d;
-            } else {
-                x[s as usize] = x[t as usize] + d;
-            }
+    for (&r, &c) in roots.iter().zip(&cast_values) {
+        x[r as usize] = c;
+    }
+    for v in 0..n as u32 {
+        if referenced[v as usize] && parent[v as usize] != v {
+            let (r, o) = find(&mut parent, &mut up, v);
+            x[v as usize] = x[r as usize].wrapping_add(o);
         }
     }
     Ok((x, roots.len()))
+}
+
+/// The root of `v`'s set and `x[v] - x[root]`, compressing the path.
+fn find(parent: &mut [u32], up: &mut [i32], v: u32) -> (u32, i32) {
+    let (mut r, mut acc) = (v, 0i32);
+    while parent[r as usize] != r {
+        acc = acc.wrapping_add(up[r as usize]);
+        r = parent[r as usize];
+    }
+    // Every vertex on the path now hangs from the root directly.
+    let (mut w, mut rest) = (v, acc);
+    while parent[w as usize] != r && parent[w as usize] != w {
+        let next = parent[w as usize];
+        let step = up[w as usize];
+        parent[w as usize] = r;
+        up[w as usize] = rest;
+        rest = rest.wrapping_sub(step);
+        w = next;
+    }
+    (r, acc)
 }
 
 /// Per-edge sums of the hit values.
