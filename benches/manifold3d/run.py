@@ -14,7 +14,10 @@ Optional and outside CI. Usage (from the repository root):
 Each operand is read from binary PLY (double coordinates, the same f64
 bits the Rust benches use) and turned into a `Manifold` through `Mesh64`
 before any timing. Timed: `a - b` (the sphere difference of
-`perf-table-3d`), `Manifold.batch_boolean(spheres, Add)` (the union of the
+`perf-table-3d`), the same difference mesh in, mesh out
+(`sphere-difference-mesh-to-mesh`: both `Manifold`s built from their
+`Mesh64` arrays, the difference, and its `to_mesh64()`, which is what
+Umbra's `boolean_triangles` does between `TriangleMesh`es), `Manifold.batch_boolean(spheres, Add)` (the union of the
 1,000 spheres of `perf-table-nary`) and `Manifold.batch_boolean([slab] +
 boxes, Subtract)` (the slab minus 1,000 boxes), and the iterated-CSG chain
 of `csg-chain` (`chain-slab.ply` minus the boxes of `chain-boxes-1000.ply`
@@ -222,6 +225,20 @@ def main():
         runs = 1 if size >= 1_000_000 else 3
         ms, out, rss = best_of(runs, lambda: a - b)
         record("sphere-difference", size, ms, out, a.num_tri() + b.num_tri(), rss)
+        # Mesh in, mesh out, as Umbra's `boolean_triangles` runs: from the
+        # indexed arrays (read before the timing) to the result's arrays.
+        # `a - b` above starts from `Manifold`s whose construction (edge
+        # pairing, sorting, bounding boxes) was done before the timing.
+        arrays = [read_ply(os.path.join(args.dir, f"sphere-{s}-{size}.ply")) for s in "ab"]
+
+        def mesh_to_mesh():
+            ma, mb = (m3d.Manifold(m3d.Mesh64(vert_properties=v, tri_verts=t)) for v, t in arrays)
+            out = ma - mb
+            out.to_mesh64()
+            return out
+
+        ms, out, rss = best_of(runs, mesh_to_mesh)
+        record("sphere-difference-mesh-to-mesh", size, ms, out, a.num_tri() + b.num_tri(), rss)
 
     if not args.skip_batch:
         spheres = manifold_of(m3d, os.path.join(args.dir, "spheres-1000.ply")).decompose()
