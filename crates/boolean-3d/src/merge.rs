@@ -19,7 +19,7 @@
 use crate::mesh::Flat;
 use crate::par;
 use rayon::prelude::*;
-use robust_arith::{orient2d, orient3d, Point3, UNIT_ROUNDOFF};
+use robust_arith::{orient2d, orient3d, Point3};
 use std::cmp::Ordering;
 use topology::TopologyError;
 
@@ -96,68 +96,6 @@ fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
     Some((axis as u8, o))
 }
 
-/// A triangle's unit normal rounded to single precision, with a bound on
-/// the angle (radians) between it and the exact normal `(b - a) x (c - a)`;
-/// the bound is infinite when the triangle is too thin for one.
-#[derive(Clone, Copy, Debug, PartialEq)]
-struct Normal {
-    n: [f32; 3],
-    angle: f32,
-}
-
-impl Normal {
-    const UNKNOWN: Normal = Normal {
-        n: [0.0; 3],
-        angle: f32::INFINITY,
-    };
-
-    /// The normal of triangle `a, b, c`. Each component of the computed
-    /// cross product is within `8u (|d_y e_z| + |d_z e_y|)` (and cyclic)
-    /// of the exact one (`u` the unit roundoff; the differences, products
-    /// and sum round once each, 4u would do), so the error vector is at
-    /// most `s`, the sum of the three bounds; with `s < |n| / 4` the
-    /// directions differ by at most `asin(s / (|n| - s)) <= 2s / (|n| - s)`.
-    /// Normalising and rounding to `f32` adds at most `2^-22`.
-    fn of(a: Point3, b: Point3, c: Point3) -> Normal {
-        let d = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-        let e = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-        let p = [
-            (d[1] * e[2], d[2] * e[1]),
-            (d[2] * e[0], d[0] * e[2]),
-            (d[0] * e[1], d[1] * e[0]),
-        ];
-        let n = p.map(|(x, y)| x - y);
-        let s = 8.0 * UNIT_ROUNDOFF * p.iter().map(|(x, y)| x.abs() + y.abs()).sum::<f64>();
-        let len = (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt();
-        if !(len.is_finite() && s.is_finite() && len > 0.0 && s < 0.25 * len) {
-            return Normal::UNKNOWN;
-        }
-        let angle = 2.0 * s / (len - s) * 1.01 + 2f64.powi(-22);
-        Normal {
-            n: n.map(|x| (x / len) as f32),
-            angle: (angle as f32).next_up(),
-        }
-    }
-
-    /// Whether the exact normals of the two triangles certainly differ in
-    /// direction: the chord between the stored vectors (each within
-    /// `2^-23` of unit length, so the chord exceeds their angle by at most
-    /// `2^-22`) beyond both angle bounds.
-    fn apart(&self, o: &Normal) -> bool {
-        let t = f64::from(self.angle) + f64::from(o.angle) + 2f64.powi(-21);
-        if !t.is_finite() {
-            return false;
-        }
-        let chord2: f64 = (0..3)
-            .map(|k| {
-                let x = f64::from(self.n[k]) - f64::from(o.n[k]);
-                x * x
-            })
-            .sum();
-        chord2 > t * t * (1.0 + 1e-9)
-    }
-}
-
 /// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
 /// triangle mesh's flat form may be merged across their edge; `axes` holds
 /// [`flat_axis`] of every triangle.
@@ -222,18 +160,6 @@ impl Merged {
             .with_min_len(par::min_len(1))
             .map(|t| flat_axis(&flat, t))
             .collect();
-        // Every triangle's approximate normal, read in triangle order, so
-        // that the edges between triangles that are certainly not coplanar
-        // and co-oriented (the whole of a curved mesh) are told apart by
-        // two reads of this array instead of the triangles' points.
-        let normals: Vec<Normal> = (0..n_t as u32)
-            .into_par_iter()
-            .with_min_len(par::min_len(1))
-            .map(|t| {
-                let p = |k: u32| flat.pos[flat.he(3 * t + k).0 as usize];
-                Normal::of(p(0), p(1), p(2))
-            })
-            .collect();
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
@@ -244,9 +170,6 @@ impl Merged {
                     return None;
                 }
                 let (h1, h2) = (hs[0], hs[1]);
-                if normals[(h1 / 3) as usize].apart(&normals[(h2 / 3) as usize]) {
-                    return None;
-                }
                 let (s1, e1) = flat.he(h1);
                 let (s2, e2) = flat.he(h2);
                 if s1 == e1 || s1 != e2 || e1 != s2 {
@@ -546,90 +469,6 @@ mod tests {
     fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
         let m = pyramid_mesh(p);
         merged(m.vertices, m.triangles)
-    }
-
-    /// Whether triangles `(u, v, c1)` and `(v, u, c2)` are exactly
-    /// coplanar and co-oriented (the geometric part of [`mergeable`]).
-    fn coplanar_co_oriented(u: Point3, v: Point3, c1: Point3, c2: Point3) -> bool {
-        if orient3d(u, v, c1, c2) != Ordering::Equal {
-            return false;
-        }
-        let Some((axis, s1)) = plane_of(u, v, c1) else {
-            return false;
-        };
-        orient2d(drop_axis(v, axis), drop_axis(u, axis), drop_axis(c2, axis)) == s1
-    }
-
-    proptest::proptest! {
-        /// The normal filter never parts two triangles that may merge:
-        /// pairs on the slanted lattice planes `x + 2y + 3z = k` (exactly
-        /// coplanar, no axis shared; the fourth point is `u + v - c1`, on
-        /// the other side of `uv`, or another lattice point), scaled by
-        /// powers of two and shifted far from the origin, or one point
-        /// moved by a unit in the last place.
-        #[test]
-        fn the_normal_filter_keeps_every_mergeable_pair(
-            pts in proptest::collection::vec((-20i64..20, -20i64..20), 4),
-            k in -5i64..5,
-            mirror in proptest::bool::ANY,
-            exp in -40i32..40,
-            shift in proptest::prop_oneof![proptest::strategy::Just(0.0), -1e6f64..1e6],
-            jitter in 0usize..8,
-        ) {
-            // A lattice point of the plane x + 2y + 3z = k near (x, y).
-            let on_plane = |(x, y): (i64, i64)| {
-                let x = x - (x + 2 * y - k).rem_euclid(3);
-                [x, y, (k - x - 2 * y) / 3]
-            };
-            let mut q: Vec<[i64; 3]> = pts.iter().map(|&xy| on_plane(xy)).collect();
-            if mirror {
-                q[3] = [0, 1, 2].map(|c| q[0][c] + q[1][c] - q[2][c]);
-            }
-            let scale = 2f64.powi(exp);
-            let mut p: Vec<Point3> = q
-                .iter()
-                .map(|c| [c[0] as f64 * scale + shift, c[1] as f64 * scale, c[2] as f64 * scale])
-                .collect();
-            if jitter < 4 {
-                p[jitter][2] = p[jitter][2].next_up();
-            }
-            let (u, v, c1, c2) = (p[0], p[1], p[2], p[3]);
-            if coplanar_co_oriented(u, v, c1, c2) {
-                proptest::prop_assert!(!Normal::of(u, v, c1).apart(&Normal::of(v, u, c2)));
-            }
-        }
-    }
-
-    #[test]
-    fn the_normal_filter_parts_the_edges_of_a_fine_sphere() {
-        // The filter is what makes the merge cheap on curved meshes: on a
-        // sphere it decides almost every edge without the points; the
-        // coplanar halves of each quadrilateral are left to the exact test.
-        let m = test_support::shapes::uv_sphere([0.1, 0.2, 0.3], 1.0, 200, 100);
-        let flat = Flat::from_triangle_mesh(&m).unwrap();
-        let normal = |t: u32| {
-            let p = |k: u32| flat.pos[flat.he(3 * t + k).0 as usize];
-            Normal::of(p(0), p(1), p(2))
-        };
-        let (mut parted, mut pairs) = (0, 0);
-        for e in 0..flat.edges.len() as u32 {
-            let hs = flat.edge_half_edges(e);
-            if hs.len() == 2 {
-                pairs += 1;
-                parted += usize::from(normal(hs[0] / 3).apart(&normal(hs[1] / 3)));
-            }
-        }
-        assert!(parted * 10 > pairs * 6, "{parted} of {pairs}");
-        // Every pair the filter parts is refused by the exact test too.
-        let axes: Vec<_> = (0..m.triangles.len() as u32)
-            .map(|t| flat_axis(&flat, t))
-            .collect();
-        for e in 0..flat.edges.len() as u32 {
-            let hs = flat.edge_half_edges(e);
-            if hs.len() == 2 && normal(hs[0] / 3).apart(&normal(hs[1] / 3)) {
-                assert!(!mergeable(&flat, &axes, hs[0], hs[1]));
-            }
-        }
     }
 
     #[test]
