@@ -9,7 +9,7 @@
 //! quadrilaterals they split ([`quads_of_uv_sphere`]), so that all run on
 //! the same vertices and the same surface.
 
-use boolean_3d::{boolean_mesh, boolean_triangles, BooleanOp};
+use boolean_3d::{boolean_mesh, boolean_prepared, boolean_triangles, BooleanOp, PreparedTriangles};
 use manifold_rust::manifold::Manifold;
 use manifold_rust::types::MeshGL64;
 pub use test_support::measure::polygon_mesh_volume as polygon_volume;
@@ -133,6 +133,41 @@ pub trait SolidPeer {
     fn difference(&self, input: &Self::Input) -> Self::Output;
     /// Facet count, volume and validity of the result.
     fn stats(&self, out: &Self::Output) -> SolidStats;
+}
+
+/// Umbra's triangle-mesh variant on operands prepared before the timing
+/// (`PreparedTriangles`, then `boolean_prepared`): the protocol of the
+/// C++ Manifold's `a - b`, whose `Manifold`s are built (edge pairing,
+/// sorting, collider) before it is timed. The same result as
+/// [`UmbraTriangles`].
+#[derive(Clone, Copy, Debug, Default)]
+pub struct UmbraPrepared;
+
+impl SolidPeer for UmbraPrepared {
+    type Input = Option<(PreparedTriangles<'static>, PreparedTriangles<'static>)>;
+    type Output = Option<TriangleMesh>;
+    fn name(&self) -> &'static str {
+        "umbra-tri-prepared"
+    }
+    fn prepare(&self, a: &TriangleMesh, b: &TriangleMesh) -> Self::Input {
+        // A prepared operand borrows its mesh; a bench child runs one
+        // table cell and exits, so the two meshes live as long as it.
+        let a: &'static TriangleMesh = Box::leak(Box::new(a.clone()));
+        let b: &'static TriangleMesh = Box::leak(Box::new(b.clone()));
+        Some((
+            PreparedTriangles::new(a).ok()?,
+            PreparedTriangles::new(b).ok()?,
+        ))
+    }
+    fn difference(&self, input: &Self::Input) -> Self::Output {
+        let (a, b) = input.as_ref()?;
+        boolean_prepared(a, b, BooleanOp::Difference)
+            .ok()
+            .map(|o| o.mesh)
+    }
+    fn stats(&self, out: &Self::Output) -> SolidStats {
+        UmbraTriangles.stats(out)
+    }
 }
 
 /// Umbra's triangle-mesh variant (`boolean_triangles`).

@@ -27,7 +27,7 @@ use std::time::Instant;
 use umbra_benches::rss::RssGrowth;
 use umbra_benches::solid::{
     analytic_difference_volume, sphere_pair, Boolmesh, ManifoldRust, SolidPeer, UmbraPolygons,
-    UmbraQuads, UmbraTriangles,
+    UmbraPrepared, UmbraQuads, UmbraTriangles,
 };
 
 /// The peers, in table order (`cells` below indexes them).
@@ -65,6 +65,7 @@ fn child(args: &[String]) {
     let runs: usize = args[2].parse().expect("runs");
     match peer {
         "umbra-tri" => child_run(&UmbraTriangles, size, runs),
+        "umbra-tri-prepared" => child_run(&UmbraPrepared, size, runs),
         "umbra-poly" => child_run(&UmbraPolygons, size, runs),
         "umbra-quads" => child_run(&UmbraQuads, size, runs),
         "manifold-rust" => child_run(&ManifoldRust, size, runs),

@@ -4,7 +4,8 @@
 use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
 use crate::contacts::Contacts;
 use crate::level3::{
-    level3 as level3_fast, level3_brute, level3_with_contacts, Level3Data, Winding,
+    level3 as level3_fast, level3_broad, level3_brute, level3_with_contacts, Broad, Level3Data,
+    Winding,
 };
 use crate::merge::Merged;
 use crate::mesh::Flat;
@@ -136,7 +137,10 @@ fn flat_polygon(m: &PolygonMesh, operand: Operand) -> Result<Flat<'_>, Boolean3E
 }
 
 /// Validates a triangle mesh operand and builds its flat form.
-fn flat_triangles(m: &TriangleMesh, operand: Operand) -> Result<Flat<'_>, Boolean3Error> {
+pub(crate) fn flat_triangles(
+    m: &TriangleMesh,
+    operand: Operand,
+) -> Result<Flat<'_>, Boolean3Error> {
     if m.triangles.len() >= (u32::MAX / 3) as usize {
         return Err(Boolean3Error::TooLarge {
             what: "input triangles",
@@ -163,16 +167,21 @@ fn flat_pair<'a, M: Sync>(
 /// when asked for and the contacts when asked for.
 type Run = (Retained, Level3Data, Option<Audit>, Option<Contacts>);
 
-/// Levels 3-5 on two validated operands, and with `Some(proximity)` the
-/// operands' [`Contacts`] at that distance.
+/// Levels 3-5 on two validated operands (on their broad phases when
+/// given), and with `Some(proximity)` the operands' [`Contacts`] at that
+/// distance.
 fn run(
     a: &Flat<'_>,
     b: &Flat<'_>,
+    broad: Option<[&Broad; 2]>,
     op: BooleanOp,
     audit: bool,
     proximity: Option<f64>,
 ) -> Result<Run, Boolean3Error> {
-    let (l3, near) = level3_with_contacts(a, b, Winding::Propagate, proximity)?;
+    let (l3, near) = match broad {
+        Some([ba, bb]) => level3_broad(a, b, ba, bb, Winding::Propagate, proximity)?,
+        None => level3_with_contacts(a, b, Winding::Propagate, proximity)?,
+    };
     let contacts = near
         .zip(proximity)
         .map(|(near, p)| crate::contacts::contacts(a, b, &near, p));
@@ -400,7 +409,7 @@ pub fn boolean_mesh_audit(
 /// The 3D Boolean builds union, intersection and difference; a half-edge
 /// has no multiplicity, so the doubled intersection curves of `Xor`
 /// (`c_I = -2`) cannot be represented and it is refused before any work.
-fn supported(op: BooleanOp) -> Result<(), Boolean3Error> {
+pub(crate) fn supported(op: BooleanOp) -> Result<(), Boolean3Error> {
     if op == BooleanOp::Xor {
         return Err(Boolean3Error::UnsupportedOperation(op));
     }
@@ -419,7 +428,7 @@ fn boolean_mesh_impl(
     par::on_pool(larger, || {
         let smaller = a.facets.len().min(b.facets.len());
         let (fa, fb) = flat_pair(a, b, smaller, flat_polygon)?;
-        let (r, l3, audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
+        let (r, l3, audit, contacts) = run(&fa, &fb, None, op, audit, proximity)?;
         let intersections = l3.x12.len() + l3.x21.len();
         // The operands' flat arrays and the level data are no longer
         // needed: free them before the output is assembled, to lower the
@@ -500,42 +509,58 @@ fn boolean_triangles_impl(
         };
         let (ma, mb) = par::join(smaller, || Merged::new(ta), || Merged::new(tb));
         let ((ma, fa), (mb, fb)) = (ma.map_err(internal)?, mb.map_err(internal)?);
-        let (r, l3, mut audit, contacts) = run(&fa, &fb, op, audit, proximity)?;
-        let intersections = l3.x12.len() + l3.x21.len();
-        drop(l3);
-        let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
-        let mesh = to_triangle_mesh(
-            r,
-            [
-                Source {
-                    triangles: &a.triangles,
-                    pos: &a.vertices,
-                    merged: &ma,
-                    facets: &fa,
-                    sigma: 1,
-                },
-                Source {
-                    triangles: &b.triangles,
-                    pos: &b.vertices,
-                    merged: &mb,
-                    facets: &fb,
-                    sigma: sigma_b,
-                },
-            ],
-        );
-        if let Some(au) = audit.as_mut() {
-            // Theorem 4 on the polygon result the Boolean built, then shape
-            // boundary closure of its triangulation.
-            if au.shape_closure.is_ok() {
-                au.shape_closure = mesh.check_topology();
-            }
-        }
-        let out = TriangleOutput {
-            mesh,
-            intersections,
-        };
-        Ok((out, audit, contacts))
+        triangle_result([(a, &ma, &fa), (b, &mb, &fb)], None, op, audit, proximity)
     })
+}
+
+/// One operand of the triangle variant after the coplanar merge: the
+/// input mesh, the merge and the merged facets' flat form.
+pub(crate) type MergedOperand<'r, 'm> = (&'r TriangleMesh, &'r Merged, &'r Flat<'m>);
+
+/// Levels 3-6 of the triangle variant on two merged operands (on their
+/// broad phases when given) and the re-triangulation of the result.
+pub(crate) fn triangle_result(
+    [(a, ma, fa), (b, mb, fb)]: [MergedOperand<'_, '_>; 2],
+    broad: Option<[&Broad; 2]>,
+    op: BooleanOp,
+    audit: bool,
+    proximity: Option<f64>,
+) -> Result<(TriangleOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
+    let (r, l3, mut audit, contacts) = run(fa, fb, broad, op, audit, proximity)?;
+    let intersections = l3.x12.len() + l3.x21.len();
+    drop(l3);
+    let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
+    let mesh = to_triangle_mesh(
+        r,
+        [
+            Source {
+                triangles: &a.triangles,
+                pos: &a.vertices,
+                merged: ma,
+                facets: fa,
+                sigma: 1,
+            },
+            Source {
+                triangles: &b.triangles,
+                pos: &b.vertices,
+                merged: mb,
+                facets: fb,
+                sigma: sigma_b,
+            },
+        ],
+    );
+    if let Some(au) = audit.as_mut() {
+        // Theorem 4 on the polygon result the Boolean built, then shape
+        // boundary closure of its triangulation.
+        if au.shape_closure.is_ok() {
+            au.shape_closure = mesh.check_topology();
+        }
+    }
+    let out = TriangleOutput {
+        mesh,
+        intersections,
+    };
+    Ok((out, audit, contacts))
 }
 
 /// The level-3 data of two polygon meshes by the fast path (broad phase,

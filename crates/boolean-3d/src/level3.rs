@@ -598,6 +598,38 @@ const SCAN_AGAINST: usize = 32;
 /// The facets of A and of B near the other operand (sorted).
 pub(crate) type NearFacets = [Vec<u32>; 2];
 
+/// One operand's broad phase: its facet boxes, widened in y and z by the
+/// margin of the coordinate bound it was built for, and their hierarchy.
+pub(crate) struct Broad {
+    /// The power-of-two bound of the coordinates of both operands of the
+    /// Boolean the boxes were built for.
+    pub bound: f64,
+    pub boxes: Vec<Aabb>,
+    pub bvh: Bvh,
+}
+
+/// The power-of-two bound of an operand's largest coordinate magnitude.
+pub(crate) fn coordinate_bound(m: &Flat<'_>) -> f64 {
+    power_of_two_bound(max_abs(m.pos))
+}
+
+impl Broad {
+    /// The broad phase of `m` for a Boolean whose operands' coordinates
+    /// are bounded by `bound`, against an operand of `other_facets`
+    /// facets (a scan instead of a hierarchy against a few, see `bvh`).
+    pub(crate) fn new(m: &Flat<'_>, bound: f64, other_facets: usize) -> Broad {
+        // Facet boxes widened by the margin in y and z once, here: every
+        // overlap test of the Boolean involves one facet box.
+        let boxes = m.facet_boxes(4.0 * UNIT_ROUNDOFF * bound);
+        let bvh = if other_facets <= SCAN_AGAINST && boxes.len() > other_facets {
+            Bvh::scan(&boxes)
+        } else {
+            Bvh::new(&boxes)
+        };
+        Broad { bound, boxes, bvh }
+    }
+}
+
 /// [`level3`], and with `Some(proximity)` also the facets of each operand
 /// that come within `proximity` of a facet of the other
 /// ([`crate::contacts`]), found by the same hierarchies.
@@ -607,39 +639,42 @@ pub(crate) fn level3_with_contacts(
     winding: Winding,
     proximity: Option<f64>,
 ) -> Result<(Level3Data, Option<NearFacets>), Boolean3Error> {
-    let l = power_of_two_bound(max_abs(a.pos).max(max_abs(b.pos)));
-    let margin = 4.0 * UNIT_ROUNDOFF * l;
-    // Facet boxes widened by the margin in y and z once, here: every
-    // overlap test below involves one facet box.
+    let bound = coordinate_bound(a).max(coordinate_bound(b));
     let smaller = a.facet_count().min(b.facet_count());
-    let (boxes_a, boxes_b) = par::join(smaller, || a.facet_boxes(margin), || b.facet_boxes(margin));
-    // Against an operand of a few facets, the other's boxes are scanned
-    // rather than put in a hierarchy (see `bvh`).
-    let hierarchy = |boxes: &[Aabb], other_facets: usize| {
-        if other_facets <= SCAN_AGAINST && boxes.len() > other_facets {
-            Bvh::scan(boxes)
-        } else {
-            Bvh::new(boxes)
-        }
-    };
-    let (bvh_a, bvh_b) = par::join(
+    let (broad_a, broad_b) = par::join(
         smaller,
-        || hierarchy(&boxes_a, b.facet_count()),
-        || hierarchy(&boxes_b, a.facet_count()),
+        || Broad::new(a, bound, b.facet_count()),
+        || Broad::new(b, bound, a.facet_count()),
     );
+    level3_broad(a, b, &broad_a, &broad_b, winding, proximity)
+}
+
+/// [`level3_with_contacts`] on broad phases built for both operands'
+/// coordinate bound (the same boxes whatever else they were built with,
+/// so the same level data: a hierarchy and a scan report the same pairs).
+pub(crate) fn level3_broad(
+    a: &Flat<'_>,
+    b: &Flat<'_>,
+    broad_a: &Broad,
+    broad_b: &Broad,
+    winding: Winding,
+    proximity: Option<f64>,
+) -> Result<(Level3Data, Option<NearFacets>), Boolean3Error> {
+    let (boxes_a, bvh_a) = (&broad_a.boxes, &broad_a.bvh);
+    let (boxes_b, bvh_b) = (&broad_b.boxes, &broad_b.bvh);
     // Overlapping facet pairs; with a proximity, the pairs within it (a
     // superset: `candidates` tests every edge box against the other facet
     // box, so the extra pairs add no candidate and change nothing), from
     // which the contacts come.
     let fpairs = match proximity {
-        Some(p) => bvh_a.pairs_within(&boxes_a, &bvh_b, &boxes_b, crate::contacts::margin(p)),
-        None => bvh_a.pairs(&boxes_a, &bvh_b, &boxes_b),
+        Some(p) => bvh_a.pairs_within(boxes_a, bvh_b, boxes_b, crate::contacts::margin(p)),
+        None => bvh_a.pairs(boxes_a, bvh_b, boxes_b),
     };
     let contacts = proximity.map(|p| crate::contacts::near_facets(a, b, &fpairs, p));
     let (c12, c21) = par::join(
         fpairs.len(),
-        || candidates(&fpairs, a, &boxes_b, Side::EdgesOfA),
-        || candidates(&fpairs, b, &boxes_a, Side::EdgesOfB),
+        || candidates(&fpairs, a, boxes_b, Side::EdgesOfA),
+        || candidates(&fpairs, b, boxes_a, Side::EdgesOfB),
     );
     // Each temporary list is freed as soon as the next one is built: they
     // are the largest arrays of the Boolean, and would otherwise all stay
@@ -656,8 +691,8 @@ pub(crate) fn level3_with_contacts(
         drop((c12, c21));
         counts
     };
-    let cast03 = |v: &Point3| x03_cast(v, b, &bvh_b, &boxes_b);
-    let cast30 = |v: &Point3| x30_cast(a, v, &bvh_a, &boxes_a);
+    let cast03 = |v: &Point3| x03_cast(v, b, bvh_b, boxes_b);
+    let cast30 = |v: &Point3| x30_cast(a, v, bvh_a, boxes_a);
     let (x03, x30, casts) = match winding {
         Winding::Propagate => {
             let (r03, r30) = par::join(

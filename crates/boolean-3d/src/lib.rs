@@ -65,6 +65,7 @@ mod level3;
 mod merge;
 mod mesh;
 mod par;
+mod prepared;
 mod retriangulate;
 
 pub use api::{
@@ -77,5 +78,6 @@ pub use construct::{CompositeKind, CompositeRecord, FacetSource};
 pub use contacts::Contacts;
 pub use error::Boolean3Error;
 pub use level3::{EdgeFacetHit, Level3Data};
+pub use prepared::{boolean_prepared, PreparedTriangles};
 pub use topology::{triangulate_facet, triangulate_mesh};
 pub use topology::{BooleanOp, Operand};

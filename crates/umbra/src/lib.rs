@@ -17,7 +17,9 @@
 //!   [`simplify`] by a [`FillRule`], [`boolean_via_simplify`],
 //!   [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
 //! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
-//!   (triangle meshes), [`triangulate_mesh`], and [`boolean_solid`], which
+//!   (triangle meshes; [`PreparedTriangles`] and [`boolean_prepared`] to
+//!   validate and index an operand once for many Booleans),
+//!   [`triangulate_mesh`], and [`boolean_solid`], which
 //!   runs either [`MeshVariant`] on any valid operands; n-ary in one call,
 //!   as a balanced parallel tree: [`boolean_solids`], [`union_all_solids`]
 //!   and [`difference_all_solids`].
@@ -96,8 +98,9 @@ mod smoothing;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
 pub use boolean_3d::{
-    boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
-    triangulate_mesh, Boolean3Error, Contacts, MeshOutput, TriangleOutput,
+    boolean_mesh, boolean_mesh_with_contacts, boolean_prepared, boolean_triangles,
+    boolean_triangles_with_contacts, triangulate_mesh, Boolean3Error, Contacts, MeshOutput,
+    PreparedTriangles, TriangleOutput,
 };
 #[cfg(feature = "io")]
 pub use encode::{encode_mesh, encode_mesh_with, encode_polygon_set, EncodedPolygons};
