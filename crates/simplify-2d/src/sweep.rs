@@ -277,6 +277,52 @@ impl<W: Winding> Emitted<'_, W> {
         }
     }
 
+    /// The output vertices and edges. For [`Output::Boundary`] the kept
+    /// vertices are renumbered in the order of their ids (the order in
+    /// which they were processed, lexicographic but for the backward steps
+    /// of section 7.6.1), which is the order the complete structure gives
+    /// them: the vertices of the structure are then its vertices that a
+    /// kept edge uses, in its order. Linear: no sort, and the positions
+    /// are permuted in place.
+    fn finish(self) -> (Vec<[f64; 2]>, Vec<CellEdge<W>>) {
+        let Emitted {
+            mut edges,
+            mut vertices,
+            out_id,
+            keep,
+            ..
+        } = self;
+        if keep.is_none() {
+            return (vertices, edges);
+        }
+        // The rank of every kept vertex among the kept ones, by id.
+        let mut rank = vec![NO_ID; vertices.len()];
+        let mut next = 0u32;
+        for &v in &out_id {
+            if let Some(r) = rank.get_mut(v as usize) {
+                *r = next;
+                next += 1;
+            }
+        }
+        drop(out_id);
+        let at = |v: u32| rank.get(v as usize).copied().unwrap_or(NO_ID);
+        for e in &mut edges {
+            (e.start, e.end) = (at(e.start), at(e.end));
+        }
+        // Move the position at `i` to `rank[i]`, following the cycles.
+        for i in 0..rank.len() {
+            loop {
+                let j = rank[i] as usize;
+                if j == i || j >= rank.len() {
+                    break;
+                }
+                vertices.swap(i, j);
+                rank.swap(i, j);
+            }
+        }
+        (vertices, edges)
+    }
+
     /// Sends a finished sweep-line edge (from `l` to the vertex `end` at
     /// `p`) to the output edges; it leaves the sweep line.
     fn emit(&mut self, e: &SweepEdge<W>, end: u32, p: Pt, k: u32) {
@@ -412,9 +458,9 @@ fn sweep<W: Winding>(
             // has more edges than the input).
             edges: Vec::with_capacity(if record { n * 3 } else { n }),
             id_to_edge: Vec::with_capacity(log_cap(n * 3)),
-            // Every processed point, or the ends of the kept edges (about
-            // one per edge of a closed boundary).
-            vertices: Vec::with_capacity(if record { n * 2 } else { n }),
+            // Every processed point, or the ends of the kept edges (on an
+            // n-gon union, every input point and one crossing per edge).
+            vertices: Vec::with_capacity(n * 2),
             out_id: Vec::with_capacity(if record { 0 } else { n * 2 }),
             keep,
             k_max: 0,
@@ -502,11 +548,13 @@ fn sweep<W: Winding>(
         ));
     }
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
+    let k_max = s.out.k_max;
+    let (vertices, edges) = s.out.finish();
     Ok(CellStructure::new(
-        s.out.vertices,
-        s.out.edges,
+        vertices,
+        edges,
         record.then_some((s.fans, fan_edges)),
-        s.out.k_max,
+        k_max,
         max_abs,
         dims,
         s.stats,
@@ -1119,12 +1167,31 @@ mod tests {
     /// shortest round-trip form, so equal text is equal bits); `None` when
     /// the input is not valid (the public entry points reject it first).
     fn cells_text(rings: &[Vec<[f64; 2]>], join: bool) -> Option<String> {
+        let set = valid_set(rings)?;
+        let cells = run_on(&set, Output::All, join);
+        if let Ok(c) = &cells {
+            assert!(c.check_cells().is_ok(), "{:?}", c.check_cells());
+        }
+        Some(format!("{cells:?}"))
+    }
+
+    /// The rings as a polygon set, `None` when it is not valid input.
+    fn valid_set(rings: &[Vec<[f64; 2]>]) -> Option<PolygonSet2> {
         let mut set = PolygonSet2::new();
         for r in rings {
             set.add_loop(r);
         }
         set.validate_coordinates().ok()?;
         set.check_topology().ok()?;
+        Some(set)
+    }
+
+    /// The sweep on a valid set, keeping what `output` says.
+    fn run_on(
+        set: &PolygonSet2,
+        output: Output<'_, i32>,
+        join: bool,
+    ) -> Result<CellStructure<i32>, SimplifyError> {
         let v = set.vertices();
         let input = set
             .edges()
@@ -1138,11 +1205,76 @@ mod tests {
                 origin: i as u32,
             });
         let max_abs = set.max_abs_coordinate();
-        let cells = run_with(input, set.edge_count(), 1, max_abs, Output::All, join);
-        if let Ok(c) = &cells {
-            assert!(c.check_cells().is_ok(), "{:?}", c.check_cells());
+        run_with(input, set.edge_count(), 1, max_abs, output, join)
+    }
+
+    /// For every fill rule, the structure the sweep keeps for a
+    /// simplification ([`Output::Boundary`]) is the complete structure
+    /// restricted to the edges the rule selects: those edges in the same
+    /// order with every field equal, on the vertices they use, numbered in
+    /// the complete structure's order (so that the shape is assembled
+    /// exactly as from the complete structure), with the same `k_max` and
+    /// counters. Returns whether the rings were valid input.
+    fn boundary_is_the_complete_structure_restricted(rings: &[Vec<[f64; 2]>]) -> bool {
+        use crate::FillRule;
+        let Some(set) = valid_set(rings) else {
+            return false;
+        };
+        let all = run_on(&set, Output::All, true);
+        for rule in [
+            FillRule::Positive,
+            FillRule::NonZero,
+            FillRule::EvenOdd,
+            FillRule::Negative,
+            FillRule::AtLeast2,
+        ] {
+            let keep = |w: &i32| rule.contains(*w);
+            let kept = run_on(&set, Output::Boundary(&keep), true);
+            let (all, kept) = match (&all, kept) {
+                (Ok(a), Ok(k)) => (a, k),
+                (a, k) => {
+                    assert_eq!(format!("{a:?}"), format!("{k:?}"));
+                    continue;
+                }
+            };
+            let edges: Vec<&CellEdge<i32>> = all
+                .edges()
+                .iter()
+                .filter(|e| e.start != e.end && keep(&e.left) != keep(&e.right))
+                .collect();
+            let mut rank = vec![NO_ID; all.vertices().len()];
+            for e in &edges {
+                rank[e.start as usize] = 0;
+                rank[e.end as usize] = 0;
+            }
+            let mut vertices = Vec::new();
+            for (i, r) in rank.iter_mut().enumerate() {
+                if *r == 0 {
+                    *r = vertices.len() as u32;
+                    vertices.push(all.vertices()[i]);
+                }
+            }
+            let edges: Vec<CellEdge<i32>> = edges
+                .into_iter()
+                .map(|e| CellEdge {
+                    start: rank[e.start as usize],
+                    end: rank[e.end as usize],
+                    ..e.clone()
+                })
+                .collect();
+            let bits = |v: &[[f64; 2]]| -> Vec<[u64; 2]> {
+                v.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect()
+            };
+            assert_eq!(bits(kept.vertices()), bits(&vertices), "{rule:?}");
+            assert_eq!(kept.edges(), &edges[..], "{rule:?}");
+            assert_eq!(kept.k_max(), all.k_max());
+            assert_eq!(kept.stats(), all.stats());
+            assert_eq!(
+                format!("{:?}", kept.shape_with(keep)),
+                format!("{:?}", all.shape_with(keep))
+            );
         }
-        Some(format!("{cells:?}"))
+        true
     }
 
     /// The same comparison on seeded cases, checking that they do
@@ -1184,6 +1316,38 @@ mod tests {
         );
     }
 
+    /// The restriction on seeded cases of the three kinds of
+    /// [`joined_crossings_decide_alike_on_seeded_cases`], with many
+    /// crossings.
+    #[test]
+    fn boundary_output_is_the_restriction_on_seeded_cases() {
+        let mut g = test_support::rng::Xorshift64::new(0xB0DA_55E1_7E57_0001);
+        let mut valid = 0;
+        for case in 0..150 {
+            let n_rings = 1 + g.below(3) as usize;
+            let rings: Vec<Vec<[f64; 2]>> = (0..n_rings)
+                .map(|_| {
+                    let n = 3 + g.below(40) as usize;
+                    (0..n)
+                        .map(|_| match case % 3 {
+                            0 => [g.below(7) as f64 - 3.0, g.below(7) as f64 - 3.0],
+                            1 => [
+                                g.below(1 << 20) as f64 * 1e-6,
+                                g.below(1 << 20) as f64 * 1e-6,
+                            ],
+                            _ => [
+                                (g.below(1000) as f64).sqrt() * 1e9,
+                                (g.below(1000) as f64).ln_1p() * 1e9,
+                            ],
+                        })
+                        .collect()
+                })
+                .collect();
+            valid += usize::from(boundary_is_the_complete_structure_restricted(&rings));
+        }
+        assert!(valid > 100, "{valid} valid");
+    }
+
     fn rings(coord: BoxedStrategy<f64>) -> impl Strategy<Value = Vec<Vec<[f64; 2]>>> {
         prop::collection::vec(prop::collection::vec([coord.clone(), coord], 3..24), 1..4)
     }
@@ -1209,6 +1373,23 @@ mod tests {
         #[test]
         fn joined_crossings_decide_alike_on_garbage(r in rings(garbage_coord())) {
             prop_assert_eq!(cells_text(&r, true), cells_text(&r, false));
+        }
+
+        /// [`boundary_is_the_complete_structure_restricted`] on grid
+        /// (degenerate), random and garbage coordinates.
+        #[test]
+        fn boundary_output_is_the_restriction_on_grids(r in rings(grid_coord(3))) {
+            boundary_is_the_complete_structure_restricted(&r);
+        }
+
+        #[test]
+        fn boundary_output_is_the_restriction_on_floats(r in rings(float_coord())) {
+            boundary_is_the_complete_structure_restricted(&r);
+        }
+
+        #[test]
+        fn boundary_output_is_the_restriction_on_garbage(r in rings(garbage_coord())) {
+            boundary_is_the_complete_structure_restricted(&r);
         }
     }
 }

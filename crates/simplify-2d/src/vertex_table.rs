@@ -312,7 +312,10 @@ mod tests {
             assert!(t.late.keys().all(|q| q.x == column));
         }
         assert_eq!(t.processed as usize, ids.len());
-        assert!(late > 100 && columns > 1000, "{late} late, {columns} columns");
+        assert!(
+            late > 100 && columns > 1000,
+            "{late} late, {columns} columns"
+        );
     }
 
     /// A look-up or an event behind the current column is recorded.
