@@ -87,6 +87,11 @@ pub struct CellStructure<W> {
     /// The rotations around the vertices (the fans, and the edges they
     /// list), when the sweep recorded them.
     rotations: Option<(Vec<Fan<W>>, Vec<u32>)>,
+    /// For a structure kept only for its shape (the sweep's
+    /// `Output::Boundary`, never handed to a caller): the selected edges,
+    /// keyed as [`CellStructure::selected`] gives them, in place of
+    /// `edges` (empty then), 12 bytes an edge instead of a [`CellEdge`].
+    boundary: Option<Keyed>,
     k_max: u32,
     alpha: f64,
     dims: usize,
@@ -99,6 +104,7 @@ impl<W: Winding> CellStructure<W> {
         vertices: Vec<[f64; 2]>,
         edges: Vec<CellEdge<W>>,
         rotations: Option<(Vec<Fan<W>>, Vec<u32>)>,
+        boundary: Option<Keyed>,
         k_max: u32,
         max_abs: f64,
         dims: usize,
@@ -108,6 +114,7 @@ impl<W: Winding> CellStructure<W> {
             vertices,
             edges,
             rotations,
+            boundary,
             k_max,
             alpha: intersection_error_bound(max_abs),
             dims,
@@ -258,21 +265,35 @@ impl<W: Winding> CellStructure<W> {
     /// the vertical edges of each x are merged by 1D simplification (section
     /// 7.6.1). The result always satisfies shape boundary closure.
     pub fn shape_with(&self, keep: impl Fn(&W) -> bool) -> PolygonSet2 {
-        shape_of(&self.vertices, self.selected(keep))
+        let sel = match &self.boundary {
+            Some(b) => b.clone(),
+            None => self.selected(keep),
+        };
+        shape_of(&self.vertices, sel)
+    }
+
+    /// The selected edges of a structure kept only for its shape.
+    #[cfg(test)]
+    pub(crate) fn boundary(&self) -> Option<&Keyed> {
+        self.boundary.as_ref()
     }
 
     /// [`CellStructure::shape_with`], consuming the structure: its edges
     /// are freed once the boundary is selected, which lowers the heap peak
     /// of a simplification by their size (a third on large outputs).
     pub(crate) fn into_shape_with(self, keep: impl Fn(&W) -> bool) -> PolygonSet2 {
-        let sel = self.selected(keep);
         // Fields left out of a pattern would live to the end of the scope.
         let CellStructure {
             vertices,
             edges,
             rotations,
+            boundary,
             ..
         } = self;
+        let sel = match boundary {
+            Some(b) => b,
+            None => selected(&vertices, &edges, keep),
+        };
         drop(edges);
         drop(rotations);
         shape_of(&vertices, sel)
@@ -280,34 +301,44 @@ impl<W: Winding> CellStructure<W> {
 
     /// The edges separating a retained cell from a discarded one, keyed as
     /// in the edge collection of section 7.1.2 on vertex ids.
-    fn selected(&self, keep: impl Fn(&W) -> bool) -> Vec<(u32, u32, i32)> {
-        let v = &self.vertices;
-        let nv = v.len() as u32;
-        let pt = |i: u32| Pt::new(v[i as usize]);
-        // The edge collection of section 7.1.2 on vertex ids: every edge is
-        // keyed by its lexicographically ordered end points (distinct ids are
-        // distinct points), multiplicity negated for right-to-left edges.
-        let mut sel: Vec<(u32, u32, i32)> = Vec::with_capacity(self.edges.len());
-        for e in &self.edges {
-            if e.start == e.end || e.start >= nv || e.end >= nv {
-                continue;
-            }
-            let (l, r) = (keep(&e.left), keep(&e.right));
-            let (a, b) = if l && !r {
-                (e.start, e.end)
-            } else if r && !l {
-                (e.end, e.start)
-            } else {
-                continue;
-            };
-            if pt(a) < pt(b) {
-                sel.push((a, b, 1));
-            } else {
-                sel.push((b, a, -1));
-            }
-        }
-        sel
+    pub(crate) fn selected(&self, keep: impl Fn(&W) -> bool) -> Keyed {
+        selected(&self.vertices, &self.edges, keep)
     }
+}
+
+/// Keyed edges `(l, r, m)` on vertex ids: `l` precedes `r`
+/// lexicographically, `m` the multiplicity in the direction `l -> r`.
+pub(crate) type Keyed = Vec<(u32, u32, i32)>;
+
+/// The edges of `edges` separating a cell `keep` accepts from one it
+/// rejects, keyed as in the edge collection of section 7.1.2 on the ids of
+/// the vertices `v`.
+fn selected<W>(v: &[[f64; 2]], edges: &[CellEdge<W>], keep: impl Fn(&W) -> bool) -> Keyed {
+    let nv = v.len() as u32;
+    let pt = |i: u32| Pt::new(v[i as usize]);
+    // The edge collection of section 7.1.2 on vertex ids: every edge is
+    // keyed by its lexicographically ordered end points (distinct ids are
+    // distinct points), multiplicity negated for right-to-left edges.
+    let mut sel: Vec<(u32, u32, i32)> = Vec::with_capacity(edges.len());
+    for e in edges {
+        if e.start == e.end || e.start >= nv || e.end >= nv {
+            continue;
+        }
+        let (l, r) = (keep(&e.left), keep(&e.right));
+        let (a, b) = if l && !r {
+            (e.start, e.end)
+        } else if r && !l {
+            (e.end, e.start)
+        } else {
+            continue;
+        };
+        if pt(a) < pt(b) {
+            sel.push((a, b, 1));
+        } else {
+            sel.push((b, a, -1));
+        }
+    }
+    sel
 }
 
 /// The shape bounded by the selected keyed edges `sel` on the vertices

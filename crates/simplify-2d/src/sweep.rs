@@ -35,7 +35,7 @@
 //! bounds its memory by the result instead of the arrangement.
 
 use crate::buffer_heap::{BufferHeap, Entry};
-use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
+use crate::cells::{CellEdge, CellStructure, Fan, Keyed, SweepStats};
 use crate::end_points::{EndPoints, Slot};
 use crate::point::Pt;
 use crate::sweep_line::SweepLine;
@@ -236,7 +236,12 @@ pub(crate) enum Output<'k, W> {
 /// largest adjustment count of every edge sent, kept or not (section 8.4:
 /// the bound covers the whole arrangement, as when every edge is kept).
 struct Emitted<'k, W> {
+    /// Every edge ([`Output::All`]).
     edges: Vec<CellEdge<W>>,
+    /// The kept edges ([`Output::Boundary`]), directed with the accepted
+    /// cell on their left and keyed as [`CellStructure::selected`] keys
+    /// them (all that the shape needs).
+    sel: Keyed,
     /// The output vertices: every processed point by id ([`Output::All`]),
     /// or the ends of the kept edges ([`Output::Boundary`]).
     vertices: Vec<[f64; 2]>,
@@ -284,16 +289,18 @@ impl<W: Winding> Emitted<'_, W> {
     /// them: the vertices of the structure are then its vertices that a
     /// kept edge uses, in its order. Linear: no sort, and the positions
     /// are permuted in place.
-    fn finish(self) -> (Vec<[f64; 2]>, Vec<CellEdge<W>>) {
+    #[allow(clippy::type_complexity)]
+    fn finish(self) -> (Vec<[f64; 2]>, Vec<CellEdge<W>>, Option<Keyed>) {
         let Emitted {
-            mut edges,
+            edges,
+            mut sel,
             mut vertices,
             out_id,
             keep,
             ..
         } = self;
         if keep.is_none() {
-            return (vertices, edges);
+            return (vertices, edges, None);
         }
         // The rank of every kept vertex among the kept ones, by id.
         let mut rank = vec![NO_ID; vertices.len()];
@@ -306,8 +313,8 @@ impl<W: Winding> Emitted<'_, W> {
         }
         drop(out_id);
         let at = |v: u32| rank.get(v as usize).copied().unwrap_or(NO_ID);
-        for e in &mut edges {
-            (e.start, e.end) = (at(e.start), at(e.end));
+        for e in &mut sel {
+            (e.0, e.1) = (at(e.0), at(e.1));
         }
         // Move the position at `i` to `rank[i]`, following the cycles.
         for i in 0..rank.len() {
@@ -320,7 +327,7 @@ impl<W: Winding> Emitted<'_, W> {
                 rank.swap(i, j);
             }
         }
-        (vertices, edges)
+        (vertices, edges, Some(sel))
     }
 
     /// Sends a finished sweep-line edge (from `l` to the vertex `end` at
@@ -331,11 +338,23 @@ impl<W: Winding> Emitted<'_, W> {
         let mut left = e.below.clone();
         left.add_assign(&e.m);
         if let Some(keep) = self.keep {
-            if start == end || keep(&left) == keep(&e.below) {
+            let accepted = keep(&left);
+            if start == end || accepted == keep(&e.below) {
                 return;
             }
+            // Directed with the accepted cell on the left, keyed by the
+            // lexicographic order of the ends (distinct ids are distinct
+            // points), as `CellStructure::selected` keys it.
+            let (a, b) = if accepted {
+                ((start, e.l), (end, p))
+            } else {
+                ((end, p), (start, e.l))
+            };
+            let (ia, ib) = (self.vertex(a.0, a.1), self.vertex(b.0, b.1));
+            self.sel
+                .push(if a.1 < b.1 { (ia, ib, 1) } else { (ib, ia, -1) });
+            return;
         }
-        let (start, end) = (self.vertex(start, e.l), self.vertex(end, p));
         let idx = self.edges.len() as u32;
         self.edges.push(CellEdge {
             start,
@@ -456,7 +475,8 @@ fn sweep<W: Winding>(
             // two edges), so that the largest output vector rarely moves.
             // The boundary: the input's size (it grows when the result
             // has more edges than the input).
-            edges: Vec::with_capacity(if record { n * 3 } else { n }),
+            edges: Vec::with_capacity(if record { n * 3 } else { 0 }),
+            sel: Vec::with_capacity(if record { 0 } else { n }),
             id_to_edge: Vec::with_capacity(log_cap(n * 3)),
             // Every processed point, or the ends of the kept edges (on an
             // n-gon union, every input point and one crossing per edge).
@@ -549,11 +569,12 @@ fn sweep<W: Winding>(
     }
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
     let k_max = s.out.k_max;
-    let (vertices, edges) = s.out.finish();
+    let (vertices, edges, boundary) = s.out.finish();
     Ok(CellStructure::new(
         vertices,
         edges,
         record.then_some((s.fans, fan_edges)),
+        boundary,
         k_max,
         max_abs,
         dims,
@@ -1211,10 +1232,11 @@ mod tests {
     /// For every fill rule, the structure the sweep keeps for a
     /// simplification ([`Output::Boundary`]) is the complete structure
     /// restricted to the edges the rule selects: those edges in the same
-    /// order with every field equal, on the vertices they use, numbered in
-    /// the complete structure's order (so that the shape is assembled
-    /// exactly as from the complete structure), with the same `k_max` and
-    /// counters. Returns whether the rings were valid input.
+    /// order, keyed as [`CellStructure::selected`] keys them, on the
+    /// vertices they use, numbered in the complete structure's order (so
+    /// that the shape is assembled exactly as from the complete
+    /// structure), with the same `k_max` and counters. Returns whether the
+    /// rings were valid input.
     fn boundary_is_the_complete_structure_restricted(rings: &[Vec<[f64; 2]>]) -> bool {
         use crate::FillRule;
         let Some(set) = valid_set(rings) else {
@@ -1254,19 +1276,30 @@ mod tests {
                     vertices.push(all.vertices()[i]);
                 }
             }
-            let edges: Vec<CellEdge<i32>> = edges
+            // Keyed as `CellStructure::selected` keys them.
+            let keyed: Keyed = edges
                 .into_iter()
-                .map(|e| CellEdge {
-                    start: rank[e.start as usize],
-                    end: rank[e.end as usize],
-                    ..e.clone()
+                .map(|e| {
+                    let (a, b) = if keep(&e.left) {
+                        (e.start, e.end)
+                    } else {
+                        (e.end, e.start)
+                    };
+                    let (pa, pb) = (all.vertices()[a as usize], all.vertices()[b as usize]);
+                    let (a, b) = (rank[a as usize], rank[b as usize]);
+                    if Pt::new(pa) < Pt::new(pb) {
+                        (a, b, 1)
+                    } else {
+                        (b, a, -1)
+                    }
                 })
                 .collect();
             let bits = |v: &[[f64; 2]]| -> Vec<[u64; 2]> {
                 v.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect()
             };
             assert_eq!(bits(kept.vertices()), bits(&vertices), "{rule:?}");
-            assert_eq!(kept.edges(), &edges[..], "{rule:?}");
+            assert!(kept.edges().is_empty());
+            assert_eq!(kept.boundary(), Some(&keyed), "{rule:?}");
             assert_eq!(kept.k_max(), all.k_max());
             assert_eq!(kept.stats(), all.stats());
             assert_eq!(
