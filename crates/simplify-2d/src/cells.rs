@@ -605,17 +605,35 @@ pub(crate) fn sort_unstable<T: Ord + Send>(v: &mut [T]) {
     }
 }
 
-/// Sorts `v` by a comparison, stably, in parallel when it is long.
-pub(crate) fn sort_stable_by<T: Send>(
+/// Sorts `v` by a comparison, in place (no buffer, unlike a stable
+/// sort), in parallel when it is long. Only used with a total order or
+/// where equal elements are indistinguishable, so the result does not
+/// depend on the threads.
+pub(crate) fn sort_unstable_by<T: Send>(
     v: &mut [T],
     cmp: impl Fn(&T, &T) -> std::cmp::Ordering + Sync,
 ) {
     if v.len() >= PARALLEL_SORT_MIN {
-        v.par_sort_by(cmp);
+        v.par_sort_unstable_by(cmp);
     } else {
-        v.sort_by(cmp);
+        v.sort_unstable_by(cmp);
     }
 }
+
+/// Gives back the memory of the consumed end of `v`, a vector read from
+/// its end: once an eighth of its capacity is unused, it shrinks to its
+/// length (in place: the allocator shrinks a block without moving it), so
+/// that what the sweep has passed no longer counts towards its peak.
+#[inline]
+pub(crate) fn release_consumed<T>(v: &mut Vec<T>) {
+    let cap = v.capacity();
+    if cap >= RELEASE_MIN && v.len() <= cap - cap / 8 {
+        v.shrink_to_fit();
+    }
+}
+
+/// Vectors shorter than this are not shrunk as they are consumed.
+const RELEASE_MIN: usize = 1024;
 
 #[cfg(test)]
 mod tests {

@@ -183,9 +183,10 @@ struct NewEdge<W> {
 
 struct Sweep<'k, W: Winding> {
     dims: usize,
-    /// The input edges, merged (section 7.1.2) and sorted by `(l, r)`.
+    /// The input edges not reached yet, merged (section 7.1.2) and sorted
+    /// by `(l, r)` in reverse: the next one last, the memory of those
+    /// taken given back as the sweep goes.
     input: Vec<Pending<W>>,
-    next_input: usize,
     /// Buffer edges (section 7.4.1), by left point.
     buffer: BufferHeap,
     /// The buffer edges by slot, and the free slots.
@@ -437,28 +438,33 @@ fn sweep<W: Winding>(
         Output::Boundary(keep) => (false, Some(keep)),
     };
     let log_cap = |c: usize| if record { c } else { 0 };
-    // Sorted by key; identical edges stay in input order (a stable sort),
-    // as the collection would have merged them one at a time. The stable
-    // merge sort gives the order of an unstable sort with the position as
-    // the tie-break, faster (1.0 against 1.5 ms on the checkerboards of
-    // the simplification table).
-    crate::cells::sort_stable_by(&mut keyed, |a, b| a.l.cmp(&b.l).then_with(|| a.r.cmp(&b.r)));
+    // Sorted by key; identical edges stay in input order (the position
+    // `seq` breaks ties), as the collection would have merged them one at
+    // a time: the order of a stable sort, sorted in place (a stable sort's
+    // buffer would double the input's memory at the sweep's start).
+    crate::cells::sort_unstable_by(&mut keyed, |a, b| {
+        a.l.cmp(&b.l)
+            .then_with(|| a.r.cmp(&b.r))
+            .then(a.seq.cmp(&b.seq))
+    });
     merge_identical(&mut keyed);
     // Input edges precede every buffer edge at their left point.
     for e in &mut keyed {
         e.seq = 0;
     }
     let mut merged = keyed;
-    let ends = EndPoints::new(merged.iter().map(|e| e.r));
+    let mut ends = EndPoints::new(merged.iter().map(|e| e.r));
     for (i, slot) in ends.input_slots() {
         if let Some(e) = merged.get_mut(i) {
             e.rslot = slot;
         }
     }
+    ends.start();
+    // Consumed from the end, shrinking as the sweep passes it.
+    merged.reverse();
     let mut s = Sweep {
         dims,
         input: merged,
-        next_input: 0,
         buffer: BufferHeap::default(),
         slab: Vec::new(),
         links: Vec::new(),
@@ -662,7 +668,7 @@ impl<W: Winding> Sweep<'_, W> {
 
     /// The smallest left point of a pending edge.
     fn first_pending(&self) -> Option<Pt> {
-        let a = self.input.get(self.next_input).map(|e| e.l);
+        let a = self.input.last().map(|e| e.l);
         let b = self.buffer.peek_key().map(Pt::from_sort_key);
         match (a, b) {
             (Some(a), Some(b)) => Some(a.min(b)),
@@ -677,22 +683,13 @@ impl<W: Winding> Sweep<'_, W> {
     /// `p` in the counting slots the buffer edges cover (`end_points.rs`),
     /// and whether any buffer edge started at `p`.
     fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> (u32, bool) {
-        while let Some(e) = self.input.get_mut(self.next_input) {
-            if e.l != p {
-                break;
+        // Input edges are already merged; move them out (the last ones
+        // of the reversed list, taken in key order).
+        if self.input.last().is_some_and(|e| e.l == p) {
+            while self.input.last().is_some_and(|e| e.l == p) {
+                out.extend(self.input.pop());
             }
-            // Input edges are already merged; move one out.
-            let z = W::zero(self.dims);
-            out.push(Pending {
-                l: e.l,
-                r: e.r,
-                seq: 0,
-                m: std::mem::replace(&mut e.m, z),
-                k: e.k,
-                origin: e.origin,
-                rslot: e.rslot,
-            });
-            self.next_input += 1;
+            crate::cells::release_consumed(&mut self.input);
         }
         let key = p.sort_key();
         let mut ending = 0;
