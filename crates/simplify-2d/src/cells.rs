@@ -605,18 +605,55 @@ pub(crate) fn sort_unstable<T: Ord + Send>(v: &mut [T]) {
     }
 }
 
-/// Sorts `v` by a comparison, in place (no buffer, unlike a stable
-/// sort), in parallel when it is long. Only used with a total order or
-/// where equal elements are indistinguishable, so the result does not
-/// depend on the threads.
-pub(crate) fn sort_unstable_by<T: Send>(
+/// Sorts `v` by a comparison, stably, in parallel when it is long.
+pub(crate) fn sort_stable_by<T: Send>(
     v: &mut [T],
     cmp: impl Fn(&T, &T) -> std::cmp::Ordering + Sync,
 ) {
     if v.len() >= PARALLEL_SORT_MIN {
-        v.par_sort_unstable_by(cmp);
+        v.par_sort_by(cmp);
     } else {
-        v.sort_unstable_by(cmp);
+        v.sort_by(cmp);
+    }
+}
+
+/// The positions `0..n` in the order of a stable sort by `cmp` on
+/// positions. Sorting 4-byte positions instead of the items keeps the
+/// merge sort's buffer small (the sweep's 56-byte input records sorted
+/// stably needed a buffer as large as the input, which set the memory
+/// peak of a simplification with few crossings: 164 against 141 MiB on
+/// the 1M-vertex n-gon union), while the merge sort still follows the
+/// sorted runs of the input (the rings of a polygon), which an unstable
+/// sort in place does not (8% more instructions on the 100k-vertex n-gon
+/// union). Positions are `u32`, as the sweep's provenance.
+pub(crate) fn stable_order(
+    n: usize,
+    cmp: impl Fn(usize, usize) -> std::cmp::Ordering + Sync,
+) -> Vec<u32> {
+    let mut order: Vec<u32> = (0..n as u32).collect();
+    sort_stable_by(&mut order, |&a, &b| cmp(a as usize, b as usize));
+    order
+}
+
+/// Reorders `v` so that its item `j` is the former item `order[j]`
+/// (`order` a permutation of the positions of `v`), in place, following
+/// the cycles of the permutation.
+pub(crate) fn permute<T>(v: &mut [T], mut order: Vec<u32>) {
+    const DONE: u32 = u32::MAX;
+    for start in 0..order.len().min(v.len()) {
+        if order[start] == DONE {
+            continue;
+        }
+        let mut cur = start;
+        loop {
+            let src = order[cur] as usize;
+            order[cur] = DONE;
+            if src == start || src >= v.len() {
+                break;
+            }
+            v.swap(cur, src);
+            cur = src;
+        }
     }
 }
 
@@ -641,6 +678,36 @@ mod tests {
     use crate::collection::elementary_intervals;
     use std::collections::BTreeMap;
     use test_support::rng::Xorshift64;
+
+    /// `stable_order` and `permute` give the order of a stable sort, on
+    /// keys with many ties and runs, on every length around the parallel
+    /// threshold.
+    #[test]
+    fn permuting_by_the_stable_order_is_a_stable_sort() {
+        let mut g = Xorshift64::new(0x0DDB_A11_5EED);
+        for n in [0, 1, 2, 3, 10, 1000, PARALLEL_SORT_MIN + 7] {
+            for range in [2, 50, u64::MAX] {
+                // Keys with runs: ascending stretches between random jumps.
+                let mut key = 0u64;
+                let items: Vec<(u64, usize)> = (0..n)
+                    .map(|i| {
+                        key = if g.below(8) == 0 {
+                            g.below(range)
+                        } else {
+                            key.saturating_add(g.below(2))
+                        };
+                        (key % range.max(1), i)
+                    })
+                    .collect();
+                let mut expected = items.clone();
+                expected.sort_by_key(|e| e.0);
+                let mut v = items.clone();
+                let order = stable_order(v.len(), |a, b| items[a].0.cmp(&items[b].0));
+                permute(&mut v, order);
+                assert_eq!(v, expected, "n {n} range {range}");
+            }
+        }
+    }
 
     /// Keyed edges `(l, r, m)` on ranks, as `shape_with` builds them.
     type Keyed = Vec<(u32, u32, i32)>;

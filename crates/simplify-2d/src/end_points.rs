@@ -69,18 +69,20 @@ pub(crate) struct EndPoints {
 }
 
 impl EndPoints {
-    /// The queue for input edges with the given right points (in any
-    /// order, repeats allowed).
-    pub(crate) fn new(rights: impl ExactSizeIterator<Item = Pt>) -> Self {
-        // One sort of (point, position) pairs gives the points in order
-        // and, through the runs of equal points, every position's slot;
-        // the order within a run does not matter, so the sort is done in
-        // place (a stable sort's buffer would add as much memory again).
-        let mut input: Vec<(SortKey, u32)> = rights
-            .enumerate()
-            .map(|(i, r)| (r.sort_key(), i as u32))
+    /// The queue for `n` input edges whose right points `right(i)` are
+    /// given by position (in any order, repeats allowed).
+    pub(crate) fn new(n: usize, right: impl Fn(usize) -> Pt + Sync) -> Self {
+        // One sort gives the points in order and, through the runs of
+        // equal points, every position's slot; the order within a run does
+        // not matter. The positions are sorted (a stable merge sort: it
+        // follows the input's sorted runs) rather than (point, position)
+        // pairs, so that its buffer is small.
+        let order =
+            crate::cells::stable_order(n, |a, b| right(a).sort_key().cmp(&right(b).sort_key()));
+        let input: Vec<(SortKey, u32)> = order
+            .into_iter()
+            .map(|i| (right(i as usize).sort_key(), i))
             .collect();
-        crate::cells::sort_unstable_by(&mut input, |a, b| a.0.cmp(&b.0));
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
@@ -234,7 +236,7 @@ mod tests {
             let input: Vec<Pt> = (0..200)
                 .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
                 .collect();
-            let mut e = EndPoints::new(input.iter().copied());
+            let mut e = EndPoints::new(input.len(), |i| input[i]);
             let mut input_slots = vec![Slot::MAX; input.len()];
             for (i, slot) in e.input_slots() {
                 input_slots[i] = slot;

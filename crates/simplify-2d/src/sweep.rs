@@ -374,7 +374,7 @@ impl<W: Winding> Emitted<'_, W> {
 
 /// Runs the sweep on the given edges (about `n` of them) and returns the
 /// cell structure.
-pub(crate) fn run<W: Winding>(
+pub(crate) fn run<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
     dims: usize,
@@ -386,7 +386,7 @@ pub(crate) fn run<W: Winding>(
 
 /// [`run`], joining the right parts of a crossing in the buffer heap or
 /// not (`join`; the tests compare both).
-fn run_with<W: Winding>(
+fn run_with<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
     dims: usize,
@@ -425,7 +425,7 @@ fn run_with<W: Winding>(
 /// The sweep proper, on the keyed input edges (in input order, `seq` the
 /// position) of `n` input edges. Not generic over the input's source, so
 /// that one copy serves every entry point.
-fn sweep<W: Winding>(
+fn sweep<W: Winding + Sync>(
     mut keyed: Vec<Pending<W>>,
     n: usize,
     dims: usize,
@@ -438,22 +438,24 @@ fn sweep<W: Winding>(
         Output::Boundary(keep) => (false, Some(keep)),
     };
     let log_cap = |c: usize| if record { c } else { 0 };
-    // Sorted by key; identical edges stay in input order (the position
-    // `seq` breaks ties), as the collection would have merged them one at
-    // a time: the order of a stable sort, sorted in place (a stable sort's
-    // buffer would double the input's memory at the sweep's start).
-    crate::cells::sort_unstable_by(&mut keyed, |a, b| {
-        a.l.cmp(&b.l)
-            .then_with(|| a.r.cmp(&b.r))
-            .then(a.seq.cmp(&b.seq))
+    // Sorted by key; identical edges stay in input order (a stable sort),
+    // as the collection would have merged them one at a time. The stable
+    // merge sort gives the order of an unstable sort with the position as
+    // the tie-break, faster (1.0 against 1.5 ms on the checkerboards of
+    // the simplification table). It sorts positions, and the edges are
+    // moved once into place (`cells::stable_order`: a small buffer).
+    let order = crate::cells::stable_order(keyed.len(), |a, b| {
+        let (a, b) = (&keyed[a], &keyed[b]);
+        a.l.cmp(&b.l).then_with(|| a.r.cmp(&b.r))
     });
+    crate::cells::permute(&mut keyed, order);
     merge_identical(&mut keyed);
     // Input edges precede every buffer edge at their left point.
     for e in &mut keyed {
         e.seq = 0;
     }
     let mut merged = keyed;
-    let mut ends = EndPoints::new(merged.iter().map(|e| e.r));
+    let mut ends = EndPoints::new(merged.len(), |i| merged[i].r);
     for (i, slot) in ends.input_slots() {
         if let Some(e) = merged.get_mut(i) {
             e.rslot = slot;
