@@ -53,10 +53,11 @@ pub(crate) type Slot = u32;
 #[derive(Debug, Default)]
 pub(crate) struct EndPoints {
     /// The right points of the input edges (as [`Pt::sort_key`]) with the
-    /// positions they were given in, sorted by point; those before `next`
-    /// have been passed. The first of a run of equal points is its slot.
+    /// positions they were given in, sorted by point (the first of a run
+    /// of equal points is its slot); from [`EndPoints::start`] on, with
+    /// their slots instead, in reverse, the points not passed yet, the next
+    /// one last, the memory of those passed given back as the sweep goes.
     input: Vec<(SortKey, u32)>,
-    next: usize,
     /// Right points not covered by `input` or the pending edges, with
     /// their slots.
     extra: BinaryHeap<Reverse<(SortKey, Slot)>>,
@@ -68,18 +69,20 @@ pub(crate) struct EndPoints {
 }
 
 impl EndPoints {
-    /// The queue for input edges with the given right points (in any
-    /// order, repeats allowed).
-    pub(crate) fn new(rights: impl ExactSizeIterator<Item = Pt>) -> Self {
-        // One sort of (point, position) pairs gives the points in order
-        // and, through the runs of equal points, every position's slot;
-        // the order within a run does not matter (the stable merge sort
-        // measured a little faster than the unstable one on long inputs).
-        let mut input: Vec<(SortKey, u32)> = rights
-            .enumerate()
-            .map(|(i, r)| (r.sort_key(), i as u32))
+    /// The queue for `n` input edges whose right points `right(i)` are
+    /// given by position (in any order, repeats allowed).
+    pub(crate) fn new(n: usize, right: impl Fn(usize) -> Pt + Sync) -> Self {
+        // One sort gives the points in order and, through the runs of
+        // equal points, every position's slot; the order within a run does
+        // not matter. The positions are sorted (a stable merge sort: it
+        // follows the input's sorted runs) rather than (point, position)
+        // pairs, so that its buffer is small.
+        let order =
+            crate::cells::stable_order(n, |a, b| right(a).sort_key().cmp(&right(b).sort_key()));
+        let input: Vec<(SortKey, u32)> = order
+            .into_iter()
+            .map(|i| (right(i as usize).sort_key(), i))
             .collect();
-        crate::cells::sort_stable_by(&mut input, |a, b| a.0.cmp(&b.0));
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
@@ -103,6 +106,21 @@ impl EndPoints {
         })
     }
 
+    /// Turns the positions of the input points into their slots and
+    /// reverses the list, so that it is consumed from its end and shrinks
+    /// as the sweep passes it; after [`EndPoints::input_slots`], before the
+    /// sweep.
+    pub(crate) fn start(&mut self) {
+        let mut first = 0;
+        for j in 0..self.input.len() {
+            if self.input[first].0 != self.input[j].0 {
+                first = j;
+            }
+            self.input[j].1 = first as Slot;
+        }
+        self.input.reverse();
+    }
+
     /// A new slot, for a point at which an edge was split.
     pub(crate) fn new_slot(&mut self) -> Slot {
         self.count.push(0);
@@ -112,7 +130,7 @@ impl EndPoints {
     /// The smallest candidate event point not passed yet.
     #[inline]
     pub(crate) fn candidate(&self) -> Option<Pt> {
-        let a = self.input.get(self.next).map(|e| e.0);
+        let a = self.input.last().map(|e| e.0);
         let b = self.extra.peek().map(|r| r.0 .0);
         match (a, b) {
             (Some(a), Some(b)) => Some(Pt::from_sort_key(a.min(b))),
@@ -131,11 +149,13 @@ impl EndPoints {
         let key = p.sort_key();
         let mut n = 0;
         let mut extra = false;
-        if self.input.get(self.next).is_some_and(|e| e.0 == key) {
-            n += self.take(self.next as Slot);
-            self.next += 1;
-            while self.input.get(self.next).is_some_and(|e| e.0 == key) {
-                self.next += 1;
+        if let Some(&(k, slot)) = self.input.last() {
+            if k == key {
+                n += self.take(slot);
+                while self.input.last().is_some_and(|e| e.0 == key) {
+                    self.input.pop();
+                }
+                crate::cells::release_consumed(&mut self.input);
             }
         }
         while let Some(&Reverse((k, slot))) = self.extra.peek() {
@@ -216,11 +236,12 @@ mod tests {
             let input: Vec<Pt> = (0..200)
                 .map(|_| Pt::new([rnd(40) as f64, rnd(5) as f64 * 0.5]))
                 .collect();
-            let mut e = EndPoints::new(input.iter().copied());
+            let mut e = EndPoints::new(input.len(), |i| input[i]);
             let mut input_slots = vec![Slot::MAX; input.len()];
             for (i, slot) in e.input_slots() {
                 input_slots[i] = slot;
             }
+            e.start();
             // Equal input points share a slot.
             for (i, p) in input.iter().enumerate() {
                 for (j, q) in input.iter().enumerate() {

@@ -35,7 +35,7 @@
 //! bounds its memory by the result instead of the arrangement.
 
 use crate::buffer_heap::{BufferHeap, Entry};
-use crate::cells::{CellEdge, CellStructure, Fan, SweepStats};
+use crate::cells::{CellEdge, CellStructure, Fan, Keyed, SweepStats};
 use crate::end_points::{EndPoints, Slot};
 use crate::point::Pt;
 use crate::sweep_line::SweepLine;
@@ -183,9 +183,10 @@ struct NewEdge<W> {
 
 struct Sweep<'k, W: Winding> {
     dims: usize,
-    /// The input edges, merged (section 7.1.2) and sorted by `(l, r)`.
+    /// The input edges not reached yet, merged (section 7.1.2) and sorted
+    /// by `(l, r)` in reverse: the next one last, the memory of those
+    /// taken given back as the sweep goes.
     input: Vec<Pending<W>>,
-    next_input: usize,
     /// Buffer edges (section 7.4.1), by left point.
     buffer: BufferHeap,
     /// The buffer edges by slot, and the free slots.
@@ -236,7 +237,19 @@ pub(crate) enum Output<'k, W> {
 /// largest adjustment count of every edge sent, kept or not (section 8.4:
 /// the bound covers the whole arrangement, as when every edge is kept).
 struct Emitted<'k, W> {
+    /// Every edge ([`Output::All`]).
     edges: Vec<CellEdge<W>>,
+    /// The kept edges ([`Output::Boundary`]), directed with the accepted
+    /// cell on their left and keyed as [`CellStructure::selected`] keys
+    /// them (all that the shape needs).
+    sel: Keyed,
+    /// The output vertices: every processed point by id ([`Output::All`]),
+    /// or the ends of the kept edges ([`Output::Boundary`]).
+    vertices: Vec<[f64; 2]>,
+    /// For [`Output::Boundary`], the output vertex of each processed point
+    /// (by id), `NO_ID` until a kept edge uses it: 4 bytes a point instead
+    /// of the 16 of its position.
+    out_id: Vec<u32>,
     /// The output edge of each sweep-line edge id, while recording.
     id_to_edge: Vec<u32>,
     keep: Option<&'k dyn Fn(&W) -> bool>,
@@ -244,17 +257,104 @@ struct Emitted<'k, W> {
 }
 
 impl<W: Winding> Emitted<'_, W> {
-    /// Sends a finished sweep-line edge (from `l` to the vertex `end`) to
-    /// the output edges; it leaves the sweep line.
-    fn emit(&mut self, e: &SweepEdge<W>, end: u32, k: u32) {
+    /// Notes a newly processed point `p`, whose id is the next one.
+    fn add_point(&mut self, p: Pt) {
+        if self.keep.is_none() {
+            self.vertices.push(p.arr());
+        } else {
+            self.out_id.push(NO_ID);
+        }
+    }
+
+    /// The output vertex of the processed point with id `id` at `p`.
+    fn vertex(&mut self, id: u32, p: Pt) -> u32 {
+        if self.keep.is_none() {
+            return id;
+        }
+        match self.out_id.get_mut(id as usize) {
+            Some(v) => {
+                if *v == NO_ID {
+                    *v = self.vertices.len() as u32;
+                    self.vertices.push(p.arr());
+                }
+                *v
+            }
+            None => NO_ID,
+        }
+    }
+
+    /// The output vertices and edges. For [`Output::Boundary`] the kept
+    /// vertices are renumbered in the order of their ids (the order in
+    /// which they were processed, lexicographic but for the backward steps
+    /// of section 7.6.1), which is the order the complete structure gives
+    /// them: the vertices of the structure are then its vertices that a
+    /// kept edge uses, in its order. Linear: no sort, and the positions
+    /// are permuted in place.
+    #[allow(clippy::type_complexity)]
+    fn finish(self) -> (Vec<[f64; 2]>, Vec<CellEdge<W>>, Option<Keyed>) {
+        let Emitted {
+            edges,
+            mut sel,
+            mut vertices,
+            out_id,
+            keep,
+            ..
+        } = self;
+        if keep.is_none() {
+            return (vertices, edges, None);
+        }
+        // The rank of every kept vertex among the kept ones, by id.
+        let mut rank = vec![NO_ID; vertices.len()];
+        let mut next = 0u32;
+        for &v in &out_id {
+            if let Some(r) = rank.get_mut(v as usize) {
+                *r = next;
+                next += 1;
+            }
+        }
+        drop(out_id);
+        let at = |v: u32| rank.get(v as usize).copied().unwrap_or(NO_ID);
+        for e in &mut sel {
+            (e.0, e.1) = (at(e.0), at(e.1));
+        }
+        // Move the position at `i` to `rank[i]`, following the cycles.
+        for i in 0..rank.len() {
+            loop {
+                let j = rank[i] as usize;
+                if j == i || j >= rank.len() {
+                    break;
+                }
+                vertices.swap(i, j);
+                rank.swap(i, j);
+            }
+        }
+        (vertices, edges, Some(sel))
+    }
+
+    /// Sends a finished sweep-line edge (from `l` to the vertex `end` at
+    /// `p`) to the output edges; it leaves the sweep line.
+    fn emit(&mut self, e: &SweepEdge<W>, end: u32, p: Pt, k: u32) {
         self.k_max = self.k_max.max(k);
         let start = e.lid;
         let mut left = e.below.clone();
         left.add_assign(&e.m);
         if let Some(keep) = self.keep {
-            if start == end || keep(&left) == keep(&e.below) {
+            let accepted = keep(&left);
+            if start == end || accepted == keep(&e.below) {
                 return;
             }
+            // Directed with the accepted cell on the left, keyed by the
+            // lexicographic order of the ends (distinct ids are distinct
+            // points), as `CellStructure::selected` keys it.
+            let (a, b) = if accepted {
+                ((start, e.l), (end, p))
+            } else {
+                ((end, p), (start, e.l))
+            };
+            let (ia, ib) = (self.vertex(a.0, a.1), self.vertex(b.0, b.1));
+            self.sel
+                .push(if a.1 < b.1 { (ia, ib, 1) } else { (ib, ia, -1) });
+            return;
         }
         let idx = self.edges.len() as u32;
         self.edges.push(CellEdge {
@@ -274,7 +374,7 @@ impl<W: Winding> Emitted<'_, W> {
 
 /// Runs the sweep on the given edges (about `n` of them) and returns the
 /// cell structure.
-pub(crate) fn run<W: Winding>(
+pub(crate) fn run<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
     dims: usize,
@@ -286,7 +386,7 @@ pub(crate) fn run<W: Winding>(
 
 /// [`run`], joining the right parts of a crossing in the buffer heap or
 /// not (`join`; the tests compare both).
-fn run_with<W: Winding>(
+fn run_with<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
     dims: usize,
@@ -325,7 +425,7 @@ fn run_with<W: Winding>(
 /// The sweep proper, on the keyed input edges (in input order, `seq` the
 /// position) of `n` input edges. Not generic over the input's source, so
 /// that one copy serves every entry point.
-fn sweep<W: Winding>(
+fn sweep<W: Winding + Sync>(
     mut keyed: Vec<Pending<W>>,
     n: usize,
     dims: usize,
@@ -342,24 +442,31 @@ fn sweep<W: Winding>(
     // as the collection would have merged them one at a time. The stable
     // merge sort gives the order of an unstable sort with the position as
     // the tie-break, faster (1.0 against 1.5 ms on the checkerboards of
-    // the simplification table).
-    crate::cells::sort_stable_by(&mut keyed, |a, b| a.l.cmp(&b.l).then_with(|| a.r.cmp(&b.r)));
+    // the simplification table). It sorts positions, and the edges are
+    // moved once into place (`cells::stable_order`: a small buffer).
+    let order = crate::cells::stable_order(keyed.len(), |a, b| {
+        let (a, b) = (&keyed[a], &keyed[b]);
+        a.l.cmp(&b.l).then_with(|| a.r.cmp(&b.r))
+    });
+    crate::cells::permute(&mut keyed, order);
     merge_identical(&mut keyed);
     // Input edges precede every buffer edge at their left point.
     for e in &mut keyed {
         e.seq = 0;
     }
     let mut merged = keyed;
-    let ends = EndPoints::new(merged.iter().map(|e| e.r));
+    let mut ends = EndPoints::new(merged.len(), |i| merged[i].r);
     for (i, slot) in ends.input_slots() {
         if let Some(e) = merged.get_mut(i) {
             e.rslot = slot;
         }
     }
+    ends.start();
+    // Consumed from the end, shrinking as the sweep passes it.
+    merged.reverse();
     let mut s = Sweep {
         dims,
         input: merged,
-        next_input: 0,
         buffer: BufferHeap::default(),
         slab: Vec::new(),
         links: Vec::new(),
@@ -367,7 +474,7 @@ fn sweep<W: Winding>(
         next_seq: 1,
         line: SweepLine::default(),
         ends,
-        points: VertexTable::with_capacity(n * 2),
+        points: VertexTable::default(),
         scratch_block: Vec::new(),
         scratch_new: Vec::new(),
         scratch_pending: Vec::new(),
@@ -376,8 +483,13 @@ fn sweep<W: Winding>(
             // two edges), so that the largest output vector rarely moves.
             // The boundary: the input's size (it grows when the result
             // has more edges than the input).
-            edges: Vec::with_capacity(if record { n * 3 } else { n }),
+            edges: Vec::with_capacity(if record { n * 3 } else { 0 }),
+            sel: Vec::with_capacity(if record { 0 } else { n }),
             id_to_edge: Vec::with_capacity(log_cap(n * 3)),
+            // Every processed point, or the ends of the kept edges (on an
+            // n-gon union, every input point and one crossing per edge).
+            vertices: Vec::with_capacity(n * 2),
+            out_id: Vec::with_capacity(if record { 0 } else { n * 2 }),
             keep,
             k_max: 0,
         },
@@ -458,12 +570,20 @@ fn sweep<W: Winding>(
         }
         *slot = e;
     }
+    if s.points.behind() {
+        return Err(SimplifyError::Internal(
+            "a point behind the sweep line was looked up".into(),
+        ));
+    }
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
+    let k_max = s.out.k_max;
+    let (vertices, edges, boundary) = s.out.finish();
     Ok(CellStructure::new(
-        s.points.vertices,
-        s.out.edges,
+        vertices,
+        edges,
         record.then_some((s.fans, fan_edges)),
-        s.out.k_max,
+        boundary,
+        k_max,
         max_abs,
         dims,
         s.stats,
@@ -550,7 +670,7 @@ impl<W: Winding> Sweep<'_, W> {
 
     /// The smallest left point of a pending edge.
     fn first_pending(&self) -> Option<Pt> {
-        let a = self.input.get(self.next_input).map(|e| e.l);
+        let a = self.input.last().map(|e| e.l);
         let b = self.buffer.peek_key().map(Pt::from_sort_key);
         match (a, b) {
             (Some(a), Some(b)) => Some(a.min(b)),
@@ -565,22 +685,13 @@ impl<W: Winding> Sweep<'_, W> {
     /// `p` in the counting slots the buffer edges cover (`end_points.rs`),
     /// and whether any buffer edge started at `p`.
     fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> (u32, bool) {
-        while let Some(e) = self.input.get_mut(self.next_input) {
-            if e.l != p {
-                break;
+        // Input edges are already merged; move them out (the last ones
+        // of the reversed list, taken in key order).
+        if self.input.last().is_some_and(|e| e.l == p) {
+            while self.input.last().is_some_and(|e| e.l == p) {
+                out.extend(self.input.pop());
             }
-            // Input edges are already merged; move one out.
-            let z = W::zero(self.dims);
-            out.push(Pending {
-                l: e.l,
-                r: e.r,
-                seq: 0,
-                m: std::mem::replace(&mut e.m, z),
-                k: e.k,
-                origin: e.origin,
-                rslot: e.rslot,
-            });
-            self.next_input += 1;
+            crate::cells::release_consumed(&mut self.input);
         }
         let key = p.sort_key();
         let mut ending = 0;
@@ -615,7 +726,7 @@ impl<W: Winding> Sweep<'_, W> {
         n
     }
 
-    fn vertex_k(&self, p: Pt) -> u32 {
+    fn vertex_k(&mut self, p: Pt) -> u32 {
         self.points.k(p)
     }
 
@@ -734,7 +845,10 @@ impl<W: Winding> Sweep<'_, W> {
         pending: &mut Vec<Pending<W>>,
     ) -> Result<(), SimplifyError> {
         self.x_s = p.x;
-        let (vid, k_p) = self.points.process(p, split_point);
+        let (vid, k_p, new) = self.points.process(p, split_point);
+        if new {
+            self.out.add_point(p);
+        }
         let (lo, hi) = self.find_group(p, expected)?;
         let w_lo = if lo > 0 {
             match self.line.get(lo - 1) {
@@ -771,7 +885,7 @@ impl<W: Winding> Sweep<'_, W> {
                 fan_ids.push(e.id);
             }
             if e.r == p {
-                out.emit(e, vid, e.k);
+                out.emit(e, vid, p, e.k);
             } else {
                 // Passes through p, or misgrouped (section 7.6.2): split at p.
                 match Self::classify(e, p) {
@@ -779,7 +893,7 @@ impl<W: Winding> Sweep<'_, W> {
                     Class::Under | Class::Over => stats.misgrouped_splits += 1,
                 }
                 let k = (e.k + 1).max(k_p);
-                out.emit(e, vid, k);
+                out.emit(e, vid, p, k);
                 // Its right part is inserted again below (or merged away).
                 ends.remove(e.rslot);
                 let (vertical, slope) = gradient(e.r);
@@ -1073,12 +1187,31 @@ mod tests {
     /// shortest round-trip form, so equal text is equal bits); `None` when
     /// the input is not valid (the public entry points reject it first).
     fn cells_text(rings: &[Vec<[f64; 2]>], join: bool) -> Option<String> {
+        let set = valid_set(rings)?;
+        let cells = run_on(&set, Output::All, join);
+        if let Ok(c) = &cells {
+            assert!(c.check_cells().is_ok(), "{:?}", c.check_cells());
+        }
+        Some(format!("{cells:?}"))
+    }
+
+    /// The rings as a polygon set, `None` when it is not valid input.
+    fn valid_set(rings: &[Vec<[f64; 2]>]) -> Option<PolygonSet2> {
         let mut set = PolygonSet2::new();
         for r in rings {
             set.add_loop(r);
         }
         set.validate_coordinates().ok()?;
         set.check_topology().ok()?;
+        Some(set)
+    }
+
+    /// The sweep on a valid set, keeping what `output` says.
+    fn run_on(
+        set: &PolygonSet2,
+        output: Output<'_, i32>,
+        join: bool,
+    ) -> Result<CellStructure<i32>, SimplifyError> {
         let v = set.vertices();
         let input = set
             .edges()
@@ -1092,11 +1225,88 @@ mod tests {
                 origin: i as u32,
             });
         let max_abs = set.max_abs_coordinate();
-        let cells = run_with(input, set.edge_count(), 1, max_abs, Output::All, join);
-        if let Ok(c) = &cells {
-            assert!(c.check_cells().is_ok(), "{:?}", c.check_cells());
+        run_with(input, set.edge_count(), 1, max_abs, output, join)
+    }
+
+    /// For every fill rule, the structure the sweep keeps for a
+    /// simplification ([`Output::Boundary`]) is the complete structure
+    /// restricted to the edges the rule selects: those edges in the same
+    /// order, keyed as [`CellStructure::selected`] keys them, on the
+    /// vertices they use, numbered in the complete structure's order (so
+    /// that the shape is assembled exactly as from the complete
+    /// structure), with the same `k_max` and counters. Returns whether the
+    /// rings were valid input.
+    fn boundary_is_the_complete_structure_restricted(rings: &[Vec<[f64; 2]>]) -> bool {
+        use crate::FillRule;
+        let Some(set) = valid_set(rings) else {
+            return false;
+        };
+        let all = run_on(&set, Output::All, true);
+        for rule in [
+            FillRule::Positive,
+            FillRule::NonZero,
+            FillRule::EvenOdd,
+            FillRule::Negative,
+            FillRule::AtLeast2,
+        ] {
+            let keep = |w: &i32| rule.contains(*w);
+            let kept = run_on(&set, Output::Boundary(&keep), true);
+            let (all, kept) = match (&all, kept) {
+                (Ok(a), Ok(k)) => (a, k),
+                (a, k) => {
+                    assert_eq!(format!("{a:?}"), format!("{k:?}"));
+                    continue;
+                }
+            };
+            let edges: Vec<&CellEdge<i32>> = all
+                .edges()
+                .iter()
+                .filter(|e| e.start != e.end && keep(&e.left) != keep(&e.right))
+                .collect();
+            let mut rank = vec![NO_ID; all.vertices().len()];
+            for e in &edges {
+                rank[e.start as usize] = 0;
+                rank[e.end as usize] = 0;
+            }
+            let mut vertices = Vec::new();
+            for (i, r) in rank.iter_mut().enumerate() {
+                if *r == 0 {
+                    *r = vertices.len() as u32;
+                    vertices.push(all.vertices()[i]);
+                }
+            }
+            // Keyed as `CellStructure::selected` keys them.
+            let keyed: Keyed = edges
+                .into_iter()
+                .map(|e| {
+                    let (a, b) = if keep(&e.left) {
+                        (e.start, e.end)
+                    } else {
+                        (e.end, e.start)
+                    };
+                    let (pa, pb) = (all.vertices()[a as usize], all.vertices()[b as usize]);
+                    let (a, b) = (rank[a as usize], rank[b as usize]);
+                    if Pt::new(pa) < Pt::new(pb) {
+                        (a, b, 1)
+                    } else {
+                        (b, a, -1)
+                    }
+                })
+                .collect();
+            let bits = |v: &[[f64; 2]]| -> Vec<[u64; 2]> {
+                v.iter().map(|p| [p[0].to_bits(), p[1].to_bits()]).collect()
+            };
+            assert_eq!(bits(kept.vertices()), bits(&vertices), "{rule:?}");
+            assert!(kept.edges().is_empty());
+            assert_eq!(kept.boundary(), Some(&keyed), "{rule:?}");
+            assert_eq!(kept.k_max(), all.k_max());
+            assert_eq!(kept.stats(), all.stats());
+            assert_eq!(
+                format!("{:?}", kept.shape_with(keep)),
+                format!("{:?}", all.shape_with(keep))
+            );
         }
-        Some(format!("{cells:?}"))
+        true
     }
 
     /// The same comparison on seeded cases, checking that they do
@@ -1138,6 +1348,38 @@ mod tests {
         );
     }
 
+    /// The restriction on seeded cases of the three kinds of
+    /// [`joined_crossings_decide_alike_on_seeded_cases`], with many
+    /// crossings.
+    #[test]
+    fn boundary_output_is_the_restriction_on_seeded_cases() {
+        let mut g = test_support::rng::Xorshift64::new(0xB0DA_55E1_7E57_0001);
+        let mut valid = 0;
+        for case in 0..150 {
+            let n_rings = 1 + g.below(3) as usize;
+            let rings: Vec<Vec<[f64; 2]>> = (0..n_rings)
+                .map(|_| {
+                    let n = 3 + g.below(40) as usize;
+                    (0..n)
+                        .map(|_| match case % 3 {
+                            0 => [g.below(7) as f64 - 3.0, g.below(7) as f64 - 3.0],
+                            1 => [
+                                g.below(1 << 20) as f64 * 1e-6,
+                                g.below(1 << 20) as f64 * 1e-6,
+                            ],
+                            _ => [
+                                (g.below(1000) as f64).sqrt() * 1e9,
+                                (g.below(1000) as f64).ln_1p() * 1e9,
+                            ],
+                        })
+                        .collect()
+                })
+                .collect();
+            valid += usize::from(boundary_is_the_complete_structure_restricted(&rings));
+        }
+        assert!(valid > 100, "{valid} valid");
+    }
+
     fn rings(coord: BoxedStrategy<f64>) -> impl Strategy<Value = Vec<Vec<[f64; 2]>>> {
         prop::collection::vec(prop::collection::vec([coord.clone(), coord], 3..24), 1..4)
     }
@@ -1163,6 +1405,23 @@ mod tests {
         #[test]
         fn joined_crossings_decide_alike_on_garbage(r in rings(garbage_coord())) {
             prop_assert_eq!(cells_text(&r, true), cells_text(&r, false));
+        }
+
+        /// [`boundary_is_the_complete_structure_restricted`] on grid
+        /// (degenerate), random and garbage coordinates.
+        #[test]
+        fn boundary_output_is_the_restriction_on_grids(r in rings(grid_coord(3))) {
+            boundary_is_the_complete_structure_restricted(&r);
+        }
+
+        #[test]
+        fn boundary_output_is_the_restriction_on_floats(r in rings(float_coord())) {
+            boundary_is_the_complete_structure_restricted(&r);
+        }
+
+        #[test]
+        fn boundary_output_is_the_restriction_on_garbage(r in rings(garbage_coord())) {
+            boundary_is_the_complete_structure_restricted(&r);
         }
     }
 }

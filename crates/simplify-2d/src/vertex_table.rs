@@ -1,37 +1,65 @@
-//! The points of the sweep: output vertex ids (assigned when a point is
-//! first processed as an event) and adjustment counts (section 8.4: a
-//! vertex's count is the largest count of the edges created at it).
+//! The points of the sweep: ids (assigned in order when a point is first
+//! processed as an event) and adjustment counts (section 8.4: a vertex's
+//! count is the largest count of the edges created at it).
 //!
 //! Events are processed in lexicographic order except for the rare
 //! backward steps of section 7.6.1, so the table keeps points apart by
 //! state: points not processed yet (few: the computed intersections ahead
 //! of the sweep line) in a short list or, when there are many, a hash map,
-//! processed points in the order
-//! they were processed, found by binary search over those processed beyond
-//! every earlier one and by a second hash map for the others. A point is
-//! looked up among the processed ones only when it does not lie beyond all
-//! of them, which the sweep's order makes rare; the large table of every
-//! vertex is never hashed on the hot path.
+//! and processed points in the order they were processed, found by binary
+//! search over those processed beyond every earlier one and by a second
+//! hash map for the others.
+//!
+//! Only the processed points of the current *column* (the x of the largest
+//! processed point) are kept. The sweep never goes backwards in x (a
+//! crossing is clamped into the x-range right of the sweep line, every
+//! right end of a sweep-line edge lies at or right of it, and the backward
+//! steps of section 7.6.1 stay at one x), so every point it looks up or
+//! processes lies at or right of the column: a point of an earlier column
+//! is never asked for again. The table therefore holds no entry per point
+//! of the arrangement (it held 24 bytes a point, position, count and
+//! order, most of a simplification's memory on a random polygon); the
+//! coordinates of the output vertices are the output's business
+//! (`sweep.rs`). A look-up behind the column would be a bug: it is
+//! recorded ([`VertexTable::behind`]) and the sweep reports it as an
+//! internal error instead of deciding on a forgotten point.
 
 use crate::point::{PointMap, Pt};
 
-/// Vertex ids and adjustment counts by point.
+/// Ids and adjustment counts of the points of the current column and of
+/// the points ahead of the sweep.
 #[derive(Debug, Default)]
 pub(crate) struct VertexTable {
-    /// Output vertices, by id (the order in which they were processed).
-    pub(crate) vertices: Vec<[f64; 2]>,
-    /// Adjustment count by vertex id.
-    k: Vec<u32>,
-    /// Adjustment counts of points not processed yet.
-    ahead: Ahead,
-    /// Ids of the points processed beyond every earlier one: increasing.
-    in_order: Vec<u32>,
-    /// Ids of the other processed points.
-    late: PointMap<u32>,
+    /// The number of points processed: the next id.
+    processed: u32,
+    /// The points of the current column processed beyond every earlier
+    /// one, increasing, with their ids and counts.
+    column: Vec<Done>,
+    /// The other processed points of the current column: id and count.
+    late: PointMap<(u32, u32)>,
     /// The largest processed point.
     max_done: Option<Pt>,
+    /// Adjustment counts of points not processed yet.
+    ahead: Ahead,
+    /// Whether a point behind the current column was looked up or
+    /// processed (never, by the sweep's monotonicity in x).
+    behind: bool,
 }
 
+/// A processed point with its id and adjustment count.
+#[derive(Clone, Copy, Debug)]
+struct Done {
+    p: Pt,
+    id: u32,
+    k: u32,
+}
+
+/// Where a processed point's entry is.
+#[derive(Clone, Copy)]
+enum Found {
+    Column(usize),
+    Late,
+}
 /// The points ahead of the sweep with an adjustment count: a short list
 /// while there are few (the usual case: the crossings just right of the
 /// sweep line), a hash map once there are more than [`AHEAD_LIST_MAX`],
@@ -86,57 +114,67 @@ impl Ahead {
 }
 
 impl VertexTable {
-    /// A table with room for about `n` vertices.
-    pub(crate) fn with_capacity(n: usize) -> Self {
-        VertexTable {
-            vertices: Vec::with_capacity(n),
-            k: Vec::with_capacity(n),
-            in_order: Vec::with_capacity(n),
-            ..VertexTable::default()
-        }
-    }
-
-    /// The id of `q` if it has been processed.
-    fn done_id(&self, q: Pt) -> Option<u32> {
+    /// The processed point `q` of the current column, if it is one. Notes
+    /// a look-up behind the column.
+    fn find(&mut self, q: Pt) -> Option<Found> {
         match self.max_done {
-            Some(m) if q <= m => {}
+            Some(m) if q <= m => {
+                if q.x < m.x {
+                    self.behind = true;
+                    return None;
+                }
+            }
             _ => return None,
         }
-        let v = &self.vertices;
-        let i = self
-            .in_order
-            .partition_point(|&id| Pt::new(v[id as usize]) < q);
-        if let Some(&id) = self.in_order.get(i) {
-            if Pt::new(v[id as usize]) == q {
-                return Some(id);
-            }
+        let i = self.column.partition_point(|d| d.p < q);
+        if self.column.get(i).is_some_and(|d| d.p == q) {
+            return Some(Found::Column(i));
         }
-        self.late.get(&q).copied()
+        self.late.contains_key(&q).then_some(Found::Late)
+    }
+
+    /// The id and count of a found point.
+    fn entry(&mut self, q: Pt, at: Found) -> Option<(u32, &mut u32)> {
+        match at {
+            Found::Column(i) => self.column.get_mut(i).map(|d| (d.id, &mut d.k)),
+            Found::Late => self.late.get_mut(&q).map(|e| (e.0, &mut e.1)),
+        }
     }
 
     /// The adjustment count of point `q` (0 for a point never adjusted).
-    pub(crate) fn k(&self, q: Pt) -> u32 {
-        match self.done_id(q) {
-            Some(id) => self.k[id as usize],
-            None => self.ahead.get(q).unwrap_or(0),
+    pub(crate) fn k(&mut self, q: Pt) -> u32 {
+        if let Some(at) = self.find(q) {
+            if let Some((_, k)) = self.entry(q, at) {
+                return *k;
+            }
         }
+        self.ahead.get(q).unwrap_or(0)
     }
 
     /// The adjustment count of point `q`, to read and raise in one look-up.
     pub(crate) fn k_mut(&mut self, q: Pt) -> &mut u32 {
-        match self.done_id(q) {
-            Some(id) => &mut self.k[id as usize],
+        match self.find(q) {
+            Some(at) => match at {
+                Found::Column(i) => &mut self.column[i].k,
+                Found::Late => match self.late.get_mut(&q) {
+                    Some(e) => &mut e.1,
+                    None => self.ahead.get_or_zero(q),
+                },
+            },
             None => self.ahead.get_or_zero(q),
         }
     }
 
-    /// Processes point `p`: its vertex id (a new one the first time) and
-    /// adjustment count. `adjusted` is `false` when the caller knows that
-    /// `p` was never given a count ahead of the sweep ([`VertexTable::k_mut`]
-    /// on a point not processed yet), which saves the look-up.
-    pub(crate) fn process(&mut self, p: Pt, adjusted: bool) -> (u32, u32) {
-        if let Some(id) = self.done_id(p) {
-            return (id, self.k[id as usize]);
+    /// Processes point `p`: its id (a new one the first time, then `new`
+    /// is `true`) and adjustment count, as `(id, k, new)`. `adjusted` is
+    /// `false` when the caller knows that `p` was never given a count ahead
+    /// of the sweep ([`VertexTable::k_mut`] on a point not processed yet),
+    /// which saves the look-up.
+    pub(crate) fn process(&mut self, p: Pt, adjusted: bool) -> (u32, u32, bool) {
+        if let Some(at) = self.find(p) {
+            if let Some((id, k)) = self.entry(p, at) {
+                return (id, *k, false);
+            }
         }
         debug_assert!(
             adjusted || self.ahead.get(p).is_none(),
@@ -147,16 +185,38 @@ impl VertexTable {
         } else {
             self.ahead.remove(p).unwrap_or(0)
         };
-        let id = self.vertices.len() as u32;
-        self.vertices.push(p.arr());
-        self.k.push(k);
-        if self.max_done.is_none_or(|m| p > m) {
-            self.in_order.push(id);
-            self.max_done = Some(p);
-        } else {
-            self.late.insert(p, id);
+        let id = self.processed;
+        self.processed += 1;
+        match self.max_done {
+            Some(m) if p <= m => {
+                // A backward step (section 7.6.1), within the column.
+                if p.x < m.x {
+                    self.behind = true;
+                }
+                self.late.insert(p, (id, k));
+            }
+            Some(m) if p.x == m.x => {
+                self.column.push(Done { p, id, k });
+                self.max_done = Some(p);
+            }
+            _ => {
+                // A new column: the points of the earlier ones are never
+                // asked for again.
+                self.column.clear();
+                if !self.late.is_empty() {
+                    self.late.clear();
+                }
+                self.column.push(Done { p, id, k });
+                self.max_done = Some(p);
+            }
         }
-        (id, k)
+        (id, k, true)
+    }
+
+    /// Whether a point behind the current column was ever looked up or
+    /// processed (a bug: the sweep never goes backwards in x).
+    pub(crate) fn behind(&self) -> bool {
+        self.behind
     }
 }
 
@@ -206,30 +266,36 @@ mod tests {
         assert!(spilled, "the map was never used");
     }
 
-    /// Random operations, mostly increasing with backward steps and
-    /// repeats, against a plain map.
+    /// Random operations as the sweep makes them (points processed and
+    /// looked up at or right of the current column, with backward steps
+    /// within it and repeats), against plain maps that keep every point:
+    /// ids and counts agree, although the table forgets earlier columns.
     #[test]
     fn matches_a_plain_map() {
         let mut rnd = {
             let mut g = test_support::rng::Xorshift64::new(0x9E37_79B9_7F4A_7C15u64);
             move |n: u64| g.below(n)
         };
-        let mut t = VertexTable::with_capacity(16);
+        let mut t = VertexTable::default();
         let mut ids: HashMap<Pt, u32> = HashMap::new();
         let mut ks: HashMap<Pt, u32> = HashMap::new();
-        let mut x = 0.0;
+        // The x of the largest processed point.
+        let mut column = 0.0f64;
+        let (mut late, mut columns) = (0, 0);
         for _ in 0..20_000 {
-            // The sweep position creeps forward; points near it.
-            if rnd(3) == 0 {
-                x += 1.0;
-            }
-            let p = Pt::new([x - rnd(3) as f64, rnd(4) as f64]);
+            let p = Pt::new([column + rnd(3) as f64 * 0.5, rnd(4) as f64]);
             match rnd(3) {
                 0 => {
-                    let (id, k) = t.process(p, true);
+                    let (id, k, new) = t.process(p, true);
                     let next = ids.len() as u32;
+                    assert_eq!(new, !ids.contains_key(&p));
                     assert_eq!(id, *ids.entry(p).or_insert(next));
                     assert_eq!(k, ks.get(&p).copied().unwrap_or(0));
+                    late += usize::from(new && !t.late.is_empty());
+                    if p.x > column {
+                        columns += 1;
+                        column = p.x;
+                    }
                 }
                 1 => {
                     let k = rnd(7) as u32;
@@ -240,10 +306,32 @@ mod tests {
                 }
                 _ => assert_eq!(t.k(p), ks.get(&p).copied().unwrap_or(0)),
             }
+            assert!(!t.behind());
+            // Only the current column is held.
+            assert!(t.column.iter().all(|d| d.p.x == column));
+            assert!(t.late.keys().all(|q| q.x == column));
         }
-        assert_eq!(t.vertices.len(), ids.len());
-        for (p, &id) in &ids {
-            assert_eq!(Pt::new(t.vertices[id as usize]), *p);
-        }
+        assert_eq!(t.processed as usize, ids.len());
+        assert!(
+            late > 100 && columns > 1000,
+            "{late} late, {columns} columns"
+        );
+    }
+
+    /// A look-up or an event behind the current column is recorded.
+    #[test]
+    fn notes_a_point_behind_the_column() {
+        let mut t = VertexTable::default();
+        t.process(Pt::new([1.0, 0.0]), false);
+        t.process(Pt::new([2.0, 5.0]), false);
+        t.process(Pt::new([2.0, 1.0]), false);
+        assert_eq!(t.k(Pt::new([2.0, 0.0])), 0);
+        assert!(!t.behind());
+        assert_eq!(t.k(Pt::new([1.0, 0.0])), 0);
+        assert!(t.behind());
+        let mut t = VertexTable::default();
+        t.process(Pt::new([2.0, 0.0]), false);
+        t.process(Pt::new([1.0, 0.0]), false);
+        assert!(t.behind());
     }
 }
