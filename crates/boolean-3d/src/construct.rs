@@ -504,8 +504,10 @@ fn retained_facets(
         .with_min_len(par::min_len(CHUNK))
         .map(|piece| {
             let (lo, hi) = (piece * CHUNK, ((piece + 1) * CHUNK).min(n));
-            let mut hes = Vec::new();
-            let mut list = Vec::new();
+            // Room for the piece's facets kept whole, without regrowing;
+            // what is not used is given back below.
+            let mut hes = Vec::with_capacity((mesh.facet_off[hi] - mesh.facet_off[lo]) as usize);
+            let mut list = Vec::with_capacity(hi - lo);
             for f in lo as u32..hi as u32 {
                 let before = hes.len();
                 let touched = touched[f as usize];
@@ -548,6 +550,8 @@ fn retained_facets(
                     list.push((f, (hes.len() - before) as u32));
                 }
             }
+            hes.shrink_to_fit();
+            list.shrink_to_fit();
             (hes, list)
         })
         .collect()

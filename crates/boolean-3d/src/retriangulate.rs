@@ -96,7 +96,8 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             let (operand, hes, list) = &r.chunks[c];
             let k = *operand as usize;
             let (src, map) = (&sources[k], &r.maps[k]);
-            let mut tris = Vec::new();
+            // One triangle per facet in the common case (a triangle kept).
+            let mut tris = Vec::with_capacity(hi - lo);
             let mut scratch = Scratch::default();
             let mut at = start;
             for &(f, n) in &list[lo..hi] {
@@ -107,7 +108,20 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             tris
         })
         .collect();
-    TriangleMesh::new(r.vertices, parts.concat())
+    // The retained facets and vertex maps are freed before the triangles
+    // are gathered into one array.
+    let Retained {
+        vertices,
+        chunks,
+        maps,
+        ..
+    } = r;
+    drop((chunks, maps));
+    let mut triangles = Vec::with_capacity(parts.iter().map(Vec::len).sum());
+    for p in parts {
+        triangles.extend_from_slice(&p);
+    }
+    TriangleMesh::new(vertices, triangles)
 }
 
 #[derive(Default)]
@@ -395,7 +409,7 @@ mod tests {
     fn coord() -> impl Strategy<Value = f64> {
         prop_oneof![
             4 => (-3i32..=3).prop_map(f64::from),
-            4 => (-1.0f64..1.0),
+            4 => -1.0f64..1.0,
             2 => (any::<bool>(), 0u64..(1 << 52), -300i32..=300).prop_map(|(neg, m, e)| {
                 let v = (1.0 + m as f64 / 4_503_599_627_370_496.0) * 2f64.powi(e);
                 if neg { -v } else { v }
