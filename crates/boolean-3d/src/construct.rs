@@ -530,7 +530,11 @@ fn retained_facets(
                                 }
                             }
                         }
-                        None => hes.extend(fast_half_edge(a, b, ia, vid)),
+                        None => {
+                            if let Some(x) = fast_half_edge(a, b, ia, vid) {
+                                hes.push(x);
+                            }
+                        }
                     }
                 }
                 if touched {
