@@ -6,7 +6,9 @@
 //! For a retained facet `F'` of merged facet `F`:
 //!
 //! - `F` of one triangle: [`triangulate_facet`] of `F'` (as before the
-//!   merge existed).
+//!   merge existed); when `F'` is one loop of three vertices (the triangle
+//!   kept, or reversed), the same triangle is computed without the general
+//!   triangulation's allocations (`one_triangle`).
 //! - `F'` is `F` copied (or, for B in a difference, reversed) half-edge by
 //!   half-edge and every vertex of `F`'s triangles is retained with the
 //!   operand's inclusion value: the input triangles, mapped (reversed).
