@@ -13,6 +13,7 @@ use crate::par;
 use crate::retriangulate::{to_triangle_mesh, Source};
 use crate::{Boolean3Error, BooleanOp, Operand};
 use rayon::prelude::*;
+use robust_arith::Point3;
 use std::collections::HashMap;
 use topology::{Facet, HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
 
@@ -323,7 +324,7 @@ fn make_audit(
             closed: bal.values().all(|&v| v == 0),
         });
     }
-    let shape = to_polygon_mesh(r);
+    let shape = to_polygon_mesh(r, r.vertices.clone());
     Ok(Audit {
         level3: l3.clone().with_edges(a, b),
         x03_per_vertex: cast.x03,
@@ -336,7 +337,9 @@ fn make_audit(
     })
 }
 
-fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
+/// The retained facets of `r` as a polygon mesh on `vertices` (the
+/// result's vertices, moved out of `r` when it is no longer needed).
+fn to_polygon_mesh(r: &Retained, vertices: Vec<Point3>) -> PolygonMesh {
     // Chunks in parallel, collected in order.
     let facets = r
         .chunks
@@ -356,7 +359,7 @@ fn to_polygon_mesh(r: &Retained) -> PolygonMesh {
             })
         })
         .collect();
-    PolygonMesh::new(r.vertices.clone(), facets)
+    PolygonMesh::new(vertices, facets)
 }
 
 /// The Boolean `op` of two polygon meshes (the polygon-mesh variant of
@@ -428,15 +431,17 @@ fn boolean_mesh_impl(
     par::on_pool(larger, || {
         let smaller = a.facets.len().min(b.facets.len());
         let (fa, fb) = flat_pair(a, b, smaller, flat_polygon)?;
-        let (r, l3, audit, contacts) = run(&fa, &fb, None, op, audit, proximity)?;
+        let (mut r, l3, audit, contacts) = run(&fa, &fb, None, op, audit, proximity)?;
         let intersections = l3.x12.len() + l3.x21.len();
         // The operands' flat arrays and the level data are no longer
         // needed: free them before the output is assembled, to lower the
         // peak memory.
         drop((fa, fb, l3));
+        let sources = r.facets().map(|(src, _)| src).collect();
+        let vertices = std::mem::take(&mut r.vertices);
         let out = MeshOutput {
-            mesh: to_polygon_mesh(&r),
-            sources: r.facets().map(|(src, _)| src).collect(),
+            mesh: to_polygon_mesh(&r, vertices),
+            sources,
             intersections,
         };
         Ok((out, audit, contacts))

@@ -102,28 +102,67 @@ fn unbalanced(kind: CompositeKind, c: &CompositeEdge3) -> Boolean3Error {
     ))
 }
 
-/// Offsets of the per-edge ranges of hits sorted by edge.
-fn ranges(n_edges: usize, hits: &[crate::EdgeFacetHit]) -> Vec<u32> {
-    let mut off = vec![0u32; n_edges + 1];
-    for h in hits {
-        off[h.edge as usize + 1] += 1;
-    }
-    for i in 0..n_edges {
-        off[i + 1] += off[i];
-    }
-    off
-}
+/// Edges per parallel piece of [`edge_segments`] and facets per piece of
+/// [`retained_facets`].
+const CHUNK: usize = 1024;
 
-/// Segments of every edge of one operand, in compressed rows.
+/// The retained parts of the edges of one operand that do not take the
+/// fast path of [`edge_segments`] (the *slow* edges), in compressed rows.
+/// A fast edge is not stored: [`fast_half_edge`] gives its retained
+/// half-edge from the inclusion values of its ends.
 struct EdgeSegments {
+    /// The slow edges, ascending; empty when `dense`.
+    edge: Vec<u32>,
+    /// Whether every edge is slow (the audit's recording disables the
+    /// fast path): slow edge `i` is edge `i`, found without a search.
+    dense: bool,
+    /// `off[i]..off[i + 1]` index `seg`: the segments of slow edge `i`.
     off: Vec<u32>,
     seg: Vec<(u32, u32)>,
+}
+
+impl EdgeSegments {
+    /// The segments of edge `e` when it is slow, `None` when it is fast.
+    #[inline]
+    fn get(&self, e: u32) -> Option<&[(u32, u32)]> {
+        let i = if self.dense {
+            e as usize
+        } else {
+            self.edge.binary_search(&e).ok()?
+        };
+        Some(&self.seg[self.off[i] as usize..self.off[i + 1] as usize])
+    }
+}
+
+/// Whether an edge with ends of inclusion values `i_s`, `i_t` and no
+/// intersection vertex takes the fast path: equal values in {-1, 0, 1}.
+#[inline]
+fn fast_edge(i_s: i32, i_t: i32) -> bool {
+    i_s == i_t && (-1..=1).contains(&i_s)
+}
+
+/// The retained half-edge of half-edge `a -> b` of a fast edge whose ends
+/// have inclusion value `k` (see [`fast_edge`]): the half-edge itself,
+/// mapped (`k = 1`), reversed (`k = -1`) or nothing (`k = 0`, and a
+/// zero-length half-edge, which would be dropped).
+#[inline]
+fn fast_half_edge(a: u32, b: u32, k: i32, vid: &[u32]) -> Option<(u32, u32)> {
+    if a == b {
+        return None;
+    }
+    match k {
+        1 => Some((vid[a as usize], vid[b as usize])),
+        -1 => Some((vid[b as usize], vid[a as usize])),
+        _ => None,
+    }
 }
 
 /// The retained parts of every edge of one operand (section 4.6): for A,
 /// `I03(v_e)` at `v_e`, `-I03(v_s)` at `v_s` and `I12(e_A, f)` at each
 /// intersection vertex; for B, `I21(f, e_B)` at each intersection vertex,
-/// `I30(v_e)` at `v_e` and `-I30(v_s)` at `v_s`.
+/// `I30(v_e)` at `v_e` and `-I30(v_s)` at `v_s`. Only the slow edges are
+/// stored (see [`EdgeSegments`]); with `record`, every edge is slow and
+/// recorded.
 #[allow(clippy::too_many_arguments)]
 fn edge_segments(
     mesh: &Flat<'_>,
@@ -136,42 +175,33 @@ fn edge_segments(
     record: bool,
 ) -> Result<(EdgeSegments, Vec<CompositeRecord>), Boolean3Error> {
     let n = mesh.edges.len();
-    let off = ranges(n, hits);
-    let idx: Vec<u32> = (0..n as u32).collect();
-    type Chunk = (Vec<(u32, u32)>, Vec<u32>, Vec<CompositeRecord>);
-    let parts: Vec<Chunk> = idx
-        .par_chunks(1024)
-        .with_min_len(par::min_len(1024))
-        .map(|chunk| {
+    // (slow edges, their segment counts, their segments, records).
+    type Chunk = (Vec<u32>, Vec<u32>, Vec<(u32, u32)>, Vec<CompositeRecord>);
+    let parts: Vec<Chunk> = (0..n.div_ceil(CHUNK))
+        .into_par_iter()
+        .with_min_len(par::min_len(CHUNK))
+        .map(|piece| {
+            let (lo, hi) = (piece * CHUNK, ((piece + 1) * CHUNK).min(n));
+            let mut slow = Vec::new();
+            let mut counts = Vec::new();
             let mut segs = Vec::new();
-            let mut counts = Vec::with_capacity(chunk.len());
             let mut recs = Vec::new();
             let mut c = CompositeEdge3::default();
-            for &e in chunk {
+            // The hits are sorted by edge: those of this piece's edges
+            // start here.
+            let mut j = hits.partition_point(|h| (h.edge as usize) < lo);
+            for e in lo as u32..hi as u32 {
                 let (s, t) = mesh.edges[e as usize];
-                let range = off[e as usize] as usize..off[e as usize + 1] as usize;
+                let first = j;
+                while j < hits.len() && hits[j].edge == e {
+                    j += 1;
+                }
                 // Fast path: an edge without intersections whose two ends
                 // have the same inclusion value k in {-1, 0, 1} is retained
                 // whole (k = 1), reversed (k = -1) or not at all (k = 0):
                 // exactly what the composite edge would give.
-                if !record && range.is_empty() && incl[s as usize] == incl[t as usize] {
-                    match incl[t as usize] {
-                        0 => {
-                            counts.push(0);
-                            continue;
-                        }
-                        1 => {
-                            segs.push((vid[s as usize], vid[t as usize]));
-                            counts.push(1);
-                            continue;
-                        }
-                        -1 => {
-                            segs.push((vid[t as usize], vid[s as usize]));
-                            counts.push(1);
-                            continue;
-                        }
-                        _ => {}
-                    }
+                if !record && first == j && fast_edge(incl[s as usize], incl[t as usize]) {
+                    continue;
                 }
                 c.clear();
                 let (ps, pt) = mesh.edge_points(e);
@@ -184,10 +214,9 @@ fn edge_segments(
                     c.assign(vid[t as usize], pt, incl[t as usize]);
                     c.assign(vid[s as usize], ps, -incl[s as usize]);
                 }
-                for j in range {
-                    let h = &hits[j];
+                for (k, h) in hits[first..j].iter().enumerate() {
                     // eq. 4.8 / 4.9: I = c_I X.
-                    c.assign(hit_base + j as u32, h.point, ci * h.value);
+                    c.assign(hit_base + (first + k) as u32, h.point, ci * h.value);
                 }
                 if !is_a {
                     c.assign(vid[t as usize], pt, incl[t as usize]);
@@ -204,18 +233,27 @@ fn edge_segments(
                 if !c.pair_into(&mut segs) {
                     return Err(unbalanced(kind, &c));
                 }
+                slow.push(e);
                 counts.push((segs.len() - before) as u32);
             }
-            Ok((segs, counts, recs))
+            Ok((slow, counts, segs, recs))
         })
         .collect::<Result<_, Boolean3Error>>()?;
+    let n_slow: usize = parts.iter().map(|p| p.0.len()).sum();
+    let n_seg: usize = parts.iter().map(|p| p.2.len()).sum();
+    let dense = n_slow == n;
     let mut out = EdgeSegments {
-        off: Vec::with_capacity(n + 1),
-        seg: Vec::new(),
+        edge: Vec::with_capacity(if dense { 0 } else { n_slow }),
+        dense,
+        off: Vec::with_capacity(n_slow + 1),
+        seg: Vec::with_capacity(n_seg),
     };
     let mut records = Vec::new();
     out.off.push(0);
-    for (segs, counts, recs) in parts {
+    for (slow, counts, segs, recs) in parts {
+        if !dense {
+            out.edge.extend(slow);
+        }
         out.seg.extend(segs);
         let mut last = *out.off.last().unwrap_or(&0);
         for k in counts {
@@ -368,19 +406,31 @@ pub(crate) fn construct(
         by_b.iter().map(|&k| pair_segs[k as usize].1),
     );
 
+    // The facets with an intersection vertex on an edge or an
+    // intersection edge: every such facet is in some pair above. The
+    // others (almost all, on large operands) have only edges without
+    // intersection vertices.
+    let mut touched_a = vec![false; a.facet_count()];
+    let mut touched_b = vec![false; b.facet_count()];
+    for e in &entries {
+        touched_a[e.fa as usize] = true;
+        touched_b[e.fb as usize] = true;
+    }
+    drop(entries);
+
     // Level 5: the retained facets. A facet of A takes the retained parts
     // of its half-edges and the forward half-edges of its intersection
     // edges; a facet of B the backward half-edges of its intersection
     // edges and the retained parts of its half-edges. Zero-length
     // half-edges (start = end) are dropped: each is balanced by itself, so
     // facet and shape boundary closure are unaffected.
-    let facets_a = retained_facets(a, &seg_a, |f, out| {
+    let facets_a = retained_facets(a, &seg_a, (&vid_a, &i03), &touched_a, |f, out| {
         for k in off_a[f as usize]..off_a[f as usize + 1] {
             let (_, _, s, e) = pair_segs[k as usize];
             out.push((s, e));
         }
     });
-    let facets_b = retained_facets(b, &seg_b, |f, out| {
+    let facets_b = retained_facets(b, &seg_b, (&vid_b, &i30), &touched_b, |f, out| {
         for k in off_b[f as usize]..off_b[f as usize + 1] {
             let (_, _, s, e) = pair_segs[by_b[k as usize] as usize];
             out.push((e, s));
@@ -435,44 +485,230 @@ type FacetChunk = (Vec<(u32, u32)>, Vec<(u32, u32)>);
 
 /// The half-edges of each retained facet of one operand, in parallel
 /// chunks concatenated in facet order: `(half-edges, [(facet, count)])`.
+/// `map` is the operand's `(vid, incl)`; `touched[f]` says whether facet
+/// `f` may have an edge with intersection vertices or intersection edges.
+/// An untouched facet's half-edges on fast edges (see [`fast_edge`]) are
+/// retained straight from the inclusion values of their ends, without
+/// looking the edge up (the common case: a facet far from the other
+/// operand, kept whole or dropped whole).
 fn retained_facets(
     mesh: &Flat<'_>,
     segs: &EdgeSegments,
+    (vid, incl): (&[u32], &[i32]),
+    touched: &[bool],
     intersections: impl Fn(u32, &mut Vec<(u32, u32)>) + Sync,
 ) -> Vec<FacetChunk> {
-    let idx: Vec<u32> = (0..mesh.facet_count() as u32).collect();
-    idx.par_chunks(1024)
-        .with_min_len(par::min_len(1024))
-        .map(|chunk| {
-            let mut hes = Vec::new();
-            let mut list = Vec::new();
-            for &f in chunk {
+    let n = mesh.facet_count();
+    (0..n.div_ceil(CHUNK))
+        .into_par_iter()
+        .with_min_len(par::min_len(CHUNK))
+        .map(|piece| {
+            let (lo, hi) = (piece * CHUNK, ((piece + 1) * CHUNK).min(n));
+            // Room for the piece's facets kept whole, without regrowing;
+            // what is not used is given back below.
+            let start = |f: usize| {
+                if f == n {
+                    mesh.he_count()
+                } else {
+                    mesh.facet_range(f as u32).start
+                }
+            };
+            let mut hes = Vec::with_capacity(start(hi) - start(lo));
+            let mut list = Vec::with_capacity(hi - lo);
+            for f in lo as u32..hi as u32 {
                 let before = hes.len();
+                let touched = touched[f as usize];
                 for h in mesh.facet_range(f) {
-                    let e = mesh.he_edge[h] as usize;
-                    let fwd = mesh.he_fwd(h as u32);
-                    for &(s, t) in &segs.seg[segs.off[e] as usize..segs.off[e + 1] as usize] {
-                        if s != t {
-                            hes.push(if fwd { (s, t) } else { (t, s) });
+                    let (a, b) = mesh.he(h as u32);
+                    let (ia, ib) = (incl[a as usize], incl[b as usize]);
+                    // An untouched facet's edge has no intersection vertex:
+                    // it is slow only when the values say so.
+                    let stored = if !touched && !segs.dense && fast_edge(ia, ib) {
+                        None
+                    } else {
+                        segs.get(mesh.he_edge[h])
+                    };
+                    match stored {
+                        Some(parts) => {
+                            let fwd = a <= b;
+                            for &(s, t) in parts {
+                                if s != t {
+                                    hes.push(if fwd { (s, t) } else { (t, s) });
+                                }
+                            }
+                        }
+                        None => {
+                            if let Some(x) = fast_half_edge(a, b, ia, vid) {
+                                hes.push(x);
+                            }
                         }
                     }
                 }
-                let mid = hes.len();
-                intersections(f, &mut hes);
-                // Drop zero-length intersection half-edges as well.
-                let mut w = mid;
-                for r in mid..hes.len() {
-                    if hes[r].0 != hes[r].1 {
-                        hes[w] = hes[r];
-                        w += 1;
+                if touched {
+                    let mid = hes.len();
+                    intersections(f, &mut hes);
+                    // Drop zero-length intersection half-edges as well.
+                    let mut w = mid;
+                    for r in mid..hes.len() {
+                        if hes[r].0 != hes[r].1 {
+                            hes[w] = hes[r];
+                            w += 1;
+                        }
                     }
+                    hes.truncate(w);
                 }
-                hes.truncate(w);
                 if hes.len() > before {
                     list.push((f, (hes.len() - before) as u32));
                 }
             }
+            hes.shrink_to_fit();
+            list.shrink_to_fit();
             (hes, list)
         })
         .collect()
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::level3::{level3_with_contacts, Winding};
+    use crate::merge::Merged;
+    use proptest::prelude::*;
+    use test_support::rng::SplitMix64;
+    use test_support::shapes::{
+        box_mesh, box_triangles, uv_sphere, CUBE_FACES, OCTA_FACES, TETRA_FACES,
+    };
+    use topology::{Facet, PolygonMesh, TriangleMesh};
+
+    /// Levels 4-5 of `a` and `b` for every operation, by the fast paths
+    /// (fast edges not stored, untouched facets retained from inclusion
+    /// values) and with recording on, which takes every edge through its
+    /// composite edge and looks every half-edge up: the same vertices,
+    /// vertex maps and retained facets, or the same error.
+    fn paths_agree(a: &Flat<'_>, b: &Flat<'_>) {
+        let Ok((l3, _)) = level3_with_contacts(a, b, Winding::Propagate, None) else {
+            return;
+        };
+        for op in BooleanOp::BASIC {
+            if op == BooleanOp::Xor {
+                continue;
+            }
+            let fast = construct(a, b, &l3, op, false);
+            let general = construct(a, b, &l3, op, true);
+            match (fast, general) {
+                (Ok(f), Ok(g)) => {
+                    assert_eq!(f.vertices, g.vertices, "{op:?}");
+                    assert_eq!(f.chunks, g.chunks, "{op:?}");
+                    for (x, y) in f.maps.iter().zip(&g.maps) {
+                        assert_eq!((&x.vid, &x.incl, &x.own), (&y.vid, &y.incl, &y.own));
+                    }
+                }
+                (Err(f), Err(g)) => assert_eq!(f.to_string(), g.to_string(), "{op:?}"),
+                (f, g) => panic!("{op:?}: fast {:?}, general {:?}", f.is_ok(), g.is_ok()),
+            }
+        }
+    }
+
+    /// [`paths_agree`] on polygon meshes and, triangulated and merged as
+    /// the triangle-mesh variant does, on their triangles.
+    fn both_variants(a: &PolygonMesh, b: &PolygonMesh) {
+        if let (Ok(fa), Ok(fb)) = (Flat::from_polygon_mesh(a), Flat::from_polygon_mesh(b)) {
+            paths_agree(&fa, &fb);
+        }
+        let (ta, tb) = (crate::triangulate_mesh(a), crate::triangulate_mesh(b));
+        triangles_agree(&ta, &tb);
+    }
+
+    fn triangles_agree(a: &TriangleMesh, b: &TriangleMesh) {
+        let (Ok(fa), Ok(fb)) = (Flat::from_triangle_mesh(a), Flat::from_triangle_mesh(b)) else {
+            return;
+        };
+        let (Ok((_, ma)), Ok((_, mb))) = (Merged::new(fa), Merged::new(fb)) else {
+            return;
+        };
+        paths_agree(&ma, &mb);
+    }
+
+    /// One to three shells (tetrahedra, octahedra, cubes), some inside
+    /// out, with coordinates of mixed magnitude (`garbage`) or jittered
+    /// around a unit-scale position: overlapping and inverted shells give
+    /// inclusion values outside {-1, 0, 1} and edges whose ends differ.
+    fn shells(r: &mut SplitMix64, garbage: bool) -> PolygonMesh {
+        let mut v = Vec::new();
+        let mut f = Vec::new();
+        for _ in 0..r.range(1, 3) {
+            let base = v.len() as u32;
+            let flip = r.range(0, 3) == 0;
+            let loops: Vec<Vec<u32>> = match r.range(0, 2) {
+                0 => TETRA_FACES.iter().map(|t| t.to_vec()).collect(),
+                1 => OCTA_FACES.iter().map(|t| t.to_vec()).collect(),
+                _ => CUBE_FACES.iter().map(|q| q.to_vec()).collect(),
+            };
+            let n = loops.iter().flatten().max().map_or(0, |m| m + 1);
+            let centre = [r.pm1(), r.pm1(), r.pm1()];
+            for k in 0..n {
+                v.push(if garbage {
+                    [
+                        r.magnitude(-60, 60),
+                        r.magnitude(-60, 60),
+                        r.magnitude(-60, 60),
+                    ]
+                } else {
+                    // A unit shell's corners (the cube's numbering:
+                    // coordinate j from bit j), jittered.
+                    let s = |j: u32| if k >> j & 1 == 1 { 1.0 } else { -1.0 };
+                    [
+                        centre[0] + s(0) + r.pm1() / 8.0,
+                        centre[1] + s(1) + r.pm1() / 8.0,
+                        centre[2] + s(2) + r.pm1() / 8.0,
+                    ]
+                });
+            }
+            for l in loops {
+                let mut l: Vec<u32> = l.iter().map(|k| k + base).collect();
+                if flip {
+                    l.reverse();
+                }
+                f.push(Facet::from_loop(&l));
+            }
+        }
+        PolygonMesh::new(v, f)
+    }
+
+    #[test]
+    fn fast_paths_equal_the_general_path_on_spheres_and_plates() {
+        // Curved operands: most facets untouched, kept whole or dropped.
+        let a = uv_sphere([0.0; 3], 1.0, 24, 12);
+        let b = uv_sphere([0.4, 0.3, 0.2], 0.8, 20, 10);
+        triangles_agree(&a, &b);
+        // A plate cut by boxes, one difference at a time (merged facets,
+        // cut and whole), against a cutter.
+        let mut plate = box_triangles([0.0, 0.0, 0.0], [4.0, 3.0, 1.0]);
+        for (x, y) in [(0.25, 0.25), (1.25, 2.25), (3.25, 1.25)] {
+            let hole = box_triangles([x, y, -0.5], [x + 0.5, y + 0.5, 1.5]);
+            triangles_agree(&plate, &hole);
+            plate = crate::boolean_triangles(&plate, &hole, BooleanOp::Difference)
+                .unwrap()
+                .mesh;
+        }
+        triangles_agree(&plate, &box_triangles([1.5, 0.5, 0.5], [3.5, 2.5, 2.0]));
+        both_variants(
+            &box_mesh([0.0; 3], [2.0; 3]),
+            &box_mesh([1.0; 3], [3.0, 3.0, 2.0]),
+        );
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(48))]
+
+        /// Random shells, jittered or garbage, both variants.
+        #[test]
+        fn fast_paths_equal_the_general_path_on_random_shells(seed in any::<u64>(),
+                                                             garbage in any::<bool>()) {
+            let mut r = SplitMix64::new(seed);
+            let a = shells(&mut r, garbage);
+            let b = shells(&mut r, garbage);
+            both_variants(&a, &b);
+        }
+    }
 }

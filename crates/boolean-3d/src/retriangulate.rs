@@ -6,7 +6,9 @@
 //! For a retained facet `F'` of merged facet `F`:
 //!
 //! - `F` of one triangle: [`triangulate_facet`] of `F'` (as before the
-//!   merge existed).
+//!   merge existed); when `F'` is one loop of three vertices (the triangle
+//!   kept, or reversed), the same triangle is computed without the general
+//!   triangulation's allocations (`one_triangle`).
 //! - `F'` is `F` copied (or, for B in a difference, reversed) half-edge by
 //!   half-edge and every vertex of `F`'s triangles is retained with the
 //!   operand's inclusion value: the input triangles, mapped (reversed).
@@ -96,7 +98,8 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             let (operand, hes, list) = &r.chunks[c];
             let k = *operand as usize;
             let (src, map) = (&sources[k], &r.maps[k]);
-            let mut tris = Vec::new();
+            // One triangle per facet in the common case (a triangle kept).
+            let mut tris = Vec::with_capacity(hi - lo);
             let mut scratch = Scratch::default();
             let mut at = start;
             for &(f, n) in &list[lo..hi] {
@@ -107,7 +110,20 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             tris
         })
         .collect();
-    TriangleMesh::new(r.vertices, parts.concat())
+    // The retained facets and vertex maps are freed before the triangles
+    // are gathered into one array.
+    let Retained {
+        vertices,
+        chunks,
+        maps,
+        ..
+    } = r;
+    drop((chunks, maps));
+    let mut triangles = Vec::with_capacity(parts.iter().map(Vec::len).sum());
+    for p in parts {
+        triangles.extend_from_slice(&p);
+    }
+    TriangleMesh::new(vertices, triangles)
 }
 
 #[derive(Default)]
@@ -176,7 +192,10 @@ fn facet(
 ) {
     let tris = src.merged.triangles(f);
     if tris.len() <= 1 {
-        triangulate_facet(vertices, part, out);
+        match one_triangle(vertices, part) {
+            Some(t) => out.push(t),
+            None => triangulate_facet(vertices, part, out),
+        }
         return;
     }
     let sigma = src.sigma;
@@ -300,4 +319,182 @@ fn facet(
             .filter(|(_, &k)| k)
             .map(|(&t, _)| oriented(t)),
     );
+}
+
+/// What [`triangulate_facet`] gives for `half_edges` when they are one
+/// loop of three distinct vertices (the common retained facet of a
+/// triangle mesh: an input triangle kept whole, or reversed for B in a
+/// difference), computed without its allocations; `None` otherwise.
+///
+/// A loop listed in order is the triangle itself. A loop listed out of
+/// order, `r0 -> r1`, `r2 -> r0`, `r1 -> r2` (how a reversed triangle's
+/// half-edges come out of level 5), is chained into the ring
+/// `(r0, r1, r2)`, which [`triangulate_facet`] projects onto the
+/// coordinate plane chosen by the Newell normal, summed over the
+/// half-edges in the order given and relative to `r0`, and clips as one
+/// ear, mirrored when the ring's projected area is negative: `(r2, r0,
+/// r1)` then, else `(r0, r1, r2)`. The arithmetic below is its own,
+/// operation for operation, so the sign (and the choice of plane) is the
+/// same bit for bit; a test compares the two on random, degenerate and
+/// non-finite triangles.
+fn one_triangle(positions: &[Point3], half_edges: &[(u32, u32)]) -> Option<[u32; 3]> {
+    let &[h0, h1, h2] = half_edges else {
+        return None;
+    };
+    let n_v = positions.len();
+    if [h0, h1, h2]
+        .iter()
+        .any(|&(s, e)| s as usize >= n_v || e as usize >= n_v)
+    {
+        return None;
+    }
+    if h0.1 == h1.0 && h1.1 == h2.0 && h2.1 == h0.0 {
+        return Some([h0.0, h1.0, h2.0]);
+    }
+    let (r0, r1, r2) = (h0.0, h0.1, h2.1);
+    // The other order, over three distinct vertices (each starts exactly
+    // one half-edge, so the ring is chained without a choice).
+    if h2.0 != r1 || h1 != (r2, r0) || r0 == r1 || r1 == r2 || r2 == r0 {
+        return None;
+    }
+    let o = positions[r0 as usize];
+    let rel = |v: u32| {
+        let p = positions[v as usize];
+        [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
+    };
+    let mut n = [0.0f64; 3];
+    for &(s, e) in half_edges {
+        let p = rel(s);
+        let q = rel(e);
+        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
+        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
+        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
+    }
+    let axis = if n[0].abs() > n[1].abs() && n[0].abs() > n[2].abs() {
+        0
+    } else if n[1].abs() > n[2].abs() {
+        1
+    } else {
+        2
+    };
+    let (iu, iv) = match axis {
+        0 => (1, 2),
+        1 => (2, 0),
+        _ => (0, 1),
+    };
+    let (iu, iv) = if n[axis] < 0.0 { (iv, iu) } else { (iu, iv) };
+    let proj = |v: u32| {
+        let p = rel(v);
+        [p[iu], p[iv]]
+    };
+    let ring = [proj(r0), proj(r1), proj(r2)];
+    let mut area = 0.0;
+    for i in 0..3 {
+        let (p, q) = (ring[i], ring[(i + 1) % 3]);
+        area += p[0] * q[1] - p[1] * q[0];
+    }
+    if area / 2.0 < 0.0 {
+        Some([r2, r0, r1])
+    } else {
+        Some([r0, r1, r2])
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use proptest::prelude::*;
+
+    /// A coordinate: small integers (exact ties, zero-area triangles),
+    /// unit-scale floats, mixed magnitudes, or a non-finite value.
+    fn coord() -> impl Strategy<Value = f64> {
+        prop_oneof![
+            4 => (-3i32..=3).prop_map(f64::from),
+            4 => -1.0f64..1.0,
+            2 => (any::<bool>(), 0u64..(1 << 52), -300i32..=300).prop_map(|(neg, m, e)| {
+                let v = (1.0 + m as f64 / 4_503_599_627_370_496.0) * 2f64.powi(e);
+                if neg { -v } else { v }
+            }),
+            1 => prop::sample::select(vec![f64::NAN, f64::INFINITY, f64::NEG_INFINITY, 1e308]),
+        ]
+    }
+
+    fn point() -> impl Strategy<Value = Point3> {
+        [coord(), coord(), coord()]
+    }
+
+    /// [`one_triangle`] against [`triangulate_facet`]: the same triangle
+    /// when it answers, and `None` only where the half-edges are not one
+    /// loop of three distinct vertices listed either way.
+    fn agrees(positions: &[Point3], hes: &[(u32, u32)]) -> Result<(), TestCaseError> {
+        let mut general = Vec::new();
+        triangulate_facet(positions, hes, &mut general);
+        match one_triangle(positions, hes) {
+            Some(t) => prop_assert_eq!(vec![t], general),
+            None => {
+                // Only non-loops, repeated vertices and dangling indices
+                // are left to the general triangulation.
+                let loop3 =
+                    |h: &[(u32, u32)]| h[0].1 == h[1].0 && h[1].1 == h[2].0 && h[2].1 == h[0].0;
+                let distinct = hes.len() == 3
+                    && hes[0].0 != hes[1].0
+                    && hes[1].0 != hes[2].0
+                    && hes[2].0 != hes[0].0
+                    && hes.iter().all(|&(s, e)| {
+                        (s as usize) < positions.len() && (e as usize) < positions.len()
+                    });
+                prop_assert!(
+                    !(distinct && (loop3(hes) || loop3(&[hes[0], hes[2], hes[1]]))),
+                    "a loop was left out: {:?}",
+                    hes
+                );
+            }
+        }
+        Ok(())
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(2000))]
+
+        /// A triangle kept (in order), reversed (out of order, as level 5
+        /// lists a reversed triangle), rotated, or with a vertex repeated
+        /// or out of range; any coordinates.
+        #[test]
+        fn one_triangle_is_what_triangulate_facet_gives(
+            p in proptest::collection::vec(point(), 4),
+            ids in [0u32..5, 0u32..5, 0u32..5],
+            distinct in any::<bool>(),
+            order in 0usize..6,
+        ) {
+            let [a, b, c] = if distinct { [0, 1, 2] } else { ids };
+            let (ab, bc, ca) = ((a, b), (b, c), (c, a));
+            let (ba, cb, ac) = ((b, a), (c, b), (a, c));
+            let hes = match order {
+                0 => [ab, bc, ca],
+                1 => [bc, ca, ab],
+                2 => [ba, cb, ac],
+                3 => [ac, ba, cb],
+                4 => [ab, ca, bc],
+                _ => [ba, ac, cb],
+            };
+            agrees(&p, &hes)?;
+            agrees(&p, &hes[..2])?;
+        }
+    }
+
+    #[test]
+    fn a_reversed_triangle_starts_at_its_first_half_edge() {
+        // The reversed triangle of (0, 1, 2) as level 5 lists it: the ring
+        // (1, 0, 2), projected so that it runs anticlockwise, is one ear.
+        let p: Vec<Point3> = vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]];
+        for hes in [[(1, 0), (2, 1), (0, 2)], [(1, 0), (0, 2), (2, 1)]] {
+            let mut general = Vec::new();
+            triangulate_facet(&p, &hes, &mut general);
+            assert_eq!(general, vec![[1, 0, 2]]);
+            assert_eq!(one_triangle(&p, &hes), Some([1, 0, 2]));
+        }
+        // Not a loop, or a vertex twice: left to the general path.
+        assert_eq!(one_triangle(&p, &[(1, 0), (2, 1), (2, 0)]), None);
+        assert_eq!(one_triangle(&p, &[(1, 0), (1, 1), (0, 1)]), None);
+    }
 }
