@@ -18,7 +18,10 @@
 //!   and `i_overlay` (64-bit, the one correct there).
 //!
 //! Each cell runs in a fresh child process (this binary with `--child`):
-//! the child builds and converts the input, reads `VmRSS`, resets the
+//! the child builds and converts the input, runs the peer once on a small
+//! input of the same kind (a 16-gon pair, a 16-point random polygon), so
+//! that neither the code's pages nor the allocator's or thread pool's
+//! set-up count as the operation's memory, reads `VmRSS`, resets the
 //! kernel's peak RSS (`/proc/self/clear_refs`, value 5), runs the operation
 //! once and reads `VmHWM`. The cell is the *RSS growth* `VmHWM - VmRSS`:
 //! what the operation took from the operating system at its peak, allocator
@@ -62,6 +65,8 @@ fn ngon_case(vertices: usize) -> Case {
 
 /// One Boolean peer on an n-gon row: prints `kib correct`.
 fn child_ring<P: Peer>(peer: &P, case: &Case) {
+    let (a, b) = rotated_ngon_pair(8, case.alpha_deg);
+    drop(peer.union(&peer.prepare(&[a], &[b])));
     let (a, b) = rotated_ngon_pair(case.n, case.alpha_deg);
     let input = peer.prepare(&[a], &[b]);
     let rss = RssGrowth::start();
@@ -77,6 +82,13 @@ fn child_ring<P: Peer>(peer: &P, case: &Case) {
 /// output the peer could read back; the tables of `perf-table-simplify`
 /// compare the areas).
 fn child_sweep<P: SweepPeer>(peer: &P, case: &SweepCase) {
+    let warm = match case.ngon {
+        Some(ngon) => ngon_sweep_case(&Case { n: 8, ..ngon }),
+        None => random_case(16, case.rule),
+    };
+    if let Some(input) = peer.prepare(&warm) {
+        drop(peer.run(&input));
+    }
     let Some(input) = peer.prepare(case) else {
         println!("0 false");
         return;
