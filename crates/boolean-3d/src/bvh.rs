@@ -83,9 +83,16 @@ impl Aabb {
     /// Grows the box to hold `o`.
     #[inline]
     pub fn union(&mut self, o: &Aabb) {
+        // Plain comparisons (one instruction each, where `f32::min` also
+        // sorts out NaN): a bound of `o` that is NaN is never taken, so a
+        // box without NaN stays without.
         for c in 0..3 {
-            self.lo[c] = self.lo[c].min(o.lo[c]);
-            self.hi[c] = self.hi[c].max(o.hi[c]);
+            if o.lo[c] < self.lo[c] {
+                self.lo[c] = o.lo[c];
+            }
+            if o.hi[c] > self.hi[c] {
+                self.hi[c] = o.hi[c];
+            }
         }
     }
 
@@ -234,20 +241,14 @@ fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
             || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
             |(mut lo, mut hi), b| {
                 let c = centroid(b);
-                for k in 0..3 {
-                    lo[k] = lo[k].min(c[k]);
-                    hi[k] = hi[k].max(c[k]);
-                }
+                grow(&mut lo, &mut hi, &c, &c);
                 (lo, hi)
             },
         )
         .reduce(
             || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
             |(mut lo, mut hi), (l, h)| {
-                for k in 0..3 {
-                    lo[k] = lo[k].min(l[k]);
-                    hi[k] = hi[k].max(h[k]);
-                }
+                grow(&mut lo, &mut hi, &l, &h);
                 (lo, hi)
             },
         );
@@ -270,10 +271,27 @@ fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
         })
         .collect();
     keys.retain(|&k| k != u64::MAX);
-    radix_sort_codes(keys)
-        .into_iter()
-        .map(|k| k as u32)
-        .collect()
+    let keys = radix_sort_codes(keys);
+    // A fresh allocation of the exact size (collecting in place would keep
+    // the keys' buffer, twice the size, for the hierarchy's lifetime).
+    let mut items = Vec::with_capacity(keys.len());
+    items.extend(keys.iter().map(|&k| k as u32));
+    items
+}
+
+/// Grows the bound `[lo, hi]` to hold `[l, h]` by plain comparisons (NaN
+/// is never taken; minimum and maximum are exact, so the order of the
+/// growth does not matter).
+#[inline]
+fn grow(lo: &mut [f64; 3], hi: &mut [f64; 3], l: &[f64; 3], h: &[f64; 3]) {
+    for c in 0..3 {
+        if l[c] < lo[c] {
+            lo[c] = l[c];
+        }
+        if h[c] > hi[c] {
+            hi[c] = h[c];
+        }
+    }
 }
 
 /// Sorts `code << 32 | index` keys (30-bit codes) by a least-significant
