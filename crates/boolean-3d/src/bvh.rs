@@ -229,22 +229,34 @@ impl Bvh {
 /// The live items of `boxes` sorted by the Morton code of their box
 /// centres within the bound of every live centre, ties by index.
 fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
-    // The bound of the centres, exact in double precision and rounded
-    // outwards once (rounding is monotone: the same bound as rounding
-    // every centre first). Minimum and maximum are exact, so the parallel
-    // reduction does not depend on how the work was split.
-    let cb = boxes
-        .par_iter()
-        .with_min_len(par::min_len(1))
-        .filter(|b| live(b))
-        .fold(
-            || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
-            |(mut lo, mut hi), b| {
+    let quantiser = Quantiser::new(&centre_bound(boxes));
+    let keys = radix_sort_codes(morton_keys(boxes, &quantiser));
+    // A fresh allocation of the exact size (collecting in place would keep
+    // the keys' buffer, twice the size, for the hierarchy's lifetime).
+    let mut items = Vec::with_capacity(keys.len());
+    items.extend(keys.iter().map(|&k| k as u32));
+    items
+}
+
+/// The bound of the live boxes' centres, exact in double precision and
+/// rounded outwards once (rounding is monotone: the same bound as rounding
+/// every centre first). Minimum and maximum are exact, so the parallel
+/// reduction does not depend on how the work was split.
+fn centre_bound(boxes: &[Aabb]) -> Aabb {
+    // In chunks, each bounded by a plain loop (a per-item fold does not
+    // inline, and copies its state in and out for every box).
+    const CHUNK: usize = 1024;
+    let (lo, hi) = boxes
+        .par_chunks(CHUNK)
+        .with_min_len(par::min_len(CHUNK))
+        .map(|chunk| {
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            for b in chunk.iter().filter(|b| live(b)) {
                 let c = centroid(b);
                 grow(&mut lo, &mut hi, &c, &c);
-                (lo, hi)
-            },
-        )
+            }
+            (lo, hi)
+        })
         .reduce(
             || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
             |(mut lo, mut hi), (l, h)| {
@@ -252,12 +264,15 @@ fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
                 (lo, hi)
             },
         );
-    let cb = Aabb::new(cb.0, cb.1);
-    let quantiser = Quantiser::new(&cb);
-    // `code << 32 | index`: distinct keys whose order is (code, index);
-    // `u64::MAX` (above every such key) for the empty boxes, then dropped
-    // (an indexed map collects in place, without the reallocations of a
-    // filtered one).
+    Aabb::new(lo, hi)
+}
+
+/// `code << 32 | index` of every live box: distinct keys whose order is
+/// (code, index).
+fn morton_keys(boxes: &[Aabb], quantiser: &Quantiser) -> Vec<u64> {
+    // `u64::MAX` (above every key) for the empty boxes, then dropped: an
+    // indexed map collects in place, without the reallocations of a
+    // filtered one.
     let mut keys: Vec<u64> = boxes
         .par_iter()
         .with_min_len(par::min_len(1))
@@ -271,12 +286,7 @@ fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
         })
         .collect();
     keys.retain(|&k| k != u64::MAX);
-    let keys = radix_sort_codes(keys);
-    // A fresh allocation of the exact size (collecting in place would keep
-    // the keys' buffer, twice the size, for the hierarchy's lifetime).
-    let mut items = Vec::with_capacity(keys.len());
-    items.extend(keys.iter().map(|&k| k as u32));
-    items
+    keys
 }
 
 /// Grows the bound `[lo, hi]` to hold `[l, h]` by plain comparisons (NaN
@@ -362,15 +372,27 @@ impl Quantiser {
             } else {
                 0.0
             };
+            // In 0..=1023 (NaN gives 0).
             let q = (t.clamp(0.0, 1.0) * 1023.0) as u64;
-            code |= spread(q) << c;
+            code |= u64::from(SPREAD[q as usize & 1023]) << c;
         }
         code as u32
     }
 }
 
+/// [`spread`] of every 10-bit value.
+static SPREAD: [u32; 1024] = {
+    let mut t = [0u32; 1024];
+    let mut i = 0;
+    while i < 1024 {
+        t[i] = spread(i as u64) as u32;
+        i += 1;
+    }
+    t
+};
+
 /// Spreads the low 21 bits of `x` to every third bit.
-fn spread(mut x: u64) -> u64 {
+const fn spread(mut x: u64) -> u64 {
     x &= 0x1f_ffff;
     x = (x | (x << 32)) & 0x1f_0000_0000_ffff;
     x = (x | (x << 16)) & 0x1f_0000_ff00_00ff;
@@ -1047,5 +1069,78 @@ mod props {
         want.sort_unstable();
         assert!(!want.is_empty());
         assert_eq!(sorted(ts.pairs(&bs, &tt, &bt)), want);
+    }
+
+    /// The steps of the broad phase on one operand of the 1M-triangle
+    /// sphere difference, each the best of a few runs (`cargo test
+    /// --release -p boolean-3d --lib broad_phase_timing -- --ignored
+    /// --nocapture`, with `RAYON_NUM_THREADS` as wanted).
+    #[test]
+    #[ignore = "timing, for release builds"]
+    fn broad_phase_timing() {
+        use std::time::Instant;
+        // The operands of `perf-table-3d`'s 1M row.
+        let d = 0.5 / 3f64.sqrt();
+        let m = uv_sphere([0.0; 3], 1.0, 1000, 500);
+        let o = uv_sphere([d, d * 1.1, d * 0.9], 1.0, 1000, 500);
+        let f = Flat::from_triangle_mesh(&m).unwrap();
+        let g = Flat::from_triangle_mesh(&o).unwrap();
+        let other = g.facet_boxes(1e-12);
+        let other_bvh = Bvh::new(&other);
+        let mut best = [f64::INFINITY; 8];
+        let mut time = |k: usize, t: Instant| {
+            best[k] = best[k].min(t.elapsed().as_secs_f64() * 1e3);
+        };
+        let mut found = (0, 0);
+        for _ in 0..7 {
+            let t = Instant::now();
+            let boxes = f.facet_boxes(1e-12);
+            time(0, t);
+            let t = Instant::now();
+            let cb = centre_bound(&boxes);
+            time(1, t);
+            let t = Instant::now();
+            let keys = morton_keys(&boxes, &Quantiser::new(&cb));
+            time(2, t);
+            let t = Instant::now();
+            let keys = radix_sort_codes(keys);
+            time(3, t);
+            drop(keys);
+            let t = Instant::now();
+            let bvh = Bvh::new(&boxes);
+            time(4, t);
+            let t = Instant::now();
+            let mut nodes = vec![Node::LEAF_0; node_count(bvh.items.len())];
+            build(&boxes, &bvh.items, 0, &mut nodes, 0);
+            time(5, t);
+            assert_eq!(nodes, bvh.nodes);
+            drop(nodes);
+            let t = Instant::now();
+            found.0 = bvh.pairs(&boxes, &other_bvh, &other).len();
+            time(6, t);
+            // Upward rays from every 10th vertex of the other operand.
+            let t = Instant::now();
+            found.1 = 0;
+            for v in o.vertices.iter().step_by(10) {
+                let q = Aabb::new(*v, [v[0], v[1], f64::INFINITY]);
+                bvh.query(&q, &boxes, |_| found.1 += 1);
+            }
+            time(7, t);
+        }
+        eprintln!(
+            "{} facets: boxes {:.1} ms, centre bound {:.1}, keys {:.1}, sort {:.1}; \
+             Bvh::new {:.1} (build {:.1}); {} pairs {:.1}; {} ray hits {:.1}",
+            f.facet_count(),
+            best[0],
+            best[1],
+            best[2],
+            best[3],
+            best[4],
+            best[5],
+            found.0,
+            best[6],
+            found.1,
+            best[7],
+        );
     }
 }
