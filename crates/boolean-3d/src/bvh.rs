@@ -151,7 +151,7 @@ const LEAF: usize = 8;
 
 impl Node {
     /// A placeholder, overwritten by the build.
-    const LEAF_0: Node = Node {
+    const PLACEHOLDER: Node = Node {
         bb: Aabb::EMPTY,
         a: 0,
         count: 0,
@@ -164,7 +164,7 @@ impl Bvh {
         let items = morton_order(boxes);
         // The exact node count: a realloc of a guessed capacity doubles
         // the largest array of the broad phase at the peak of memory use.
-        let mut nodes = vec![Node::LEAF_0; node_count(items.len())];
+        let mut nodes = vec![Node::PLACEHOLDER; node_count(items.len())];
         if !items.is_empty() {
             build(boxes, &items, 0, &mut nodes, 0);
         }
@@ -850,10 +850,9 @@ mod props {
             .collect();
         let mut cb = Aabb::EMPTY;
         for &i in &live {
-            let c = centroid(&boxes[i as usize]);
-            for k in 0..3 {
-                cb.lo[k] = cb.lo[k].min(down_ref(c[k]));
-                cb.hi[k] = cb.hi[k].max(up_ref(c[k]));
+            for (k, &c) in centroid(&boxes[i as usize]).iter().enumerate() {
+                cb.lo[k] = cb.lo[k].min(down_ref(c));
+                cb.hi[k] = cb.hi[k].max(up_ref(c));
             }
         }
         let mut items = live;
@@ -1137,7 +1136,7 @@ mod props {
                 let bvh = Bvh::new(&boxes);
                 time(4, t);
                 let t = Instant::now();
-                let mut nodes = vec![Node::LEAF_0; node_count(bvh.items.len())];
+                let mut nodes = vec![Node::PLACEHOLDER; node_count(bvh.items.len())];
                 build(&boxes, &bvh.items, 0, &mut nodes, 0);
                 time(5, t);
                 assert_eq!(nodes, bvh.nodes);
