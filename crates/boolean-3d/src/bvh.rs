@@ -365,19 +365,20 @@ impl Quantiser {
     /// The 30-bit Morton code of `p`.
     #[inline]
     fn code(&self, p: &[f64; 3]) -> u32 {
-        let mut code = 0u64;
-        for (c, &pc) in p.iter().enumerate() {
-            let ext = self.half_ext[c];
-            let t = if ext > 0.0 {
-                (pc * 0.5 - self.half_lo[c]) / ext
-            } else {
-                0.0
-            };
-            // In 0..=1023 (NaN gives 0).
-            let q = (t.clamp(0.0, 1.0) * 1023.0) as u64;
-            code |= u64::from(SPREAD[q as usize & 1023]) << c;
+        // Every quotient computed (and dropped where the extent is not
+        // positive): no branch between the divisions, which then pair up.
+        let mut t = [0.0f64; 3];
+        for c in 0..3 {
+            let q = (p[c] * 0.5 - self.half_lo[c]) / self.half_ext[c];
+            t[c] = if self.half_ext[c] > 0.0 { q } else { 0.0 };
         }
-        code as u32
+        let mut code = 0u32;
+        for (c, t) in t.into_iter().enumerate() {
+            // In 0..=1023 (NaN gives 0).
+            let q = (t.clamp(0.0, 1.0) * 1023.0) as usize;
+            code |= SPREAD[q & 1023] << c;
+        }
+        code
     }
 }
 
