@@ -131,8 +131,11 @@ struct Node {
 }
 
 /// A binary BVH over items sorted along a Morton (Z-order) curve of their
-/// box centres, split at the middle of each range: an `O(n log n)` build
-/// dominated by one sort, deterministic for a given input.
+/// box centres, split at the middle of each range: a linear build (a radix
+/// sort of the codes, then the nodes, the halves of large ranges in
+/// parallel), the same hierarchy whatever the threads, deterministic for
+/// a given input. The nodes are in pre-order in one array of the exact
+/// size; a leaf holds up to [`LEAF`] items.
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     items: Vec<u32>,
@@ -147,6 +150,9 @@ fn live(b: &Aabb) -> bool {
     b.lo[0] <= b.hi[0]
 }
 
+/// The most items in a leaf. Eight rather than four halves the nodes
+/// (the build's time and the hierarchy's memory) for a few more box tests
+/// in the pair search.
 const LEAF: usize = 8;
 
 impl Node {
