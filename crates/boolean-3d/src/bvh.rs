@@ -27,22 +27,38 @@ pub(crate) struct Aabb {
 }
 
 /// The largest `f32` not above `x` (`-inf` below the range).
+///
+/// Without branches on the comparison: it is true for about half of all
+/// inputs, and a mispredicted branch per bound was most of the cost of
+/// the broad phase's boxes.
 #[inline]
 fn down(x: f64) -> f32 {
     let f = x as f32;
+    // The next `f32` below `f` (never taken for NaN or `-inf`, for
+    // which the comparison is false): a zero steps to `-tiny`, other
+    // values one unit of their bit pattern towards `-inf`.
+    let bits = if f == 0.0 { 0x8000_0000 } else { f.to_bits() };
+    let sign = (bits as i32) >> 31;
+    let next = f32::from_bits(bits.wrapping_add((-2 * sign - 1) as u32));
     if f64::from(f) > x {
-        f.next_down()
+        next
     } else {
         f
     }
 }
 
-/// The smallest `f32` not below `x` (`+inf` above the range).
+/// The smallest `f32` not below `x` (`+inf` above the range); like
+/// [`down`], without branches.
 #[inline]
 fn up(x: f64) -> f32 {
     let f = x as f32;
+    // The next `f32` above `f`: a zero steps to `+tiny`, other values
+    // one unit of their bit pattern towards `+inf`.
+    let bits = if f == 0.0 { 0 } else { f.to_bits() };
+    let sign = (bits as i32) >> 31;
+    let next = f32::from_bits(bits.wrapping_add((2 * sign + 1) as u32));
     if f64::from(f) < x {
-        f.next_up()
+        next
     } else {
         f
     }
@@ -64,21 +80,19 @@ impl Aabb {
         }
     }
 
-    /// Grows the box to hold `p`.
-    #[inline]
-    pub fn add(&mut self, p: &[f64; 3]) {
-        for (c, &v) in p.iter().enumerate() {
-            self.lo[c] = self.lo[c].min(down(v));
-            self.hi[c] = self.hi[c].max(up(v));
-        }
-    }
-
     /// Grows the box to hold `o`.
     #[inline]
     pub fn union(&mut self, o: &Aabb) {
+        // Plain comparisons (one instruction each, where `f32::min` also
+        // sorts out NaN): a bound of `o` that is NaN is never taken, so a
+        // box without NaN stays without.
         for c in 0..3 {
-            self.lo[c] = self.lo[c].min(o.lo[c]);
-            self.hi[c] = self.hi[c].max(o.hi[c]);
+            if o.lo[c] < self.lo[c] {
+                self.lo[c] = o.lo[c];
+            }
+            if o.hi[c] > self.hi[c] {
+                self.hi[c] = o.hi[c];
+            }
         }
     }
 
@@ -106,7 +120,7 @@ impl Aabb {
     }
 }
 
-#[derive(Clone, Copy, Debug)]
+#[derive(Clone, Copy, Debug, PartialEq)]
 struct Node {
     bb: Aabb,
     /// Leaf: first item; inner: index of the second child (the first child
@@ -117,8 +131,11 @@ struct Node {
 }
 
 /// A binary BVH over items sorted along a Morton (Z-order) curve of their
-/// box centres, split at the middle of each range: an `O(n log n)` build
-/// dominated by one sort, deterministic for a given input.
+/// box centres, split at the middle of each range: a linear build (a radix
+/// sort of the codes, then the nodes, the halves of large ranges in
+/// parallel), the same hierarchy whatever the threads, deterministic for
+/// a given input. The nodes are in pre-order in one array of the exact
+/// size; a leaf holds up to [`LEAF`] items.
 pub(crate) struct Bvh {
     nodes: Vec<Node>,
     items: Vec<u32>,
@@ -133,31 +150,30 @@ fn live(b: &Aabb) -> bool {
     b.lo[0] <= b.hi[0]
 }
 
-const LEAF: usize = 4;
+/// The most items in a leaf. Eight rather than four halves the nodes
+/// (the build's time and the hierarchy's memory) for a few more box tests
+/// in the pair search.
+const LEAF: usize = 8;
+
+impl Node {
+    /// A placeholder, overwritten by the build.
+    const PLACEHOLDER: Node = Node {
+        bb: Aabb::EMPTY,
+        a: 0,
+        count: 0,
+    };
+}
 
 impl Bvh {
     /// Builds the hierarchy over `boxes` (empty boxes are never reported).
     pub fn new(boxes: &[Aabb]) -> Bvh {
-        let live: Vec<u32> = (0..boxes.len() as u32)
-            .filter(|&i| boxes[i as usize].lo[0] <= boxes[i as usize].hi[0])
-            .collect();
-        let mut cb = Aabb::EMPTY;
-        for &i in &live {
-            cb.add(&centroid(&boxes[i as usize]));
-        }
-        let keys: Vec<u32> = live
-            .par_iter()
-            .with_min_len(par::min_len(1))
-            .map(|&i| morton(&centroid(&boxes[i as usize]), &cb))
-            .collect();
-        let items = radix_sort_by_key(&live, &keys);
+        let items = morton_order(boxes);
         // The exact node count: a realloc of a guessed capacity doubles
         // the largest array of the broad phase at the peak of memory use.
-        let mut nodes = Vec::with_capacity(node_count(items.len()));
+        let mut nodes = vec![Node::PLACEHOLDER; node_count(items.len())];
         if !items.is_empty() {
-            build(boxes, &items, 0, items.len(), &mut nodes);
+            build(boxes, &items, 0, &mut nodes, 0);
         }
-        debug_assert_eq!(nodes.len(), node_count(items.len()));
         Bvh {
             nodes,
             items,
@@ -216,52 +232,175 @@ impl Bvh {
     }
 }
 
-/// A stable least-significant-digit radix sort of `items` by the 30-bit
-/// `keys` (three passes of 10 bits): linear time, and ties keep their input
-/// order, so the result is deterministic.
-fn radix_sort_by_key(items: &[u32], keys: &[u32]) -> Vec<u32> {
-    let n = items.len();
-    let mut idx: Vec<u32> = (0..n as u32).collect();
-    let mut tmp = vec![0u32; n];
-    for pass in 0..3 {
-        let shift = 10 * pass;
-        let mut count = [0usize; 1025];
-        for &k in keys {
-            count[((k >> shift) & 1023) as usize + 1] += 1;
-        }
-        for d in 0..1024 {
-            count[d + 1] += count[d];
-        }
-        for &i in &idx {
-            let d = ((keys[i as usize] >> shift) & 1023) as usize;
-            tmp[count[d]] = i;
-            count[d] += 1;
-        }
-        std::mem::swap(&mut idx, &mut tmp);
-    }
-    idx.into_iter().map(|i| items[i as usize]).collect()
+/// The live items of `boxes` sorted by the Morton code of their box
+/// centres within the bound of every live centre, ties by index.
+fn morton_order(boxes: &[Aabb]) -> Vec<u32> {
+    let quantiser = Quantiser::new(&centre_bound(boxes));
+    let keys = radix_sort_codes(morton_keys(boxes, &quantiser));
+    // A fresh allocation of the exact size (collecting in place would keep
+    // the keys' buffer, twice the size, for the hierarchy's lifetime).
+    let mut items = Vec::with_capacity(keys.len());
+    items.extend(keys.iter().map(|&k| k as u32));
+    items
 }
 
-/// The 30-bit Morton code of `p` quantised to 10 bits per axis within `cb`.
-fn morton(p: &[f64; 3], cb: &Aabb) -> u32 {
-    let mut code = 0u64;
-    for (c, &pc) in p.iter().enumerate() {
-        // Halves first so that huge coordinates cannot overflow.
-        let (lo, hi) = (f64::from(cb.lo[c]), f64::from(cb.hi[c]));
-        let ext = hi * 0.5 - lo * 0.5;
-        let t = if ext > 0.0 {
-            (pc * 0.5 - lo * 0.5) / ext
-        } else {
-            0.0
-        };
-        let q = (t.clamp(0.0, 1.0) * 1023.0) as u64;
-        code |= spread(q) << c;
-    }
-    code as u32
+/// The bound of the live boxes' centres, exact in double precision and
+/// rounded outwards once (rounding is monotone: the same bound as rounding
+/// every centre first). Minimum and maximum are exact, so the parallel
+/// reduction does not depend on how the work was split.
+fn centre_bound(boxes: &[Aabb]) -> Aabb {
+    // In chunks, each bounded by a plain loop (a per-item fold does not
+    // inline, and copies its state in and out for every box).
+    const CHUNK: usize = 1024;
+    let (lo, hi) = boxes
+        .par_chunks(CHUNK)
+        .with_min_len(par::min_len(CHUNK))
+        .map(|chunk| {
+            let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+            for b in chunk.iter().filter(|b| live(b)) {
+                let c = centroid(b);
+                grow(&mut lo, &mut hi, &c, &c);
+            }
+            (lo, hi)
+        })
+        .reduce(
+            || ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+            |(mut lo, mut hi), (l, h)| {
+                grow(&mut lo, &mut hi, &l, &h);
+                (lo, hi)
+            },
+        );
+    Aabb::new(lo, hi)
 }
+
+/// `code << 32 | index` of every live box: distinct keys whose order is
+/// (code, index).
+fn morton_keys(boxes: &[Aabb], quantiser: &Quantiser) -> Vec<u64> {
+    // `u64::MAX` (above every key) for the empty boxes, then dropped: an
+    // indexed map collects in place, without the reallocations of a
+    // filtered one.
+    let mut keys: Vec<u64> = boxes
+        .par_iter()
+        .with_min_len(par::min_len(1))
+        .enumerate()
+        .map(|(i, b)| {
+            if live(b) {
+                (u64::from(quantiser.code(&centroid(b))) << 32) | i as u64
+            } else {
+                u64::MAX
+            }
+        })
+        .collect();
+    keys.retain(|&k| k != u64::MAX);
+    keys
+}
+
+/// Grows the bound `[lo, hi]` to hold `[l, h]` by plain comparisons (NaN
+/// is never taken; minimum and maximum are exact, so the order of the
+/// growth does not matter).
+#[inline]
+fn grow(lo: &mut [f64; 3], hi: &mut [f64; 3], l: &[f64; 3], h: &[f64; 3]) {
+    for c in 0..3 {
+        if l[c] < lo[c] {
+            lo[c] = l[c];
+        }
+        if h[c] > hi[c] {
+            hi[c] = h[c];
+        }
+    }
+}
+
+/// Sorts `code << 32 | index` keys (30-bit codes) by a least-significant
+/// digit radix sort of the code, three digits of 10 bits (a pass whose
+/// digit is the same for every key is skipped). Stable, so the indices of
+/// equal codes keep their (increasing) order: the keys end up in
+/// increasing order, deterministically.
+fn radix_sort_codes(mut keys: Vec<u64>) -> Vec<u64> {
+    const BITS: u32 = 10;
+    const DIGITS: usize = 1 << BITS;
+    const PASSES: usize = 30usize.div_ceil(BITS as usize);
+    let digit = |k: u64, pass: u32| ((k >> (32 + BITS * pass)) as usize) & (DIGITS - 1);
+    // Every pass's histogram in one read of the keys.
+    let mut count = vec![[0u32; DIGITS]; PASSES];
+    for &k in &keys {
+        for (pass, c) in count.iter_mut().enumerate() {
+            c[digit(k, pass as u32)] += 1;
+        }
+    }
+    let mut tmp = vec![0u64; keys.len()];
+    for (pass, c) in count.iter().enumerate() {
+        if c.iter().any(|&n| n as usize == keys.len()) {
+            continue;
+        }
+        let mut next = [0u32; DIGITS];
+        let mut sum = 0;
+        for d in 0..DIGITS {
+            next[d] = sum;
+            sum += c[d];
+        }
+        for &k in &keys {
+            let d = digit(k, pass as u32);
+            tmp[next[d] as usize] = k;
+            next[d] += 1;
+        }
+        std::mem::swap(&mut keys, &mut tmp);
+    }
+    keys
+}
+
+/// The Morton codes of points quantised to 10 bits per axis within a
+/// box: the box's terms of the quantisation, computed once.
+struct Quantiser {
+    /// Half the box's lower corner.
+    half_lo: [f64; 3],
+    /// Half the box's extent (halves first so that huge coordinates
+    /// cannot overflow).
+    half_ext: [f64; 3],
+}
+
+impl Quantiser {
+    fn new(cb: &Aabb) -> Quantiser {
+        let half_lo = cb.lo.map(|x| f64::from(x) * 0.5);
+        let mut half_ext = [0.0; 3];
+        for c in 0..3 {
+            half_ext[c] = f64::from(cb.hi[c]) * 0.5 - half_lo[c];
+        }
+        Quantiser { half_lo, half_ext }
+    }
+
+    /// The 30-bit Morton code of `p`.
+    #[inline]
+    fn code(&self, p: &[f64; 3]) -> u32 {
+        // Every quotient computed (and dropped where the extent is not
+        // positive): no branch between the divisions, which then pair up.
+        let mut t = [0.0f64; 3];
+        for c in 0..3 {
+            let q = (p[c] * 0.5 - self.half_lo[c]) / self.half_ext[c];
+            t[c] = if self.half_ext[c] > 0.0 { q } else { 0.0 };
+        }
+        let mut code = 0u32;
+        for (c, t) in t.into_iter().enumerate() {
+            // In 0..=1023 (NaN gives 0).
+            let q = (t.clamp(0.0, 1.0) * 1023.0) as usize;
+            code |= SPREAD[q & 1023] << c;
+        }
+        code
+    }
+}
+
+/// [`spread`] of every 10-bit value.
+static SPREAD: [u32; 1024] = {
+    let mut t = [0u32; 1024];
+    let mut i = 0;
+    while i < 1024 {
+        t[i] = spread(i as u64) as u32;
+        i += 1;
+    }
+    t
+};
 
 /// Spreads the low 21 bits of `x` to every third bit.
-fn spread(mut x: u64) -> u64 {
+const fn spread(mut x: u64) -> u64 {
     x &= 0x1f_ffff;
     x = (x | (x << 32)) & 0x1f_0000_0000_ffff;
     x = (x | (x << 16)) & 0x1f_0000_ff00_00ff;
@@ -293,32 +432,81 @@ fn node_count(n: usize) -> usize {
     count(n, &mut Vec::new())
 }
 
-/// Builds the subtree over `items[start..end]` in pre-order (first child
-/// right after its parent) and returns its box.
-fn build(boxes: &[Aabb], items: &[u32], start: usize, end: usize, nodes: &mut Vec<Node>) -> Aabb {
-    let me = nodes.len();
-    nodes.push(Node {
-        bb: Aabb::EMPTY,
-        a: start as u32,
-        count: (end - start) as u32,
-    });
-    let bb = if end - start <= LEAF {
+/// Builds the subtree over `items` (which start at `start` in the whole
+/// list) into `nodes`, exactly [`node_count`]`(items.len())` of them, in
+/// pre-order (first child right after its parent), `base` being the index
+/// of `nodes[0]` in the whole array; returns the subtree's box. The two
+/// halves of a large range are built in parallel, into disjoint parts of
+/// the array that the sequential build would fill the same way.
+fn build(boxes: &[Aabb], items: &[u32], start: usize, nodes: &mut [Node], base: usize) -> Aabb {
+    let n = items.len();
+    let mid = n / 2;
+    if n <= LEAF || !par::worth_splitting(mid) {
+        let mut next = 0;
+        let bb = build_seq(boxes, items, start, nodes, base, &mut next);
+        debug_assert_eq!(next, nodes.len());
+        return bb;
+    }
+    let (me, rest) = nodes.split_first_mut().expect("a node per range");
+    let (first, second) = rest.split_at_mut(node_count(mid));
+    let second_index = base + 1 + first.len();
+    let (mut bb, b2) = par::join(
+        mid,
+        || build(boxes, &items[..mid], start, first, base + 1),
+        || build(boxes, &items[mid..], start + mid, second, second_index),
+    );
+    bb.union(&b2);
+    *me = Node {
+        bb,
+        a: second_index as u32,
+        count: 0,
+    };
+    bb
+}
+
+/// [`build`] on one thread: the subtree over `items` goes to
+/// `nodes[*next..]`, and `*next` moves past it.
+fn build_seq(
+    boxes: &[Aabb],
+    items: &[u32],
+    start: usize,
+    nodes: &mut [Node],
+    base: usize,
+    next: &mut usize,
+) -> Aabb {
+    let me = *next;
+    *next += 1;
+    let n = items.len();
+    let node = if n <= LEAF {
         let mut bb = Aabb::EMPTY;
-        for &i in &items[start..end] {
+        for &i in items {
             bb.union(&boxes[i as usize]);
         }
-        bb
+        Node {
+            bb,
+            a: start as u32,
+            count: n as u32,
+        }
     } else {
-        let mid = start + (end - start) / 2;
-        let mut bb = build(boxes, items, start, mid, nodes);
-        let second = nodes.len();
-        bb.union(&build(boxes, items, mid, end, nodes));
-        nodes[me].a = second as u32;
-        nodes[me].count = 0;
-        bb
+        let mid = n / 2;
+        let mut bb = build_seq(boxes, &items[..mid], start, nodes, base, next);
+        let second = base + *next;
+        bb.union(&build_seq(
+            boxes,
+            &items[mid..],
+            start + mid,
+            nodes,
+            base,
+            next,
+        ));
+        Node {
+            bb,
+            a: second as u32,
+            count: 0,
+        }
     };
-    nodes[me].bb = bb;
-    bb
+    nodes[me] = node;
+    node.bb
 }
 
 impl Bvh {
@@ -582,5 +770,411 @@ mod tests {
             f.sort_unstable();
             assert_eq!(t, f);
         }
+    }
+}
+
+/// Property tests of the hierarchy against brute force and against the
+/// build it replaced, and of the rounding against the standard library.
+#[cfg(test)]
+mod props {
+    use super::*;
+    use crate::mesh::Flat;
+    use crate::par::FORCE;
+    use proptest::prelude::*;
+    use std::sync::atomic::Ordering;
+    use test_support::shapes::{tetra, uv_sphere};
+    use test_support::strategies::{float_coord, garbage_coord, grid_coord};
+
+    /// [`down`] by `f32::next_down`, with a branch.
+    fn down_ref(x: f64) -> f32 {
+        let f = x as f32;
+        if f64::from(f) > x {
+            f.next_down()
+        } else {
+            f
+        }
+    }
+
+    /// [`up`] by `f32::next_up`, with a branch.
+    fn up_ref(x: f64) -> f32 {
+        let f = x as f32;
+        if f64::from(f) < x {
+            f.next_up()
+        } else {
+            f
+        }
+    }
+
+    /// The 30-bit Morton code of `p` quantised to 10 bits per axis within
+    /// `cb`, computed from the box's bounds.
+    fn morton_ref(p: &[f64; 3], cb: &Aabb) -> u32 {
+        let mut code = 0u64;
+        for (c, &pc) in p.iter().enumerate() {
+            let (lo, hi) = (f64::from(cb.lo[c]), f64::from(cb.hi[c]));
+            let ext = hi * 0.5 - lo * 0.5;
+            let t = if ext > 0.0 {
+                (pc * 0.5 - lo * 0.5) / ext
+            } else {
+                0.0
+            };
+            let q = (t.clamp(0.0, 1.0) * 1023.0) as u64;
+            code |= spread(q) << c;
+        }
+        code as u32
+    }
+
+    /// The hierarchy as the plain recursive build makes it: the live items
+    /// sorted by (Morton code, index) within the bound grown centre by
+    /// centre (each rounded outwards), the nodes pushed in pre-order.
+    fn reference(boxes: &[Aabb]) -> (Vec<Node>, Vec<u32>) {
+        fn push(boxes: &[Aabb], items: &[u32], start: usize, end: usize, nodes: &mut Vec<Node>) {
+            let me = nodes.len();
+            nodes.push(Node {
+                bb: Aabb::EMPTY,
+                a: start as u32,
+                count: (end - start) as u32,
+            });
+            if end - start <= LEAF {
+                for &i in &items[start..end] {
+                    nodes[me].bb.union(&boxes[i as usize]);
+                }
+            } else {
+                let mid = start + (end - start) / 2;
+                push(boxes, items, start, mid, nodes);
+                let second = nodes.len();
+                push(boxes, items, mid, end, nodes);
+                let mut bb = nodes[me + 1].bb;
+                bb.union(&nodes[second].bb);
+                nodes[me] = Node {
+                    bb,
+                    a: second as u32,
+                    count: 0,
+                };
+            }
+        }
+        let live: Vec<u32> = (0..boxes.len() as u32)
+            .filter(|&i| live(&boxes[i as usize]))
+            .collect();
+        let mut cb = Aabb::EMPTY;
+        for &i in &live {
+            for (k, &c) in centroid(&boxes[i as usize]).iter().enumerate() {
+                cb.lo[k] = cb.lo[k].min(down_ref(c));
+                cb.hi[k] = cb.hi[k].max(up_ref(c));
+            }
+        }
+        let mut items = live;
+        items.sort_by_key(|&i| (morton_ref(&centroid(&boxes[i as usize]), &cb), i));
+        let mut nodes = Vec::new();
+        if !items.is_empty() {
+            push(boxes, &items, 0, items.len(), &mut nodes);
+        }
+        (nodes, items)
+    }
+
+    /// Every pair of live boxes within `margin`, by brute force.
+    fn brute(a: &[Aabb], b: &[Aabb], margin: f32) -> Vec<(u32, u32)> {
+        let mut out = Vec::new();
+        for (i, x) in a.iter().enumerate() {
+            for (j, y) in b.iter().enumerate() {
+                if live(x) && live(y) && x.within(y, margin) {
+                    out.push((i as u32, j as u32));
+                }
+            }
+        }
+        out
+    }
+
+    fn sorted(mut v: Vec<(u32, u32)>) -> Vec<(u32, u32)> {
+        v.sort_unstable();
+        v
+    }
+
+    fn coord() -> BoxedStrategy<f64> {
+        prop_oneof![
+            3 => grid_coord(6),
+            3 => float_coord().prop_map(|x| 6.0 * x),
+            1 => garbage_coord(),
+        ]
+        .boxed()
+    }
+
+    /// Random boxes: small, flat (zero extent), inverted in some axis,
+    /// huge (past the `f32` range), and empty.
+    fn boxes() -> BoxedStrategy<Vec<Aabb>> {
+        let extent = prop_oneof![
+            4 => 0.0..1.5f64,
+            1 => Just(0.0),
+            1 => Just(-0.5),
+            1 => Just(1e300),
+        ];
+        let one = prop_oneof![
+            12 => ([coord(), coord(), coord()], [extent.clone(), extent.clone(), extent])
+                .prop_map(|(p, e)| Aabb::new(p, [p[0] + e[0], p[1] + e[1], p[2] + e[2]])),
+            1 => Just(Aabb::EMPTY),
+        ];
+        proptest::collection::vec(one, 0..200).boxed()
+    }
+
+    /// Builds with the parallel split thresholds forced to `mode`.
+    fn forced_build(mode: u8, boxes: &[Aabb]) -> Bvh {
+        FORCE.store(mode, Ordering::Relaxed);
+        let t = Bvh::new(boxes);
+        FORCE.store(0, Ordering::Relaxed);
+        t
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(64))]
+
+        /// The build, sequential and split at every node, is the plain
+        /// recursive build node for node (so every query and pair search
+        /// visits the same nodes in the same order as before); pairs,
+        /// with and without a margin, and queries are brute force's; a
+        /// scanned side finds the same pairs.
+        #[test]
+        fn hierarchy_matches_reference_and_brute_force(a in boxes(), b in boxes()) {
+            for x in [&a, &b] {
+                let (nodes, items) = reference(x);
+                for mode in [1, 2] {
+                    let t = forced_build(mode, x);
+                    prop_assert_eq!(&t.nodes, &nodes);
+                    prop_assert_eq!(&t.items, &items);
+                }
+            }
+            let (ta, tb) = (Bvh::new(&a), Bvh::new(&b));
+            for margin in [0.0, 0.25] {
+                let want = brute(&a, &b, margin);
+                prop_assert_eq!(sorted(ta.pairs_within(&a, &tb, &b, margin)), want.clone());
+                prop_assert_eq!(
+                    sorted(Bvh::scan(&a).pairs_within(&a, &tb, &b, margin)),
+                    want.clone()
+                );
+                prop_assert_eq!(sorted(ta.pairs_within(&a, &Bvh::scan(&b), &b, margin)), want);
+            }
+            for q in b.iter().take(20) {
+                let mut got = Vec::new();
+                ta.query(q, &a, |i| got.push(i));
+                got.sort_unstable();
+                let want: Vec<u32> = (0..a.len() as u32)
+                    .filter(|&i| live(&a[i as usize]) && a[i as usize].overlaps(q))
+                    .collect();
+                prop_assert_eq!(got, want);
+            }
+        }
+
+        /// The branch-free rounding is the standard library's, bit for bit.
+        #[test]
+        fn rounding_matches_next_up_and_down(x in any::<f64>(), g in garbage_coord()) {
+            for v in [x, g, g * 1e-30, g * 1e-280] {
+                prop_assert_eq!(down(v).to_bits(), down_ref(v).to_bits());
+                prop_assert_eq!(up(v).to_bits(), up_ref(v).to_bits());
+            }
+        }
+
+        /// The facet boxes of a triangle mesh (read three half-edges at a
+        /// time) are those of the same facets as polygons, and contain the
+        /// facets' exact boxes, widened in y and z.
+        #[test]
+        fn triangle_boxes_match_polygon_boxes(p in proptest::collection::vec([garbage_coord(), coord(), coord()], 4)) {
+            let t = tetra([p[0], p[1], p[2], p[3]]);
+            let poly = t.to_polygon_mesh();
+            let (ft, fp) = (Flat::from_triangle_mesh(&t).unwrap(), Flat::from_polygon_mesh(&poly).unwrap());
+            let margin = 2f64.powi(-20);
+            let boxes = ft.facet_boxes(margin);
+            prop_assert_eq!(&boxes, &fp.facet_boxes(margin));
+            for (f, b) in t.triangles.iter().zip(&boxes) {
+                for &v in f {
+                    let q = t.vertices[v as usize];
+                    let widen = [0.0, margin, margin];
+                    for c in 0..3 {
+                        prop_assert!(f64::from(b.lo[c]) <= q[c] - widen[c]);
+                        prop_assert!(f64::from(b.hi[c]) >= q[c] + widen[c]);
+                    }
+                }
+            }
+        }
+    }
+
+    #[test]
+    fn rounding_at_the_edges_of_f32() {
+        let tiny = f64::from(f32::from_bits(1));
+        let max = f64::from(f32::MAX);
+        for v in [
+            0.0,
+            -0.0,
+            tiny,
+            -tiny,
+            tiny / 2.0,
+            -tiny / 2.0,
+            tiny * 1.5,
+            f64::MIN_POSITIVE,
+            -f64::MIN_POSITIVE,
+            f64::from(f32::MIN_POSITIVE) * (1.0 - f64::EPSILON),
+            max,
+            -max,
+            max * (1.0 + f64::EPSILON),
+            -max * (1.0 + f64::EPSILON),
+            max * 2.0,
+            f64::MAX,
+            f64::MIN,
+            f64::INFINITY,
+            f64::NEG_INFINITY,
+            f64::NAN,
+            1.0 + f64::EPSILON,
+            1.0 - f64::EPSILON,
+            -1.0 - f64::EPSILON,
+            0.1,
+            -0.1,
+        ] {
+            assert_eq!(down(v).to_bits(), down_ref(v).to_bits(), "{v:e}");
+            assert_eq!(up(v).to_bits(), up_ref(v).to_bits(), "{v:e}");
+            if !v.is_nan() {
+                assert!(f64::from(down(v)) <= v && f64::from(up(v)) >= v, "{v:e}");
+            }
+        }
+    }
+
+    /// A mesh large enough for the parallel build and pair search to split
+    /// with the default thresholds: the same hierarchy as the plain build,
+    /// and the pairs a sweep along x finds.
+    #[test]
+    fn large_mesh_hierarchy_matches_reference() {
+        let s = uv_sphere([0.0; 3], 1.0, 96, 64);
+        let t = uv_sphere([0.3, 0.2, 0.1], 0.9, 64, 48);
+        let (fs, ft) = (
+            Flat::from_triangle_mesh(&s).unwrap(),
+            Flat::from_triangle_mesh(&t).unwrap(),
+        );
+        let (bs, bt) = (fs.facet_boxes(1e-9), ft.facet_boxes(1e-9));
+        assert!(bs.len() >= 2 * crate::par::SEQUENTIAL_BELOW);
+        assert!(bt.len() >= crate::par::SEQUENTIAL_BELOW);
+        let (rs, items) = reference(&bs);
+        let (ts, tt) = (Bvh::new(&bs), Bvh::new(&bt));
+        assert_eq!(ts.nodes, rs);
+        assert_eq!(ts.items, items);
+        // The sweep: B's boxes by lower x; those that can reach a box of A
+        // start within the widest B box below its lower x.
+        let mut by_x: Vec<u32> = (0..bt.len() as u32).collect();
+        by_x.sort_by(|&i, &j| bt[i as usize].lo[0].total_cmp(&bt[j as usize].lo[0]));
+        let widest = bt
+            .iter()
+            .map(|b| f64::from(b.hi[0]) - f64::from(b.lo[0]))
+            .fold(0.0, f64::max);
+        let mut want = Vec::new();
+        for (i, a) in bs.iter().enumerate() {
+            let reach = f64::from(a.lo[0]) - widest;
+            let first = by_x.partition_point(|&j| f64::from(bt[j as usize].lo[0]) < reach);
+            for &j in &by_x[first..] {
+                if bt[j as usize].lo[0] > a.hi[0] {
+                    break;
+                }
+                if a.overlaps(&bt[j as usize]) {
+                    want.push((i as u32, j));
+                }
+            }
+        }
+        want.sort_unstable();
+        assert!(!want.is_empty());
+        assert_eq!(sorted(ts.pairs(&bs, &tt, &bt)), want);
+    }
+
+    /// The steps of the broad phase on one operand of the 1M-triangle
+    /// sphere difference on one thread, each the mean of a few runs (`cargo test
+    /// --release -p boolean-3d --lib broad_phase_timing -- --ignored
+    /// --nocapture`).
+    #[test]
+    #[ignore = "timing, for release builds"]
+    fn broad_phase_timing() {
+        /// The CPU time of the current thread (from the scheduler's
+        /// statistics) since the start, in ms; wall time where those are
+        /// missing.
+        struct Cpu(Option<u64>, std::time::Instant);
+        fn on_cpu() -> Option<u64> {
+            let s = std::fs::read_to_string("/proc/thread-self/schedstat").ok()?;
+            s.split_whitespace().next()?.parse().ok()
+        }
+        impl Cpu {
+            fn now() -> Cpu {
+                Cpu(on_cpu(), std::time::Instant::now())
+            }
+            fn elapsed_ms(&self) -> f64 {
+                match (self.0, on_cpu()) {
+                    (Some(a), Some(b)) => (b - a) as f64 * 1e-6,
+                    _ => self.1.elapsed().as_secs_f64() * 1e3,
+                }
+            }
+        }
+        use Cpu as Instant;
+        // The operands of `perf-table-3d`'s 1M row.
+        let d = 0.5 / 3f64.sqrt();
+        let m = uv_sphere([0.0; 3], 1.0, 1000, 500);
+        let o = uv_sphere([d, d * 1.1, d * 0.9], 1.0, 1000, 500);
+        let f = Flat::from_triangle_mesh(&m).unwrap();
+        let g = Flat::from_triangle_mesh(&o).unwrap();
+        let other = g.facet_boxes(1e-12);
+        let other_bvh = Bvh::new(&other);
+        // The mean of the runs (the scheduler's clock advances by ticks).
+        const RUNS: usize = 8;
+        let mut best = [0.0; 8];
+        let mut time = |k: usize, t: Cpu| best[k] += t.elapsed_ms() / RUNS as f64;
+        let mut found = (0, 0);
+        // On one thread, timed by its CPU time: other processes on the
+        // machine do not count.
+        let pool = rayon::ThreadPoolBuilder::new()
+            .num_threads(1)
+            .build()
+            .unwrap();
+        pool.install(|| {
+            for _ in 0..7 {
+                let t = Instant::now();
+                let boxes = f.facet_boxes(1e-12);
+                time(0, t);
+                let t = Instant::now();
+                let cb = centre_bound(&boxes);
+                time(1, t);
+                let t = Instant::now();
+                let keys = morton_keys(&boxes, &Quantiser::new(&cb));
+                time(2, t);
+                let t = Instant::now();
+                let keys = radix_sort_codes(keys);
+                time(3, t);
+                drop(keys);
+                let t = Instant::now();
+                let bvh = Bvh::new(&boxes);
+                time(4, t);
+                let t = Instant::now();
+                let mut nodes = vec![Node::PLACEHOLDER; node_count(bvh.items.len())];
+                build(&boxes, &bvh.items, 0, &mut nodes, 0);
+                time(5, t);
+                assert_eq!(nodes, bvh.nodes);
+                drop(nodes);
+                let t = Instant::now();
+                found.0 = bvh.pairs(&boxes, &other_bvh, &other).len();
+                time(6, t);
+                // Upward rays from every 10th vertex of the other operand.
+                let t = Instant::now();
+                found.1 = 0;
+                for v in o.vertices.iter().step_by(10) {
+                    let q = Aabb::new(*v, [v[0], v[1], f64::INFINITY]);
+                    bvh.query(&q, &boxes, |_| found.1 += 1);
+                }
+                time(7, t);
+            }
+        });
+        eprintln!(
+            "{} facets: boxes {:.1} ms, centre bound {:.1}, keys {:.1}, sort {:.1}; \
+             Bvh::new {:.1} (build {:.1}); {} pairs {:.1}; {} ray hits {:.1}",
+            f.facet_count(),
+            best[0],
+            best[1],
+            best[2],
+            best[3],
+            best[4],
+            best[5],
+            found.0,
+            best[6],
+            found.1,
+            best[7],
+        );
     }
 }

@@ -399,32 +399,47 @@ impl<'a> Flat<'a> {
     /// The closed bounding box of every facet, widened by `margin` in y and
     /// z.
     pub fn facet_boxes(&self, margin: f64) -> Vec<Aabb> {
+        // Exact bounds first (by facet closure every end is also a start),
+        // widened, then rounded outwards once.
+        fn bound(pos: &[Point3], starts: impl Iterator<Item = u32>, margin: f64) -> Aabb {
+            let mut lo = [f64::INFINITY; 3];
+            let mut hi = [f64::NEG_INFINITY; 3];
+            for s in starts {
+                let p = &pos[s as usize];
+                // Plain comparisons: the coordinates are finite.
+                for c in 0..3 {
+                    if p[c] < lo[c] {
+                        lo[c] = p[c];
+                    }
+                    if p[c] > hi[c] {
+                        hi[c] = p[c];
+                    }
+                }
+            }
+            if lo[0] > hi[0] {
+                Aabb::EMPTY
+            } else {
+                // The safety margin in y and z (see `level3`).
+                for c in 1..3 {
+                    lo[c] -= margin;
+                    hi[c] += margin;
+                }
+                Aabb::new(lo, hi)
+            }
+        }
+        if let HalfEdges::Triangles(t) = &self.half_edges {
+            // A triangle's corners straight from the caller's array: no
+            // half-edge to decode, no offsets to read.
+            return t
+                .par_iter()
+                .with_min_len(crate::par::min_len(1))
+                .map(|t| bound(self.pos, t.iter().copied(), margin))
+                .collect();
+        }
         (0..self.facet_count() as u32)
             .into_par_iter()
             .with_min_len(crate::par::min_len(1))
-            .map(|f| {
-                // Exact bounds first (by facet closure every end is also a
-                // start), rounded outwards once.
-                let mut lo = [f64::INFINITY; 3];
-                let mut hi = [f64::NEG_INFINITY; 3];
-                for (s, _) in self.facet_half_edges(f) {
-                    let p = &self.pos[s as usize];
-                    for c in 0..3 {
-                        lo[c] = lo[c].min(p[c]);
-                        hi[c] = hi[c].max(p[c]);
-                    }
-                }
-                if lo[0] > hi[0] {
-                    Aabb::EMPTY
-                } else {
-                    // The safety margin in y and z (see `level3`).
-                    for c in 1..3 {
-                        lo[c] -= margin;
-                        hi[c] += margin;
-                    }
-                    Aabb::new(lo, hi)
-                }
-            })
+            .map(|f| bound(self.pos, self.facet_half_edges(f).map(|h| h.0), margin))
             .collect()
     }
 }
