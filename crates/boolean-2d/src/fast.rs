@@ -761,9 +761,7 @@ pub(crate) fn level2_fast(
     max_abs: f64,
 ) -> Result<(LevelData, Level2Times), BooleanError> {
     let mut times = Level2Times::default();
-    // One thread: no hand-off to the pool (the output is the same).
-    let parallel =
-        a.edge_count() + b.edge_count() >= PARALLEL_EDGES && rayon::current_num_threads() >= 2;
+    let parallel = a.edge_count() + b.edge_count() >= PARALLEL_EDGES;
     let clock = Instant::now();
     let margin = margin_for(max_abs);
     let (boxes_a, boxes_b) = join(parallel, || edge_boxes(a, margin), || edge_boxes(b, margin));
