@@ -76,6 +76,8 @@ struct Inputs<'a> {
     op: BooleanOp,
     data: &'a LevelData,
     by_b: &'a [u32],
+    /// Whether to record `LevelData::composite_counts`.
+    record_counts: bool,
 }
 
 /// Which operand a block of edges belongs to.
@@ -86,7 +88,8 @@ enum Side {
 }
 
 /// Builds the result from level-2 data. `data.x11` must be sorted by edge
-/// of A then edge of B; fills `data.composite_counts`.
+/// of A then edge of B; fills `data.composite_counts` when `record_counts`
+/// (and leaves it empty otherwise).
 ///
 /// Each edge's composite edge is paired on its own (eq. 4.14-4.16), in
 /// blocks of consecutive edges (in parallel on long inputs); the output
@@ -97,6 +100,7 @@ pub(crate) fn construct(
     b: &PolygonSet2,
     op: BooleanOp,
     data: &mut LevelData,
+    record_counts: bool,
 ) -> Result<PolygonSet2, BooleanError> {
     let by_b = order_by_b(&data.x11, b.edge_count());
     let (na, nb) = (a.edge_count(), b.edge_count());
@@ -107,6 +111,7 @@ pub(crate) fn construct(
         op,
         data: data_ref,
         by_b: &by_b,
+        record_counts,
     };
     let mut out = Output {
         vertices: Vec::with_capacity(a.vertex_count() + b.vertex_count() + data.x11.len()),
@@ -115,7 +120,7 @@ pub(crate) fn construct(
     let mut a_ids = Ids::new(a.vertex_count());
     let mut b_ids = Ids::new(b.vertex_count());
     let mut x_ids = Ids::new(data.x11.len());
-    let mut counts = Vec::with_capacity(na + nb);
+    let mut counts = Vec::with_capacity(if record_counts { na + nb } else { 0 });
 
     if na + nb < PARALLEL_EDGES || rayon::current_num_threads() < 2 {
         // One pass: every retained part goes to the output at once.
@@ -178,7 +183,14 @@ fn block_a(
     counts: &mut Vec<(u32, u32)>,
     sink: &mut impl FnMut(u32, u32, i32),
 ) -> Result<(), BooleanError> {
-    let Inputs { a, b, op, data, .. } = *inputs;
+    let Inputs {
+        a,
+        b,
+        op,
+        data,
+        record_counts,
+        ..
+    } = *inputs;
     let (ca, _, ci) = op.coefficients();
     let (a_points, b_edges) = (a.vertices(), b.edges());
     let mut edge = Ends::default();
@@ -204,7 +216,13 @@ fn block_a(
             edge.assign(j as u32 | TAG_X, p, ci * x * mb);
             j += 1;
         }
-        emit(&mut edge, &mut pairs, counts, ia, "A")?;
+        emit(
+            &mut edge,
+            &mut pairs,
+            record_counts.then_some(&mut *counts),
+            ia,
+            "A",
+        )?;
         for &(s, e) in &pairs {
             sink(s, e, ea.mult);
         }
@@ -228,6 +246,7 @@ fn block_b(
         op,
         data,
         by_b,
+        record_counts,
     } = *inputs;
     let (_, cb, ci) = op.coefficients();
     let (b_points, a_edges) = (b.vertices(), a.edges());
@@ -254,7 +273,13 @@ fn block_b(
         let i_s = cb + ci * data.x20[eb.start as usize];
         edge.assign(eb.end, b_points[eb.end as usize], i_e);
         edge.assign(eb.start, b_points[eb.start as usize], -i_s);
-        emit(&mut edge, &mut pairs, counts, ib, "B")?;
+        emit(
+            &mut edge,
+            &mut pairs,
+            record_counts.then_some(&mut *counts),
+            ib,
+            "B",
+        )?;
         for &(s, e) in &pairs {
             sink(s, e, eb.mult);
         }
@@ -341,16 +366,18 @@ impl Ends {
 }
 
 /// Pairs the composite edge of edge `index` of `operand`, recording
-/// its counts.
+/// its counts in `counts` if given.
 fn emit(
     edge: &mut Ends,
     pairs: &mut Vec<(u32, u32)>,
-    counts: &mut Vec<(u32, u32)>,
+    counts: Option<&mut Vec<(u32, u32)>>,
     index: usize,
     operand: &str,
 ) -> Result<(), BooleanError> {
     pairs.clear();
-    counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
+    if let Some(counts) = counts {
+        counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
+    }
     pair_along(&mut edge.starts, &mut edge.ends, |t| t.1, |t| t.0, pairs).ok_or_else(|| {
         BooleanError::Internal(format!(
             "Theorem 2 violated: composite edge of {operand}'s edge {index} has {} starts and {} ends",
