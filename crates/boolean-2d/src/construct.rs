@@ -332,8 +332,17 @@ fn resolve(
 /// (eq. 4.14-4.16) reads it without a second look-up.
 #[derive(Default)]
 struct Ends {
-    starts: Vec<(u32, [f64; 2])>,
-    ends: Vec<(u32, [f64; 2])>,
+    starts: Vec<End>,
+    ends: Vec<End>,
+}
+
+/// A start- or end-vertex of an [`Ends`]. The id is widened to 64 bits so
+/// that the struct has no padding: a padded `(u32, [f64; 2])` was built on
+/// the stack and copied with overlapping loads, which stalled every push.
+#[derive(Clone, Copy)]
+struct End {
+    pos: [f64; 2],
+    id: u64,
 }
 
 impl Ends {
@@ -344,8 +353,14 @@ impl Ends {
     fn assign(&mut self, id: u32, pos: [f64; 2], n: i32) {
         match n {
             0 => {}
-            1 => self.ends.push((id, pos)),
-            -1 => self.starts.push((id, pos)),
+            1 => self.ends.push(End {
+                pos,
+                id: u64::from(id),
+            }),
+            -1 => self.starts.push(End {
+                pos,
+                id: u64::from(id),
+            }),
             _ => {
                 let list = if n > 0 {
                     &mut self.ends
@@ -353,7 +368,10 @@ impl Ends {
                     &mut self.starts
                 };
                 for _ in 0..n.unsigned_abs() {
-                    list.push((id, pos));
+                    list.push(End {
+                        pos,
+                        id: u64::from(id),
+                    });
                 }
             }
         }
@@ -378,7 +396,7 @@ fn emit(
     if let Some(counts) = counts {
         counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
     }
-    pair_along(&mut edge.starts, &mut edge.ends, |t| t.1, |t| t.0, pairs).ok_or_else(|| {
+    pair_along(&mut edge.starts, &mut edge.ends, |t| t.pos, |t| t.id as u32, pairs).ok_or_else(|| {
         BooleanError::Internal(format!(
             "Theorem 2 violated: composite edge of {operand}'s edge {index} has {} starts and {} ends",
             edge.starts.len(),
