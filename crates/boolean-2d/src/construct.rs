@@ -6,7 +6,26 @@ use crate::error::BooleanError;
 use crate::level_data::LevelData;
 use rayon::prelude::*;
 use topology::BooleanOp;
-use topology::PolygonSet2;
+use topology::{Edge2, PolygonSet2};
+
+/// The output under construction: its vertices and edges, pushed here
+/// (in the same order as `PolygonSet2::add_vertex` and `add_edge_mult`
+/// would) and turned into a [`PolygonSet2`] once, at the end.
+struct Output {
+    vertices: Vec<[f64; 2]>,
+    edges: Vec<Edge2>,
+}
+
+impl Output {
+    #[inline]
+    fn add_edge(&mut self, start: u32, end: u32, mult: i32) {
+        self.edges.push(Edge2 { start, end, mult });
+    }
+
+    fn finish(self) -> PolygonSet2 {
+        PolygonSet2::from_parts(self.vertices, self.edges)
+    }
+}
 
 /// Lazily numbered output vertices.
 struct Ids {
@@ -19,10 +38,12 @@ impl Ids {
             map: vec![u32::MAX; n],
         }
     }
-    fn get(&mut self, i: u32, pos: [f64; 2], out: &mut PolygonSet2) -> u32 {
+    #[inline]
+    fn get(&mut self, i: u32, pos: [f64; 2], out: &mut Output) -> u32 {
         let slot = &mut self.map[i as usize];
         if *slot == u32::MAX {
-            *slot = out.add_vertex(pos);
+            *slot = out.vertices.len() as u32;
+            out.vertices.push(pos);
         }
         *slot
     }
@@ -55,6 +76,8 @@ struct Inputs<'a> {
     op: BooleanOp,
     data: &'a LevelData,
     by_b: &'a [u32],
+    /// Whether to record `LevelData::composite_counts`.
+    record_counts: bool,
 }
 
 /// Which operand a block of edges belongs to.
@@ -65,7 +88,8 @@ enum Side {
 }
 
 /// Builds the result from level-2 data. `data.x11` must be sorted by edge
-/// of A then edge of B; fills `data.composite_counts`.
+/// of A then edge of B; fills `data.composite_counts` when `record_counts`
+/// (and leaves it empty otherwise).
 ///
 /// Each edge's composite edge is paired on its own (eq. 4.14-4.16), in
 /// blocks of consecutive edges (in parallel on long inputs); the output
@@ -76,6 +100,7 @@ pub(crate) fn construct(
     b: &PolygonSet2,
     op: BooleanOp,
     data: &mut LevelData,
+    record_counts: bool,
 ) -> Result<PolygonSet2, BooleanError> {
     let by_b = order_by_b(&data.x11, b.edge_count());
     let (na, nb) = (a.edge_count(), b.edge_count());
@@ -86,22 +111,23 @@ pub(crate) fn construct(
         op,
         data: data_ref,
         by_b: &by_b,
+        record_counts,
     };
-    let mut out = PolygonSet2::with_capacity(
-        a.vertex_count() + b.vertex_count() + data.x11.len(),
-        a.edge_count() + b.edge_count() + 2 * data.x11.len(),
-    );
+    let mut out = Output {
+        vertices: Vec::with_capacity(a.vertex_count() + b.vertex_count() + data.x11.len()),
+        edges: Vec::with_capacity(a.edge_count() + b.edge_count() + 2 * data.x11.len()),
+    };
     let mut a_ids = Ids::new(a.vertex_count());
     let mut b_ids = Ids::new(b.vertex_count());
     let mut x_ids = Ids::new(data.x11.len());
-    let mut counts = Vec::with_capacity(na + nb);
+    let mut counts = Vec::with_capacity(if record_counts { na + nb } else { 0 });
 
     if na + nb < PARALLEL_EDGES || rayon::current_num_threads() < 2 {
         // One pass: every retained part goes to the output at once.
         let mut sink = |own: &PolygonSet2, own_ids: &mut Ids, s: u32, e: u32, m: i32| {
             let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
             let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
-            out.add_edge_mult(s, e, m);
+            out.add_edge(s, e, m);
         };
         block_a(&inputs, 0, na, &mut counts, &mut |s, e, m| {
             sink(a, &mut a_ids, s, e, m)
@@ -110,7 +136,7 @@ pub(crate) fn construct(
             sink(b, &mut b_ids, s, e, m)
         })?;
         data.composite_counts = counts;
-        return Ok(out);
+        return Ok(out.finish());
     }
 
     let mut tasks: Vec<(Side, usize, usize)> = Vec::new();
@@ -141,12 +167,12 @@ pub(crate) fn construct(
         for &(s, e, m) in &block.pieces {
             let s = resolve(s, own, own_ids, data_ref, &mut x_ids, &mut out);
             let e = resolve(e, own, own_ids, data_ref, &mut x_ids, &mut out);
-            out.add_edge_mult(s, e, m);
+            out.add_edge(s, e, m);
         }
         counts.extend_from_slice(&block.counts);
     }
     data.composite_counts = counts;
-    Ok(out)
+    Ok(out.finish())
 }
 
 /// The retained parts of A's edges `lo..hi` (eq. 4.7-4.8 and section 4.6).
@@ -157,8 +183,16 @@ fn block_a(
     counts: &mut Vec<(u32, u32)>,
     sink: &mut impl FnMut(u32, u32, i32),
 ) -> Result<(), BooleanError> {
-    let Inputs { a, b, op, data, .. } = *inputs;
+    let Inputs {
+        a,
+        b,
+        op,
+        data,
+        record_counts,
+        ..
+    } = *inputs;
     let (ca, _, ci) = op.coefficients();
+    let (a_points, b_edges) = (a.vertices(), b.edges());
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
     let mut k = data.x11.partition_point(|h| (h.0 as usize) < lo);
@@ -172,17 +206,23 @@ fn block_a(
         edge.clear();
         let i_e = ca + ci * data.x02[ea.end as usize]; // eq. 4.7 at v_e
         let i_s = ca + ci * data.x02[ea.start as usize]; // eq. 4.7 at v_s
-        edge.assign(ea.end, i_e);
-        edge.assign(ea.start, -i_s);
+        edge.assign(ea.end, a_points[ea.end as usize], i_e);
+        edge.assign(ea.start, a_points[ea.start as usize], -i_s);
         let mut j = k;
         while j < data.x11.len() && data.x11[j].0 as usize == ia {
-            let (_, ib, x, _) = data.x11[j];
-            let mb = b.edges()[ib as usize].mult;
+            let (_, ib, x, p) = data.x11[j];
+            let mb = b_edges[ib as usize].mult;
             // eq. 4.8: I11 = c_I X11, once per unit of B's edge.
-            edge.assign(j as u32 | TAG_X, ci * x * mb);
+            edge.assign(j as u32 | TAG_X, p, ci * x * mb);
             j += 1;
         }
-        emit(&mut edge, &mut pairs, counts, a, data, ia, "A")?;
+        emit(
+            &mut edge,
+            &mut pairs,
+            record_counts.then_some(&mut *counts),
+            ia,
+            "A",
+        )?;
         for &(s, e) in &pairs {
             sink(s, e, ea.mult);
         }
@@ -206,8 +246,10 @@ fn block_b(
         op,
         data,
         by_b,
+        record_counts,
     } = *inputs;
     let (_, cb, ci) = op.coefficients();
+    let (b_points, a_edges) = (b.vertices(), a.edges());
     let mut edge = Ends::default();
     let mut pairs = Vec::new();
     let mut k = by_b.partition_point(|&j| (data.x11[j as usize].1 as usize) < lo);
@@ -222,16 +264,22 @@ fn block_b(
         let mut j = k;
         while j < by_b.len() && data.x11[by_b[j] as usize].1 as usize == ib {
             let idx = by_b[j];
-            let (ia, _, x, _) = data.x11[idx as usize];
-            let ma = a.edges()[ia as usize].mult;
-            edge.assign(idx | TAG_X, -ci * x * ma);
+            let (ia, _, x, p) = data.x11[idx as usize];
+            let ma = a_edges[ia as usize].mult;
+            edge.assign(idx | TAG_X, p, -ci * x * ma);
             j += 1;
         }
         let i_e = cb + ci * data.x20[eb.end as usize]; // eq. 4.10 at v_e
         let i_s = cb + ci * data.x20[eb.start as usize];
-        edge.assign(eb.end, i_e);
-        edge.assign(eb.start, -i_s);
-        emit(&mut edge, &mut pairs, counts, b, data, ib, "B")?;
+        edge.assign(eb.end, b_points[eb.end as usize], i_e);
+        edge.assign(eb.start, b_points[eb.start as usize], -i_s);
+        emit(
+            &mut edge,
+            &mut pairs,
+            record_counts.then_some(&mut *counts),
+            ib,
+            "B",
+        )?;
         for &(s, e) in &pairs {
             sink(s, e, eb.mult);
         }
@@ -268,7 +316,7 @@ fn resolve(
     own_ids: &mut Ids,
     data: &LevelData,
     x_ids: &mut Ids,
-    out: &mut PolygonSet2,
+    out: &mut Output,
 ) -> u32 {
     if id & TAG_X != 0 {
         let j = id & !TAG_X;
@@ -278,27 +326,54 @@ fn resolve(
     }
 }
 
-/// A composite edge under construction (section 4.6) by vertex id alone
-/// (ids tagged as in [`resolve`]); positions are looked up only to order
-/// two or more pairs (eq. 4.14-4.16).
+/// A composite edge under construction (section 4.6): `(id, position)`
+/// per start- and end-vertex, ids tagged as in [`resolve`]. The position
+/// is copied in once, when assigned, so that ordering two or more pairs
+/// (eq. 4.14-4.16) reads it without a second look-up.
 #[derive(Default)]
 struct Ends {
-    starts: Vec<u32>,
-    ends: Vec<u32>,
+    starts: Vec<End>,
+    ends: Vec<End>,
+}
+
+/// A start- or end-vertex of an [`Ends`]. The id is widened to 64 bits so
+/// that the struct has no padding: a padded `(u32, [f64; 2])` was built on
+/// the stack and copied with overlapping loads, which stalled every push.
+#[derive(Clone, Copy)]
+struct End {
+    pos: [f64; 2],
+    id: u64,
 }
 
 impl Ends {
-    /// Assigns vertex `id` a net end-vertex count `n`, as
-    /// [`crate::CompositeEdge::assign`] does.
+    /// Assigns vertex `id` at `pos` a net end-vertex count `n`, as
+    /// [`crate::CompositeEdge::assign`] does (a count of one, the common
+    /// case, without the loop).
     #[inline]
-    fn assign(&mut self, id: u32, n: i32) {
-        let list = if n > 0 {
-            &mut self.ends
-        } else {
-            &mut self.starts
-        };
-        for _ in 0..n.unsigned_abs() {
-            list.push(id);
+    fn assign(&mut self, id: u32, pos: [f64; 2], n: i32) {
+        match n {
+            0 => {}
+            1 => self.ends.push(End {
+                pos,
+                id: u64::from(id),
+            }),
+            -1 => self.starts.push(End {
+                pos,
+                id: u64::from(id),
+            }),
+            _ => {
+                let list = if n > 0 {
+                    &mut self.ends
+                } else {
+                    &mut self.starts
+                };
+                for _ in 0..n.unsigned_abs() {
+                    list.push(End {
+                        pos,
+                        id: u64::from(id),
+                    });
+                }
+            }
         }
     }
 
@@ -308,27 +383,20 @@ impl Ends {
     }
 }
 
-/// Pairs the composite edge of edge `index` of `operand` (`own`), recording
-/// its counts.
+/// Pairs the composite edge of edge `index` of `operand`, recording
+/// its counts in `counts` if given.
 fn emit(
     edge: &mut Ends,
     pairs: &mut Vec<(u32, u32)>,
-    counts: &mut Vec<(u32, u32)>,
-    own: &PolygonSet2,
-    data: &LevelData,
+    counts: Option<&mut Vec<(u32, u32)>>,
     index: usize,
     operand: &str,
 ) -> Result<(), BooleanError> {
     pairs.clear();
-    counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
-    let pos = |&id: &u32| {
-        if id & TAG_X != 0 {
-            data.x11[(id & !TAG_X) as usize].3
-        } else {
-            own.vertex(id)
-        }
-    };
-    pair_along(&mut edge.starts, &mut edge.ends, pos, |&id| id, pairs).ok_or_else(|| {
+    if let Some(counts) = counts {
+        counts.push((edge.starts.len() as u32, edge.ends.len() as u32));
+    }
+    pair_along(&mut edge.starts, &mut edge.ends, |t| t.pos, |t| t.id as u32, pairs).ok_or_else(|| {
         BooleanError::Internal(format!(
             "Theorem 2 violated: composite edge of {operand}'s edge {index} has {} starts and {} ends",
             edge.starts.len(),

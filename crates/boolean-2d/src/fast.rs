@@ -309,20 +309,37 @@ fn intersections(
     b: &PolygonSet2,
     pairs: &[(u32, u32)],
 ) -> Result<Vec<Hit11>, BooleanError> {
-    let eval = |ia: u32, ib: u32| -> Result<Option<Hit11>, BooleanError> {
-        let (as_, ae) = a.edge_points(&a.edges()[ia as usize]);
-        let (bs, be) = b.edge_points(&b.edges()[ib as usize]);
-        let hit = x11(&as_, &ae, &bs, &be)
-            .map_err(|e| BooleanError::Internal(format!("edges {ia}, {ib}: {e}")))?;
-        Ok(hit.map(|h| (ia, ib, h.value, h.a)))
+    // Each hit is written where it goes, field by field, rather than
+    // returned as an `Option<Hit11>`: its padded layout went through the
+    // stack with overlapping copies, a store-forwarding stall per pair.
+    let (a_points, a_edges) = (a.vertices(), a.edges());
+    let (b_points, b_edges) = (b.vertices(), b.edges());
+    let eval = |ia: u32, ib: u32, out: &mut Hit11| -> Result<bool, BooleanError> {
+        let ea = &a_edges[ia as usize];
+        let eb = &b_edges[ib as usize];
+        let (as_, ae) = (a_points[ea.start as usize], a_points[ea.end as usize]);
+        let (bs, be) = (b_points[eb.start as usize], b_points[eb.end as usize]);
+        match x11(&as_, &ae, &bs, &be) {
+            Ok(Some(h)) => {
+                out.0 = ia;
+                out.1 = ib;
+                out.2 = h.value;
+                out.3[0] = h.a[0];
+                out.3[1] = h.a[1];
+                Ok(true)
+            }
+            Ok(None) => Ok(false),
+            Err(e) => Err(BooleanError::Internal(format!("edges {ia}, {ib}: {e}"))),
+        }
     };
     let threads = rayon::current_num_threads();
     if pairs.len() < PARALLEL_PAIRS || threads < 2 {
         // About two of three candidate pairs cross on the n-gons of Table
         // 7.4; the vector grows where more do.
         let mut hits = Vec::with_capacity(pairs.len() - pairs.len() / 4);
+        let mut h: Hit11 = (0, 0, 0, [0.0; 2]);
         for &(ia, ib) in pairs {
-            if let Some(h) = eval(ia, ib)? {
+            if eval(ia, ib, &mut h)? {
                 hits.push(h);
             }
         }
@@ -341,8 +358,7 @@ fn intersections(
         .map(|(region, pairs)| -> Result<usize, BooleanError> {
             let mut n = 0;
             for &(ia, ib) in pairs {
-                if let Some(h) = eval(ia, ib)? {
-                    region[n] = h;
+                if eval(ia, ib, &mut region[n])? {
                     n += 1;
                 }
             }

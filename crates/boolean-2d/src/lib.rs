@@ -88,7 +88,11 @@ pub fn boolean(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<BooleanOutput, BooleanError> {
-    boolean_audit(a, b, op).map(|(out, _)| out)
+    // The level data is dropped: no composite counts to record.
+    run(a, b, op, false, |timings, max_abs| {
+        level2(a, b, timings, max_abs)
+    })
+    .map(|(out, _)| out)
 }
 
 /// [`boolean`], also returning the level data it built from (for audits:
@@ -98,13 +102,23 @@ pub fn boolean_audit(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
-    run(a, b, op, |timings, max_abs| {
-        let (data, t) = fast::level2_fast(a, b, max_abs)?;
-        timings.broad_phase = t.broad_phase;
-        timings.intersections = t.intersections;
-        timings.winding = t.winding;
-        Ok(data)
+    run(a, b, op, true, |timings, max_abs| {
+        level2(a, b, timings, max_abs)
     })
+}
+
+/// Level 2 by the fast path, recording its phase timings.
+fn level2(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    timings: &mut Timings,
+    max_abs: f64,
+) -> Result<LevelData, BooleanError> {
+    let (data, t) = fast::level2_fast(a, b, max_abs)?;
+    timings.broad_phase = t.broad_phase;
+    timings.intersections = t.intersections;
+    timings.winding = t.winding;
+    Ok(data)
 }
 
 /// The 2D Boolean with level 2 evaluated by brute force (every vertex
@@ -115,7 +129,7 @@ pub fn boolean_reference(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
-    run(a, b, op, |timings, _| {
+    run(a, b, op, true, |timings, _| {
         let clock = Instant::now();
         let data = reference::level2_brute_force(a, b)?;
         timings.intersections = ms(clock);
@@ -125,11 +139,13 @@ pub fn boolean_reference(
 
 /// One Boolean: validation, level 2 by `level2` (which records its own
 /// phase timings and gets the largest coordinate magnitude of both
-/// operands), levels 3-4, the output.
+/// operands), levels 3-4, the output; the level data's composite counts
+/// are recorded when `record_counts`.
 fn run(
     a: &PolygonSet2,
     b: &PolygonSet2,
     op: BooleanOp,
+    record_counts: bool,
     level2: impl FnOnce(&mut Timings, f64) -> Result<LevelData, BooleanError>,
 ) -> Result<(BooleanOutput, LevelData), BooleanError> {
     let start = Instant::now();
@@ -140,7 +156,7 @@ fn run(
     let max_abs = a.max_abs_coordinate().max(b.max_abs_coordinate());
     let mut data = level2(&mut timings, max_abs)?;
     let clock = Instant::now();
-    let shape = construct::construct(a, b, op, &mut data)?;
+    let shape = construct::construct(a, b, op, &mut data, record_counts)?;
     timings.construct = ms(clock);
     timings.total = ms(start);
     Ok((output(max_abs, shape, &data, timings), data))
