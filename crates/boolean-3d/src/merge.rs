@@ -19,7 +19,7 @@
 use crate::mesh::Flat;
 use crate::par;
 use rayon::prelude::*;
-use robust_arith::{orient2d, orient3d, Point3};
+use robust_arith::{orient2d, orient3d, power_of_two_bound, Point3, UNIT_ROUNDOFF};
 use std::cmp::Ordering;
 use topology::TopologyError;
 
@@ -96,10 +96,62 @@ fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
     Some((axis as u8, o))
 }
 
+/// A static filter for `orient3d` on the points of one mesh: with every
+/// coordinate at most `L` in magnitude (`L` a power of two), every
+/// difference is at most `2L`, every product at most `4L^2`, and the
+/// permanent that Shewchuk's first-stage error bound multiplies at most
+/// `48 L^3` (each rounding monotone, each bound representable), so a
+/// determinant computed in his operation order beyond `errbound_A * 48 L^3`
+/// has the exact sign. Within `[2^-200, 2^200]` no product can overflow,
+/// and underflow errors (absolute, a few `2^-1074`) stay far below the
+/// bound. Outside that range, or near zero, the exact `orient3d` decides.
+#[derive(Clone, Copy, Debug)]
+struct StaticOrient3d {
+    bound: f64,
+}
+
+impl StaticOrient3d {
+    fn new(points: &[Point3]) -> StaticOrient3d {
+        let max = points
+            .iter()
+            .flat_map(|p| p.iter())
+            .fold(0.0f64, |m, &c| m.max(c.abs()));
+        let l = power_of_two_bound(max);
+        let bound = if (2f64.powi(-200)..=2f64.powi(200)).contains(&l) {
+            // Shewchuk's o3derrboundA, (7 + 56 eps) eps, on 48 L^3, and a
+            // margin of 2^-40 for the rounding of the bound itself.
+            let eps = UNIT_ROUNDOFF;
+            (7.0 + 56.0 * eps) * eps * (48.0 * l * l * l) * (1.0 + 2f64.powi(-40))
+        } else {
+            f64::INFINITY
+        };
+        StaticOrient3d { bound }
+    }
+
+    /// Whether `orient3d(a, b, c, d)` is certainly not zero (`false`:
+    /// undecided).
+    #[inline]
+    fn certainly_nonzero(&self, a: Point3, b: Point3, c: Point3, d: Point3) -> bool {
+        let (adx, bdx, cdx) = (a[0] - d[0], b[0] - d[0], c[0] - d[0]);
+        let (ady, bdy, cdy) = (a[1] - d[1], b[1] - d[1], c[1] - d[1]);
+        let (adz, bdz, cdz) = (a[2] - d[2], b[2] - d[2], c[2] - d[2]);
+        let det = adz * (bdx * cdy - cdx * bdy)
+            + bdz * (cdx * ady - adx * cdy)
+            + cdz * (adx * bdy - bdx * ady);
+        det.abs() > self.bound
+    }
+}
+
 /// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
 /// triangle mesh's flat form may be merged across their edge; `axes` holds
 /// [`flat_axis`] of every triangle.
-fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32) -> bool {
+fn mergeable(
+    flat: &Flat<'_>,
+    axes: &[Option<(u8, Ordering)>],
+    filter: &StaticOrient3d,
+    h1: u32,
+    h2: u32,
+) -> bool {
     let (t1, t2) = (h1 / 3, h2 / 3);
     if t1 == t2 {
         return false;
@@ -125,7 +177,9 @@ fn mergeable(flat: &Flat<'_>, axes: &[Option<(u8, Ordering)>], h1: u32, h2: u32)
     // coordinate plane is then the one to project on), else the exact
     // orient3d.
     let shared = (0..3).find(|&k| pu[k] == pv[k] && pu[k] == p1[k] && pu[k] == p2[k]);
-    if shared.is_none() && orient3d(pu, pv, p1, p2) != Ordering::Equal {
+    if shared.is_none()
+        && (filter.certainly_nonzero(pu, pv, p1, p2) || orient3d(pu, pv, p1, p2) != Ordering::Equal)
+    {
         return false;
     }
     let first = shared.and_then(|axis| {
@@ -160,6 +214,7 @@ impl Merged {
             .with_min_len(par::min_len(1))
             .map(|t| flat_axis(&flat, t))
             .collect();
+        let filter = StaticOrient3d::new(flat.pos);
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()
@@ -175,7 +230,7 @@ impl Merged {
                 if s1 == e1 || s1 != e2 || e1 != s2 {
                     return None;
                 }
-                mergeable(&flat, &axes, h1, h2).then_some((h1, h2))
+                mergeable(&flat, &axes, &filter, h1, h2).then_some((h1, h2))
             })
             .collect();
         if pairs.is_empty() {
@@ -469,6 +524,96 @@ mod tests {
     fn pyramid(p: Point3) -> (bool, usize, Vec<u32>) {
         let m = pyramid_mesh(p);
         merged(m.vertices, m.triangles)
+    }
+
+    proptest::proptest! {
+        /// The static filter is never certain of a zero `orient3d`: random
+        /// points, points on slanted lattice planes (exactly coplanar),
+        /// such points moved by a few units in the last place, and points
+        /// with random mantissas on the planes z = x and z = -y (exactly
+        /// coplanar, rounding noise in the computed determinant), at scales
+        /// from 2^-190 to 2^190, with the filter built on the points (and
+        /// on a larger cloud, whose bound is looser).
+        #[test]
+        fn the_static_filter_only_decides_nonzero_signs(
+            grid in proptest::collection::vec((-30i64..30, -30i64..30), 4),
+            k in -4i64..4,
+            nudge in proptest::collection::vec(-3i32..=3, 12),
+            random in proptest::collection::vec(-1.0f64..1.0, 12),
+            exp in -190i32..190,
+            kind in 0u8..5,
+            wide in proptest::bool::ANY,
+        ) {
+            let scale = 2f64.powi(exp);
+            let ulps = |x: f64, n: i32| {
+                let mut x = x;
+                for _ in 0..n.unsigned_abs() {
+                    x = if n > 0 { x.next_up() } else { x.next_down() };
+                }
+                x
+            };
+            let p: Vec<Point3> = (0..4)
+                .map(|i| {
+                    let (x, y) = grid[i];
+                    let x = x - (x + 2 * y - k).rem_euclid(3);
+                    let z = (k - x - 2 * y) / 3;
+                    let lattice = [x as f64, y as f64, z as f64].map(|c| c * scale / 32.0);
+                    match kind {
+                        0 => lattice,
+                        1 => [0, 1, 2].map(|c| ulps(lattice[c], nudge[3 * i + c])),
+                        // The plane z = x (or z = -y), exactly, with random
+                        // mantissas: the differences and products round,
+                        // so the computed determinant is rounding noise.
+                        2 => {
+                            let (x, y) = (random[3 * i] * scale, random[3 * i + 1] * scale);
+                            [x, y, x]
+                        }
+                        3 => {
+                            let (x, y) = (random[3 * i] * scale, random[3 * i + 1] * scale);
+                            [x, y, -y]
+                        }
+                        _ => [0, 1, 2].map(|c| random[3 * i + c] * scale),
+                    }
+                })
+                .collect();
+            let mut cloud = p.clone();
+            if wide {
+                cloud.push([scale * 7.0, 0.0, 0.0]);
+            }
+            let filter = StaticOrient3d::new(&cloud);
+            if filter.certainly_nonzero(p[0], p[1], p[2], p[3]) {
+                proptest::prop_assert_ne!(orient3d(p[0], p[1], p[2], p[3]), Ordering::Equal);
+            }
+        }
+    }
+
+    #[test]
+    fn the_static_filter_decides_a_fine_sphere_and_stays_out_of_range() {
+        // Most edges of a fine sphere are decided without the exact test.
+        let m = test_support::shapes::uv_sphere([0.1, 0.2, 0.3], 1.0, 200, 100);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        let filter = StaticOrient3d::new(flat.pos);
+        let (mut decided, mut pairs) = (0usize, 0usize);
+        for e in 0..flat.edges.len() as u32 {
+            let hs = flat.edge_half_edges(e);
+            if hs.len() == 2 {
+                let opposite = |h: u32| flat.pos[flat.he(3 * (h / 3) + (h % 3 + 2) % 3).0 as usize];
+                let (u, v) = flat.he(hs[0]);
+                let (pu, pv) = (flat.pos[u as usize], flat.pos[v as usize]);
+                let (c1, c2) = (opposite(hs[0]), opposite(hs[1]));
+                pairs += 1;
+                if filter.certainly_nonzero(pu, pv, c1, c2) {
+                    decided += 1;
+                    assert_ne!(orient3d(pu, pv, c1, c2), Ordering::Equal);
+                }
+            }
+        }
+        assert!(decided * 2 > pairs, "{decided} of {pairs}");
+        // Beyond 2^200 (or below 2^-200) nothing is decided statically.
+        for l in [2f64.powi(230), 2f64.powi(-230)] {
+            let f = StaticOrient3d::new(&[[l, 0.0, 0.0]]);
+            assert!(!f.certainly_nonzero([0.0; 3], [l, 0.0, 0.0], [0.0, l, 0.0], [0.0, 0.0, l]));
+        }
     }
 
     #[test]
