@@ -349,7 +349,10 @@ fn one_triangle(positions: &[Point3], half_edges: &[(u32, u32)]) -> Option<[u32;
         return None;
     }
     if h0.1 == h1.0 && h1.1 == h2.0 && h2.1 == h0.0 {
-        return Some([h0.0, h1.0, h2.0]);
+        // Over a repeated vertex the loop balances itself and
+        // `triangulate_facet` gives nothing: let it.
+        let distinct = h0.0 != h1.0 && h1.0 != h2.0 && h2.0 != h0.0;
+        return distinct.then_some([h0.0, h1.0, h2.0]);
     }
     let (r0, r1, r2) = (h0.0, h0.1, h2.1);
     // The other order, over three distinct vertices (each starts exactly

@@ -226,3 +226,44 @@ proptest! {
         }
     }
 }
+
+/// A chain the random test found (fourth session): a box in cell 4 after
+/// boxes and sphere cavities in the cells around it left a retained facet
+/// whose loop repeats a vertex; its triangulation must not repeat one.
+#[test]
+fn chain_with_a_repeated_vertex_loop_stays_valid() {
+    let cuts = [
+        (Cut::Box { jx: 0, jy: 0 }, 24),
+        (
+            Cut::Sphere {
+                jx: 0,
+                jy: 0,
+                r: 0.1,
+            },
+            8,
+        ),
+        (Cut::Box { jx: 0, jy: -8 }, 2),
+        (
+            Cut::Sphere {
+                jx: 0,
+                jy: 0,
+                r: 0.1,
+            },
+            5,
+        ),
+        (Cut::Box { jx: 0, jy: 0 }, 9),
+        (Cut::Box { jx: 0, jy: -8 }, 4),
+    ];
+    let mut shape = triangulate_mesh(&box_mesh([0.0; 3], [8.0, 4.0, 1.0]));
+    let mut volume = 32.0;
+    for (step, (cut, cell)) in cuts.iter().enumerate() {
+        let b = cut_mesh(cut, *cell);
+        volume -= match cut {
+            Cut::Box { .. } => 0.25,
+            Cut::Sphere { .. } => exact_volume(&b),
+        };
+        let out = boolean_triangles(&shape, &b, BooleanOp::Difference).unwrap();
+        check_step(&out.mesh, volume, &format!("step {step} {cut:?} in {cell}"));
+        shape = out.mesh;
+    }
+}

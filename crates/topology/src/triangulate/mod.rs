@@ -118,7 +118,13 @@ fn triangulate_facet_by(
     if half_edges.len() == 3 {
         let [h0, h1, h2] = [half_edges[0], half_edges[1], half_edges[2]];
         if h0.1 == h1.0 && h1.1 == h2.0 && h2.1 == h0.0 {
-            out.push([h0.0, h1.0, h2.0]);
+            // A loop of three half-edges over a repeated vertex is a
+            // zero-length half-edge and an opposite pair, which balance
+            // themselves: nothing to triangulate (a triangle on it would
+            // repeat a vertex).
+            if h0.0 != h1.0 && h1.0 != h2.0 && h2.0 != h0.0 {
+                out.push([h0.0, h1.0, h2.0]);
+            }
             return;
         }
     }
@@ -198,12 +204,19 @@ fn triangulate_polygon(mut poly: Vec<(u32, P2)>, search: Search, out: &mut Vec<[
             tris = optimal;
         }
     }
-    out.extend(tris.iter().map(|t| {
+    // A triangle over a repeated vertex (an ear at a vertex the polygon
+    // visits twice, where a hole touches the boundary) has zero area and
+    // half-edges that balance by themselves (`x->y`, `y->x`, `x->x`):
+    // dropping it keeps facet and shape boundary closure, and a triangle
+    // mesh never holds a triangle that repeats a vertex.
+    out.extend(tris.iter().filter_map(|t| {
         let [a, b, c] = t.map(|i| poly[i].0);
-        if flip {
-            [a, c, b]
+        if a == b || b == c || c == a {
+            None
+        } else if flip {
+            Some([a, c, b])
         } else {
-            [a, b, c]
+            Some([a, b, c])
         }
     }));
 }
