@@ -204,7 +204,14 @@ fn run(p: &Plate, search: Search) -> Vec<[u32; 3]> {
 /// Asserts the invariants of a plate's triangulation.
 fn check(p: &Plate, tris: &[[u32; 3]]) -> Result<(), TestCaseError> {
     prop_assert!(balance(tris, &p.hes));
-    prop_assert_eq!(tris.len(), p.hes.len() + 2 * p.holes - 2);
+    prop_assert!(tris
+        .iter()
+        .all(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]));
+    // At most V + 2H - 2 (the ear count of the bridged polygon, whose
+    // bridge ends appear twice): a zero-area ear over a repeated vertex (a
+    // spike along a bridge, or where a hole touches the boundary) is
+    // dropped; the balance above and the exact area below hold either way.
+    prop_assert!(tris.len() <= p.hes.len() + 2 * p.holes - 2);
     let want = twice_facet_area(&p.uv, &p.hes);
     prop_assert_eq!(twice_area(&p.uv, tris), want);
     if p.strict {
