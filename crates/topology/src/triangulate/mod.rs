@@ -34,7 +34,11 @@
 //!    the one whose two triangles cover the smaller total area is taken
 //!    (figure 4.10). Every triangulation of a loop has the loop's winding
 //!    number everywhere (the internal edges cancel), so the covered area
-//!    beyond `|winding|` is exactly the overlap the figure minimises.
+//!    beyond `|winding|` is exactly the overlap the figure minimises. An
+//!    ear over a vertex the polygon visits twice (a spike along a bridge,
+//!    or where a hole touches the boundary) that repeats the vertex has
+//!    zero area and half-edges that balance by themselves: it is dropped,
+//!    so no triangle of the result repeats a vertex.
 //! 5. Ear clipping is optimal when every triangle faces the polygon's way
 //!    (the covered area is then the polygon's signed area, a lower bound
 //!    for any triangulation). Otherwise the polygon is geometrically
