@@ -1309,6 +1309,35 @@ mod tests {
         true
     }
 
+    /// One to three rings of 3 to `max_extra + 2` points: small integers
+    /// (`case % 3 == 0`, exact ties), unit-scale values on a 1e-6 grid, or
+    /// mixed magnitudes around 1e9.
+    fn seeded_rings(
+        g: &mut test_support::rng::Xorshift64,
+        case: usize,
+        max_extra: u64,
+    ) -> Vec<Vec<[f64; 2]>> {
+        let n_rings = 1 + g.below(3) as usize;
+        (0..n_rings)
+            .map(|_| {
+                let n = 3 + g.below(max_extra) as usize;
+                (0..n)
+                    .map(|_| match case % 3 {
+                        0 => [g.below(7) as f64 - 3.0, g.below(7) as f64 - 3.0],
+                        1 => [
+                            g.below(1 << 20) as f64 * 1e-6,
+                            g.below(1 << 20) as f64 * 1e-6,
+                        ],
+                        _ => [
+                            (g.below(1000) as f64).sqrt() * 1e9,
+                            (g.below(1000) as f64).ln_1p() * 1e9,
+                        ],
+                    })
+                    .collect()
+            })
+            .collect()
+    }
+
     /// The same comparison on seeded cases, checking that they do
     /// exercise the joined entries: most are valid and cross.
     #[test]
@@ -1316,25 +1345,7 @@ mod tests {
         let mut g = test_support::rng::Xorshift64::new(0x5EED_C0DE_1234_5678);
         let (mut valid, mut crossing) = (0, 0);
         for case in 0..400 {
-            let n_rings = 1 + g.below(3) as usize;
-            let rings: Vec<Vec<[f64; 2]>> = (0..n_rings)
-                .map(|_| {
-                    let n = 3 + g.below(20) as usize;
-                    (0..n)
-                        .map(|_| match case % 3 {
-                            0 => [g.below(7) as f64 - 3.0, g.below(7) as f64 - 3.0],
-                            1 => [
-                                g.below(1 << 20) as f64 * 1e-6,
-                                g.below(1 << 20) as f64 * 1e-6,
-                            ],
-                            _ => [
-                                (g.below(1000) as f64).sqrt() * 1e9,
-                                (g.below(1000) as f64).ln_1p() * 1e9,
-                            ],
-                        })
-                        .collect()
-                })
-                .collect();
+            let rings = seeded_rings(&mut g, case, 20);
             let joined = cells_text(&rings, true);
             assert_eq!(joined, cells_text(&rings, false), "rings {rings:?}");
             if let Some(t) = joined {
@@ -1356,25 +1367,7 @@ mod tests {
         let mut g = test_support::rng::Xorshift64::new(0xB0DA_55E1_7E57_0001);
         let mut valid = 0;
         for case in 0..150 {
-            let n_rings = 1 + g.below(3) as usize;
-            let rings: Vec<Vec<[f64; 2]>> = (0..n_rings)
-                .map(|_| {
-                    let n = 3 + g.below(40) as usize;
-                    (0..n)
-                        .map(|_| match case % 3 {
-                            0 => [g.below(7) as f64 - 3.0, g.below(7) as f64 - 3.0],
-                            1 => [
-                                g.below(1 << 20) as f64 * 1e-6,
-                                g.below(1 << 20) as f64 * 1e-6,
-                            ],
-                            _ => [
-                                (g.below(1000) as f64).sqrt() * 1e9,
-                                (g.below(1000) as f64).ln_1p() * 1e9,
-                            ],
-                        })
-                        .collect()
-                })
-                .collect();
+            let rings = seeded_rings(&mut g, case, 40);
             valid += usize::from(boundary_is_the_complete_structure_restricted(&rings));
         }
         assert!(valid > 100, "{valid} valid");
