@@ -19,7 +19,7 @@
 use crate::mesh::Flat;
 use crate::par;
 use rayon::prelude::*;
-use robust_arith::{orient2d, orient3d, power_of_two_bound, Point3, UNIT_ROUNDOFF};
+use robust_arith::{coplanar, orient2d, power_of_two_bound, Point3, UNIT_ROUNDOFF};
 use std::cmp::Ordering;
 use topology::TopologyError;
 
@@ -174,12 +174,12 @@ fn mergeable(
     let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
     // Coplanar: the same coordinate on one axis (the common case of
     // axis-aligned facets, decided without arithmetic; that axis's
-    // coordinate plane is then the one to project on), else the exact
-    // orient3d.
+    // coordinate plane is then the one to project on), else the static
+    // filter or the exact `coplanar` (`orient3d == Equal`; its residue
+    // certificate decides the rounded coplanar quadrilaterals of a curved
+    // mesh without the exact stage).
     let shared = (0..3).find(|&k| pu[k] == pv[k] && pu[k] == p1[k] && pu[k] == p2[k]);
-    if shared.is_none()
-        && (filter.certainly_nonzero(pu, pv, p1, p2) || orient3d(pu, pv, p1, p2) != Ordering::Equal)
-    {
+    if shared.is_none() && (filter.certainly_nonzero(pu, pv, p1, p2) || !coplanar(pu, pv, p1, p2)) {
         return false;
     }
     let first = shared.and_then(|axis| {
@@ -488,6 +488,7 @@ fn drop_straight_vertices(
 #[cfg(test)]
 mod tests {
     use super::*;
+    use robust_arith::orient3d;
     use topology::TriangleMesh;
 
     fn merged(v: Vec<Point3>, t: Vec<[u32; 3]>) -> (bool, usize, Vec<u32>) {

@@ -60,7 +60,7 @@ pub const FAST_MAX: f64 = 1.8092513943330656e75;
 /// `true` when `c` is zero or of magnitude in `[FAST_MIN, FAST_MAX]`
 /// (false for NaN and infinities).
 #[inline]
-fn in_fast_range(c: f64) -> bool {
+pub(crate) fn in_fast_range(c: f64) -> bool {
     let a = c.abs();
     a == 0.0 || (FAST_MIN..=FAST_MAX).contains(&a)
 }

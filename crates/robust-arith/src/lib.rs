@@ -17,8 +17,11 @@
 //!   [`validate_coordinate`] for the coordinate range of section 8.5;
 //! - [`orient2d`] and [`orient3d`]: the one exact orientation-predicate
 //!   source of the workspace (adaptive fast path, exact integer fallback
-//!   outside its provably exact range), used by shape inspection, never by
-//!   the Booleans.
+//!   outside its provably exact range), used by shape inspection and the
+//!   triangle variant's coplanar merge, never by the Booleans' own
+//!   decisions; and [`coplanar`], `orient3d == Equal` behind a residue
+//!   certificate (modulo `2^61 - 1`) that decides rounded coplanar points
+//!   without the exact stage.
 //!
 //! # Example
 //!
@@ -43,6 +46,7 @@ mod exact;
 mod interpolate;
 mod order;
 mod pair;
+mod residue;
 mod segment;
 
 pub use bounds::{
@@ -54,6 +58,7 @@ pub use exact::{orient2d, orient3d, FAST_MAX, FAST_MIN};
 pub use interpolate::interpolate;
 pub use order::{from_total_order_key, lex_cmp, lex_less, total_order_key};
 pub use pair::interpolate_pair;
+pub use residue::coplanar;
 pub use segment::{point_at_x, y_at_x};
 
 /// A point in the plane, `[x, y]`.

@@ -8,7 +8,7 @@
 use num_rational::BigRational;
 use num_traits::{Signed, Zero};
 use proptest::prelude::*;
-use robust_arith::{orient2d, orient3d, FAST_MAX, FAST_MIN};
+use robust_arith::{coplanar, orient2d, orient3d, FAST_MAX, FAST_MIN};
 use std::cmp::Ordering;
 
 fn q(v: f64) -> BigRational {
@@ -94,6 +94,7 @@ proptest! {
     fn orient3d_is_exact_at_any_magnitude(c in proptest::collection::vec(any_magnitude(), 12)) {
         let p = |i: usize| [c[3 * i], c[3 * i + 1], c[3 * i + 2]];
         prop_assert_eq!(orient3d(p(0), p(1), p(2), p(3)), oracle3(p(0), p(1), p(2), p(3)), "{:?}", c);
+        prop_assert_eq!(coplanar(p(0), p(1), p(2), p(3)), oracle3(p(0), p(1), p(2), p(3)) == Ordering::Equal, "{:?}", c);
     }
 
     /// Collinear and coplanar configurations (a small grid is full of them)
@@ -111,6 +112,12 @@ proptest! {
         // Force coplanarity: d = a + (b - a) + (c - a) in integers.
         let d: [f64; 3] = [0, 1, 2].map(|j| scale(g[3 + j] + g[6 + j] - g[j], k));
         prop_assert_eq!(orient3d(p(0), p(1), p(2), d), Ordering::Equal);
+        prop_assert!(coplanar(p(0), p(1), p(2), d));
+        prop_assert!(coplanar(d, p(2), p(0), p(1)));
+        prop_assert_eq!(
+            coplanar(p(0), p(1), p(2), p(3)),
+            oracle3(p(0), p(1), p(2), p(3)) == Ordering::Equal
+        );
     }
 
     /// Near-degenerate: the last point one to a few ulps off a coplanar or
@@ -141,7 +148,53 @@ proptest! {
         let mut d: [f64; 3] = [0, 1, 2].map(|j| scale(g[3 + j] + g[6 + j] - g[j], k));
         d[axis] = nudge(d[axis]);
         prop_assert_eq!(orient3d(p(0), p(1), p(2), d), oracle3(p(0), p(1), p(2), d));
+        prop_assert_eq!(coplanar(p(0), p(1), p(2), d), oracle3(p(0), p(1), p(2), d) == Ordering::Equal);
     }
+
+    /// Points coplanar in real numbers and rounded to `f64` (the two
+    /// triangles of a flat quadrilateral on a sphere's latitude band, and
+    /// points of a slanted plane with random mantissas): the determinant is
+    /// of the size of its rounding, zero or not, and `coplanar` must say
+    /// exactly which.
+    #[test]
+    fn rounded_coplanar_points(
+        t in proptest::collection::vec(0.0f64..1.0, 8),
+        k in -60i32..=60,
+        slope in proptest::collection::vec(-4.0f64..4.0, 2),
+    ) {
+        let s = 2f64.powi(k);
+        // A latitude band quadrilateral: exactly planar in reals.
+        let (th0, th1) = (t[0] * 6.2, t[0] * 6.2 + 0.001 + t[1] * 0.01);
+        let (ph0, ph1) = (t[2] * 3.1, t[2] * 3.1 + 0.001 + t[3] * 0.01);
+        let sph = |th: f64, ph: f64| [s * ph.sin() * th.cos(), s * ph.sin() * th.sin(), s * ph.cos()];
+        let quad = [sph(th0, ph0), sph(th1, ph0), sph(th1, ph1), sph(th0, ph1)];
+        prop_assert_eq!(
+            coplanar(quad[0], quad[1], quad[2], quad[3]),
+            oracle3(quad[0], quad[1], quad[2], quad[3]) == Ordering::Equal
+        );
+        // The plane z = slope0 x + slope1 y, rounded.
+        let on = |x: f64, y: f64| [s * x, s * y, s * (slope[0] * x + slope[1] * y)];
+        let p = [on(t[4], t[5]), on(t[6], t[7]), on(t[5], t[4]), on(t[7] * 0.5, t[6])];
+        prop_assert_eq!(coplanar(p[0], p[1], p[2], p[3]), oracle3(p[0], p[1], p[2], p[3]) == Ordering::Equal);
+    }
+}
+
+#[test]
+fn coplanar_on_non_finite_input_is_orient3d_equal() {
+    let (a, b, c) = ([0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]);
+    for bad in [f64::NAN, f64::INFINITY, f64::NEG_INFINITY] {
+        assert!(coplanar(a, b, c, [bad, 0.5, 1.0]));
+        assert_eq!(orient3d(a, b, c, [bad, 0.5, 1.0]), Ordering::Equal);
+    }
+    // Subnormal and huge coordinates together: exact either way.
+    let tiny = f64::from_bits(3);
+    assert!(!coplanar(a, b, c, [0.5, 0.5, tiny]));
+    assert!(coplanar(
+        [f64::MAX / 8.0, 0.0, 0.0],
+        [0.0, f64::MAX / 8.0, 0.0],
+        [tiny, tiny, 0.0],
+        [0.0, 0.0, 0.0]
+    ));
 }
 
 #[test]
