@@ -52,6 +52,26 @@ impl HalfEdges<'_> {
         }
     }
 
+    /// Calls `f(h, start, end)` for every half-edge in order (triangles
+    /// read without dividing the index).
+    #[inline]
+    fn for_each(&self, mut f: impl FnMut(usize, u32, u32)) {
+        match self {
+            HalfEdges::Owned { he, .. } => {
+                for (h, &(s, e)) in he.iter().enumerate() {
+                    f(h, s, e);
+                }
+            }
+            HalfEdges::Triangles(t) => {
+                for (i, tri) in t.iter().enumerate() {
+                    f(3 * i, tri[0], tri[1]);
+                    f(3 * i + 1, tri[1], tri[2]);
+                    f(3 * i + 2, tri[2], tri[0]);
+                }
+            }
+        }
+    }
+
     /// The facet holding half-edge `h`.
     #[inline]
     fn facet_of(&self, h: usize) -> usize {
@@ -85,6 +105,37 @@ pub(crate) struct Flat<'a> {
     edge_off: Option<Vec<u32>>,
     /// Half-edge indices grouped by edge.
     pub edge_he: Vec<u32>,
+}
+
+/// The direction bit of a half-edge running from its edge's lower vertex
+/// to its higher (`dirs` in [`Flat::build`]; the next bit is the other
+/// way).
+const FORWARD: u8 = 1;
+
+/// Sorts one bucket of `(higher << 32 | half-edge)` keys, carrying each
+/// key's direction byte along: an insertion sort, the buckets being a
+/// vertex's few edges (a general sort beyond 32).
+fn sort_bucket(keys: &mut [u64], dirs: &mut [u8]) {
+    if keys.len() > 32 {
+        let mut both: Vec<(u64, u8)> = keys.iter().copied().zip(dirs.iter().copied()).collect();
+        both.sort_unstable_by_key(|&(k, _)| k);
+        for (i, (k, d)) in both.into_iter().enumerate() {
+            keys[i] = k;
+            dirs[i] = d;
+        }
+        return;
+    }
+    for i in 1..keys.len() {
+        let (k, d) = (keys[i], dirs[i]);
+        let mut j = i;
+        while j > 0 && keys[j - 1] > k {
+            keys[j] = keys[j - 1];
+            dirs[j] = dirs[j - 1];
+            j -= 1;
+        }
+        keys[j] = k;
+        dirs[j] = d;
+    }
 }
 
 /// `Some(edge_off)` unless every edge has exactly two half-edges.
@@ -211,20 +262,24 @@ impl<'a> Flat<'a> {
         let he = |h: usize| half_edges.get(h);
         // Data definitions: every index refers to a vertex.
         let vertex_count = n_v as u32;
+        let mut max_index = 0u32;
+        half_edges.for_each(|_, s, e| max_index = max_index.max(s).max(e));
         // The first half-edge in facet order with a dangling index names
         // the facet; its start is checked before its end.
-        if let Some(h) = (0..n_he).position(|h| {
-            let (s, e) = he(h);
-            s as usize >= n_v || e as usize >= n_v
-        }) {
-            let f = half_edges.facet_of(h);
-            let (s, e) = he(h);
-            return Err(TopologyError::DanglingIndex {
-                entity,
-                entity_index: f as u32,
-                vertex: if s as usize >= n_v { s } else { e },
-                vertex_count,
-            });
+        if n_he > 0 && max_index as usize >= n_v {
+            if let Some(h) = (0..n_he).position(|h| {
+                let (s, e) = he(h);
+                s as usize >= n_v || e as usize >= n_v
+            }) {
+                let f = half_edges.facet_of(h);
+                let (s, e) = he(h);
+                return Err(TopologyError::DanglingIndex {
+                    entity,
+                    entity_index: f as u32,
+                    vertex: if s as usize >= n_v { s } else { e },
+                    vertex_count,
+                });
+            }
         }
         // Facet boundary closure (triangles satisfy it by construction).
         if let HalfEdges::Owned { he, facet_off } = &half_edges {
@@ -239,34 +294,35 @@ impl<'a> Flat<'a> {
         // numbering, by (lower, higher), is independent of thread count.
         let mut referenced = vec![false; n_v];
         let mut bucket = vec![0u32; n_v + 1];
-        for h in 0..n_he {
-            let (s, e) = he(h);
+        half_edges.for_each(|_, s, e| {
             referenced[s as usize] = true;
             referenced[e as usize] = true;
             bucket[s.min(e) as usize + 1] += 1;
-        }
+        });
         for v in 0..n_v {
             bucket[v + 1] += bucket[v];
         }
         let mut fill = bucket.clone();
-        // (higher vertex, half-edge) scattered by lower vertex.
+        // (higher vertex, half-edge) scattered by lower vertex, with each
+        // half-edge's direction beside it (`FORWARD` from the lower vertex,
+        // `BACKWARD`, or neither for a loop), so that the grouping below
+        // reads no half-edge again.
         let mut pairs = vec![0u64; n_he];
-        for h in 0..n_he {
-            let (s, e) = he(h);
+        let mut dirs = vec![0u8; n_he];
+        half_edges.for_each(|h, s, e| {
             let (lo, hi) = if s <= e { (s, e) } else { (e, s) };
-            pairs[fill[lo as usize] as usize] = (u64::from(hi) << 32) | h as u64;
+            let k = fill[lo as usize] as usize;
+            pairs[k] = (u64::from(hi) << 32) | h as u64;
+            dirs[k] = u8::from(s < e) | (u8::from(s > e) << 1);
             fill[lo as usize] += 1;
-        }
+        });
         drop(fill);
         let mut edges = Vec::with_capacity(n_he / 2 + 1);
         let mut edge_off = Vec::with_capacity(n_he / 2 + 2);
         let mut he_edge = vec![0u32; n_he];
         for v in 0..n_v {
             let (b0, b1) = (bucket[v] as usize, bucket[v + 1] as usize);
-            let slice = &mut pairs[b0..b1];
-            if slice.len() > 1 {
-                slice.sort_unstable();
-            }
+            sort_bucket(&mut pairs[b0..b1], &mut dirs[b0..b1]);
             let mut k = b0;
             while k < b1 {
                 let hi = (pairs[k] >> 32) as u32;
@@ -276,19 +332,15 @@ impl<'a> Flat<'a> {
                 // Shape boundary closure: as many half-edges each way.
                 let (mut forward, mut backward) = (0u32, 0u32);
                 while k < b1 && (pairs[k] >> 32) as u32 == hi {
-                    let h = pairs[k] as u32;
-                    he_edge[h as usize] = e;
-                    let (hs, he_end) = he(h as usize);
-                    if hs < he_end {
-                        forward += 1;
-                    } else if hs > he_end {
-                        backward += 1;
-                    }
+                    he_edge[pairs[k] as u32 as usize] = e;
+                    forward += u32::from(dirs[k] & FORWARD);
+                    backward += u32::from(dirs[k] >> 1);
                     k += 1;
                 }
                 check_shape_closure((v as u32, hi), (forward, backward))?;
             }
         }
+        drop(dirs);
         // A fresh allocation: collecting in place would keep the pairs'
         // buffer, twice the size needed, alive for the whole Boolean.
         let edge_he: Vec<u32> = pairs.iter().map(|&p| p as u32).collect();
@@ -530,6 +582,76 @@ mod tests {
         }
     }
 
+    /// The edge grouping's definition, checked directly: edges in strictly
+    /// increasing (lower, higher) order, each edge's half-edges in
+    /// increasing index order with that unordered vertex pair, every
+    /// half-edge in exactly one edge, and `referenced` exactly the vertices
+    /// some half-edge touches.
+    fn assert_grouping(flat: &Flat<'_>) {
+        assert!(flat.edges.windows(2).all(|w| w[0] < w[1]));
+        let mut seen = vec![false; flat.he_count()];
+        for (e, &(lo, hi)) in flat.edges.iter().enumerate() {
+            assert!(lo <= hi);
+            let hs = flat.edge_half_edges(e as u32);
+            assert!(!hs.is_empty() && hs.windows(2).all(|w| w[0] < w[1]));
+            for &h in hs {
+                let (s, t) = flat.he(h);
+                assert_eq!((s.min(t), s.max(t)), (lo, hi));
+                assert_eq!(flat.he_edge[h as usize], e as u32);
+                assert!(!std::mem::replace(&mut seen[h as usize], true));
+            }
+        }
+        assert!(seen.iter().all(|&s| s));
+        let mut touched = vec![false; flat.pos.len()];
+        for (s, t) in flat.half_edges() {
+            touched[s as usize] = true;
+            touched[t as usize] = true;
+        }
+        assert_eq!(touched, flat.referenced);
+    }
+
+    #[test]
+    fn a_vertex_of_high_valence_groups_its_edges() {
+        // A closed double cone over a 70-gon: the apexes have 70 edges
+        // each (the general sort of a bucket), the rim vertices 4.
+        let n = 70u32;
+        let mut v: Vec<Point3> = (0..n)
+            .map(|i| {
+                let a = f64::from(i) * std::f64::consts::TAU / f64::from(n);
+                [a.cos(), a.sin(), 0.0]
+            })
+            .collect();
+        v.push([0.0, 0.0, 1.0]);
+        v.push([0.0, 0.0, -1.0]);
+        // Triangles in a scrambled order, so the buckets arrive unsorted.
+        let mut t: Vec<[u32; 3]> = (0..n)
+            .flat_map(|i| [[i, (i + 1) % n, n], [(i + 1) % n, i, n + 1]])
+            .collect();
+        t.reverse();
+        t.swap(3, 90);
+        let m = TriangleMesh::new(v, t);
+        let flat = Flat::from_triangle_mesh(&m).unwrap();
+        assert_grouping(&flat);
+        assert_eq!(flat.edges.len(), 3 * n as usize);
+        assert!(flat.edge_off.is_none());
+        assert_eq!(m.check_topology(), Ok(()));
+    }
+
+    proptest! {
+        /// The bucket sort carries each key's direction along and orders
+        /// like a plain sort, below and above the insertion-sort length.
+        #[test]
+        fn sort_bucket_is_a_sort(keys in prop::collection::vec(0u64..40, 0..80)) {
+            let mut k = keys.clone();
+            let mut d: Vec<u8> = keys.iter().map(|&x| (x % 3) as u8).collect();
+            sort_bucket(&mut k, &mut d);
+            let mut expect = keys.clone();
+            expect.sort_unstable();
+            prop_assert_eq!(&k, &expect);
+            prop_assert!(k.iter().zip(&d).all(|(&x, &y)| (x % 3) as u8 == y));
+        }
+    }
+
     fn as_polygons(m: &TriangleMesh) -> PolygonMesh {
         let facets = m.triangles.iter().map(|t| Facet::from_loop(t)).collect();
         PolygonMesh::new(m.vertices.clone(), facets)
@@ -587,8 +709,15 @@ mod tests {
             let m = TriangleMesh::new(vertices, tris);
             let poly = as_polygons(&m);
             match (Flat::from_triangle_mesh(&m), Flat::from_polygon_mesh(&poly)) {
-                (Ok(a), Ok(b)) => assert_same(&a, &b),
-                (Err(a), Err(b)) => prop_assert_eq!(a, b),
+                (Ok(a), Ok(b)) => {
+                    assert_grouping(&a);
+                    assert_same(&a, &b);
+                    prop_assert_eq!(m.check_topology(), Ok(()));
+                }
+                (Err(a), Err(b)) => {
+                    prop_assert_eq!(m.check_topology(), Err(a.clone()));
+                    prop_assert_eq!(a, b);
+                }
                 (a, b) => prop_assert!(false, "{:?} against {:?}", a.err(), b.err()),
             }
         }
