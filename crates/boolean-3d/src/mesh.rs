@@ -318,7 +318,9 @@ impl<'a> Flat<'a> {
         });
         drop(fill);
         let mut edges = Vec::with_capacity(n_he / 2 + 1);
-        let mut edge_off = Vec::with_capacity(n_he / 2 + 2);
+        // Edge offsets only from the first edge without exactly two
+        // half-edges on (every earlier edge `i` starts at `2 i`).
+        let mut edge_off: Option<Vec<u32>> = None;
         let mut he_edge = vec![0u32; n_he];
         for v in 0..n_v {
             let (b0, b1) = (bucket[v] as usize, bucket[v + 1] as usize);
@@ -328,7 +330,7 @@ impl<'a> Flat<'a> {
                 let hi = (pairs[k] >> 32) as u32;
                 let e = edges.len() as u32;
                 edges.push((v as u32, hi));
-                edge_off.push(k as u32);
+                let start = k;
                 // Shape boundary closure: as many half-edges each way.
                 let (mut forward, mut backward) = (0u32, 0u32);
                 while k < b1 && (pairs[k] >> 32) as u32 == hi {
@@ -338,21 +340,32 @@ impl<'a> Flat<'a> {
                     k += 1;
                 }
                 check_shape_closure((v as u32, hi), (forward, backward))?;
+                match edge_off.as_mut() {
+                    Some(off) => off.push(start as u32),
+                    None if k - start != 2 => {
+                        let mut off = Vec::with_capacity(n_he / 2 + 2);
+                        off.extend((0..=e).map(|i| 2 * i));
+                        edge_off = Some(off);
+                    }
+                    None => {}
+                }
             }
         }
         drop(dirs);
+        if let Some(off) = edge_off.as_mut() {
+            off.push(n_he as u32);
+        }
         // A fresh allocation: collecting in place would keep the pairs'
         // buffer, twice the size needed, alive for the whole Boolean.
         let edge_he: Vec<u32> = pairs.iter().map(|&p| p as u32).collect();
         drop(pairs);
-        edge_off.push(n_he as u32);
         Ok(Flat {
             pos,
             half_edges,
             he_edge,
             referenced,
             edges,
-            edge_off: edge_offsets(edge_off),
+            edge_off,
             edge_he,
         })
     }
