@@ -77,12 +77,13 @@ impl EndPoints {
         // not matter. The positions are sorted (a stable merge sort: it
         // follows the input's sorted runs) rather than (point, position)
         // pairs, so that its buffer is small.
-        let order =
-            crate::cells::stable_order(n, |a, b| right(a).sort_key().cmp(&right(b).sort_key()));
-        let input: Vec<(SortKey, u32)> = order
-            .into_iter()
-            .map(|i| (right(i as usize).sort_key(), i))
-            .collect();
+        // The keys computed once and sorted in place with their positions:
+        // `(key, position)` pairs are distinct, so the unstable sort gives
+        // the order of a stable sort by key, with no buffer and no look-up
+        // of the points per comparison.
+        let mut input: Vec<(SortKey, u32)> =
+            (0..n).map(|i| (right(i).sort_key(), i as u32)).collect();
+        crate::cells::sort_unstable(&mut input);
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
