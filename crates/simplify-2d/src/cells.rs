@@ -605,6 +605,19 @@ pub(crate) fn sort_unstable<T: Ord + Send>(v: &mut [T]) {
     }
 }
 
+/// Sorts `v` by a comparison, not stably, in parallel when it is long: for
+/// callers to whom the order of equal items does not matter.
+pub(crate) fn sort_unstable_by<T: Send>(
+    v: &mut [T],
+    cmp: impl Fn(&T, &T) -> std::cmp::Ordering + Sync,
+) {
+    if v.len() >= PARALLEL_SORT_MIN {
+        v.par_sort_unstable_by(cmp);
+    } else {
+        v.sort_unstable_by(cmp);
+    }
+}
+
 /// Sorts `v` by a comparison, stably, in parallel when it is long.
 pub(crate) fn sort_stable_by<T: Send>(
     v: &mut [T],

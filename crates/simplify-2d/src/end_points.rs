@@ -73,16 +73,15 @@ impl EndPoints {
     /// given by position (in any order, repeats allowed).
     pub(crate) fn new(n: usize, right: impl Fn(usize) -> Pt + Sync) -> Self {
         // One sort gives the points in order and, through the runs of
-        // equal points, every position's slot; the order within a run does
-        // not matter. The positions are sorted (a stable merge sort: it
-        // follows the input's sorted runs) rather than (point, position)
-        // pairs, so that its buffer is small.
-        let order =
-            crate::cells::stable_order(n, |a, b| right(a).sort_key().cmp(&right(b).sort_key()));
-        let input: Vec<(SortKey, u32)> = order
-            .into_iter()
-            .map(|i| (right(i as usize).sort_key(), i))
-            .collect();
+        // equal points, every position's slot (the index of its run's
+        // first entry); the order within a run does not matter. The keys
+        // are computed once and sorted in place with their positions, by
+        // the key alone as one `u128` (a branch-free comparison): no
+        // buffer, and no look-up of the points per comparison.
+        let mut input: Vec<(SortKey, u32)> =
+            (0..n).map(|i| (right(i).sort_key(), i as u32)).collect();
+        let wide = |e: &(SortKey, u32)| (u128::from(e.0 .0) << 64) | u128::from(e.0 .1);
+        crate::cells::sort_unstable_by(&mut input, |a, b| wide(a).cmp(&wide(b)));
         // Room for as many split points as input points, so that the
         // counters rarely move while the sweep allocates its output.
         let mut count = Vec::with_capacity(input.len() * 2);
@@ -330,5 +329,44 @@ mod tests {
             }
         }
         assert!(events > 4_000, "{events} events");
+    }
+
+    /// On inputs long enough for the parallel sort and on short ones,
+    /// with many repeated points: equal right points share a slot and
+    /// distinct ones do not, and the candidates come in increasing order,
+    /// each distinct point once.
+    #[test]
+    fn slots_follow_the_points_on_long_inputs() {
+        let mut g = test_support::rng::Xorshift64::new(0x7A11_0C0D_E5EE_D001);
+        for n in [0, 1, 7, 1000, 40_000] {
+            for spread in [3u64, 300, 1 << 40] {
+                let input: Vec<Pt> = (0..n)
+                    .map(|_| Pt::new([g.below(spread) as f64 * 0.25, -(g.below(4) as f64)]))
+                    .collect();
+                let mut e = EndPoints::new(input.len(), |i| input[i]);
+                let mut slot_of: std::collections::HashMap<(u64, u64), Slot> =
+                    std::collections::HashMap::new();
+                let mut point_of: std::collections::HashMap<Slot, (u64, u64)> =
+                    std::collections::HashMap::new();
+                let mut seen = 0;
+                for (i, slot) in e.input_slots() {
+                    let key = input[i].sort_key();
+                    assert_eq!(*slot_of.entry(key).or_insert(slot), slot, "n {n}");
+                    assert_eq!(*point_of.entry(slot).or_insert(key), key, "n {n}");
+                    seen += 1;
+                }
+                assert_eq!(seen, n);
+                e.start();
+                let mut last: Option<Pt> = None;
+                let mut distinct = 0;
+                while let Some(p) = e.candidate() {
+                    assert!(last < Some(p), "n {n}: {p:?} after {last:?}");
+                    e.reach(p);
+                    last = Some(p);
+                    distinct += 1;
+                }
+                assert_eq!(distinct, slot_of.len());
+            }
+        }
     }
 }
