@@ -79,21 +79,12 @@ fn drop_axis(p: Point3, axis: usize) -> [f64; 2] {
     }
 }
 
-/// For a triangle whose three vertices share one coordinate exactly (an
-/// axis-aligned triangle, the common case of CAD and CSG inputs), the
-/// first such axis and the triangle's exact orientation in that
-/// coordinate plane; `None` otherwise. Computed once per triangle, so that
-/// [`mergeable`] decides an edge between two such triangles by comparing
-/// their entries.
-fn flat_axis(flat: &Flat<'_>, t: u32) -> Option<(u8, Ordering)> {
-    let (a, b, c) = (
-        flat.pos[flat.he(3 * t).0 as usize],
-        flat.pos[flat.he(3 * t + 1).0 as usize],
-        flat.pos[flat.he(3 * t + 2).0 as usize],
-    );
-    let axis = (0..3).find(|&k| a[k] == b[k] && a[k] == c[k])?;
-    let o = orient2d(drop_axis(a, axis), drop_axis(b, axis), drop_axis(c, axis));
-    Some((axis as u8, o))
+/// The first axis on which the three points share their coordinate
+/// exactly (an axis-aligned triangle, the common case of CAD and CSG
+/// inputs), decided without arithmetic; `None` otherwise.
+#[inline]
+fn constant_axis(a: Point3, b: Point3, c: Point3) -> Option<usize> {
+    (0..3).find(|&k| a[k] == b[k] && a[k] == c[k])
 }
 
 /// A static filter for `orient3d` on the points of one mesh: with every
@@ -143,35 +134,35 @@ impl StaticOrient3d {
 }
 
 /// Whether the triangles of half-edges `h1 = u->v` and `h2 = v->u` of a
-/// triangle mesh's flat form may be merged across their edge; `axes` holds
-/// [`flat_axis`] of every triangle.
-fn mergeable(
-    flat: &Flat<'_>,
-    axes: &[Option<(u8, Ordering)>],
-    filter: &StaticOrient3d,
-    h1: u32,
-    h2: u32,
-) -> bool {
+/// triangle mesh's flat form may be merged across their edge.
+fn mergeable(flat: &Flat<'_>, filter: &StaticOrient3d, h1: u32, h2: u32) -> bool {
     let (t1, t2) = (h1 / 3, h2 / 3);
     if t1 == t2 {
         return false;
-    }
-    // Both triangles constant on one axis each. The same first axis `k`:
-    // the four points share coordinate `k` (the edge's two vertices are
-    // common), `k` is the first axis they all share, and the orientations
-    // in that plane are the triangles' own (cyclic rotations keep the
-    // exact sign), so the general test below reduces to this comparison
-    // (a zero orientation is a degenerate triangle, never merged).
-    // Different axes: the triangles are coplanar only if one is constant
-    // on two axes, i.e. degenerate, and the general test says no.
-    if let (Some((k1, o1)), Some((k2, o2))) = (axes[t1 as usize], axes[t2 as usize]) {
-        return k1 == k2 && o1 != Ordering::Equal && o1 == o2;
     }
     let opposite = |h: u32| flat.he(3 * (h / 3) + (h % 3 + 2) % 3).0;
     let (u, v) = flat.he(h1);
     let (c1, c2) = (opposite(h1), opposite(h2));
     let p = |i: u32| flat.pos[i as usize];
     let (pu, pv, p1, p2) = (p(u), p(v), p(c1), p(c2));
+    // Both triangles constant on one axis each ([`constant_axis`]). The
+    // same first axis `k`: the four points share coordinate `k` (the
+    // edge's two vertices are common), `k` is the first axis they all
+    // share, and the orientations in that plane are the triangles' own
+    // (`(u, v, c1)` and `(v, u, c2)` are cyclic rotations of the
+    // triangles, which keep the exact sign), so the general test below
+    // reduces to this comparison (a zero orientation is a degenerate
+    // triangle, never merged). Different axes: the triangles are coplanar
+    // only if one is constant on two axes, i.e. degenerate, and the
+    // general test says no.
+    if let (Some(k1), Some(k2)) = (constant_axis(pu, pv, p1), constant_axis(pv, pu, p2)) {
+        if k1 != k2 {
+            return false;
+        }
+        let o1 = orient2d(drop_axis(pu, k1), drop_axis(pv, k1), drop_axis(p1, k1));
+        let o2 = orient2d(drop_axis(pv, k1), drop_axis(pu, k1), drop_axis(p2, k1));
+        return o1 != Ordering::Equal && o1 == o2;
+    }
     // Coplanar: the same coordinate on one axis (the common case of
     // axis-aligned facets, decided without arithmetic; that axis's
     // coordinate plane is then the one to project on), else the static
@@ -209,11 +200,6 @@ impl Merged {
     pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
         let n_he = flat.he_count();
         let n_t = n_he / 3;
-        let axes: Vec<Option<(u8, Ordering)>> = (0..n_t as u32)
-            .into_par_iter()
-            .with_min_len(par::min_len(1))
-            .map(|t| flat_axis(&flat, t))
-            .collect();
         let filter = StaticOrient3d::new(flat.pos);
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
@@ -230,7 +216,7 @@ impl Merged {
                 if s1 == e1 || s1 != e2 || e1 != s2 {
                     return None;
                 }
-                mergeable(&flat, &axes, &filter, h1, h2).then_some((h1, h2))
+                mergeable(&flat, &filter, h1, h2).then_some((h1, h2))
             })
             .collect();
         if pairs.is_empty() {
