@@ -119,11 +119,35 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
         ..
     } = r;
     drop((chunks, maps));
-    let mut triangles = Vec::with_capacity(parts.iter().map(Vec::len).sum());
-    for p in parts {
-        triangles.extend_from_slice(&p);
+    TriangleMesh::new(vertices, gather(parts, split))
+}
+
+/// The pieces' triangles in piece order, in one array; the copies run in
+/// parallel (each piece into its own part of the array) when `split`
+/// allows, so the array's pages are also first touched in parallel.
+fn gather(parts: Vec<Vec<[u32; 3]>>, split: usize) -> Vec<[u32; 3]> {
+    let total = parts.iter().map(Vec::len).sum();
+    if split == usize::MAX || parts.len() < 2 {
+        let mut triangles = Vec::with_capacity(total);
+        for p in parts {
+            triangles.extend_from_slice(&p);
+        }
+        return triangles;
     }
-    TriangleMesh::new(vertices, triangles)
+    let mut triangles = vec![[0u32; 3]; total];
+    let mut dests = Vec::with_capacity(parts.len());
+    let mut rest = triangles.as_mut_slice();
+    for p in &parts {
+        let (d, r) = rest.split_at_mut(p.len());
+        dests.push(d);
+        rest = r;
+    }
+    dests
+        .into_par_iter()
+        .zip(parts.par_iter())
+        .with_min_len(split)
+        .for_each(|(d, p)| d.copy_from_slice(p));
+    triangles
 }
 
 #[derive(Default)]
