@@ -158,14 +158,6 @@ fn finish(
     }
 }
 
-/// The largest coordinate magnitude of a point set.
-fn max_abs(points: &[Point3]) -> f64 {
-    points
-        .iter()
-        .flat_map(|p| p.iter())
-        .fold(0.0f64, |m, &c| m.max(c.abs()))
-}
-
 /// The closed box of an edge.
 #[inline]
 fn edge_box(p: &Point3, q: &Point3) -> Aabb {
@@ -610,7 +602,7 @@ pub(crate) struct Broad {
 
 /// The power-of-two bound of an operand's largest coordinate magnitude.
 pub(crate) fn coordinate_bound(m: &Flat<'_>) -> f64 {
-    power_of_two_bound(max_abs(m.pos))
+    power_of_two_bound(m.max_abs())
 }
 
 impl Broad {

@@ -102,11 +102,14 @@ struct StaticOrient3d {
 }
 
 impl StaticOrient3d {
+    #[cfg(test)]
     fn new(points: &[Point3]) -> StaticOrient3d {
-        let max = points
-            .iter()
-            .flat_map(|p| p.iter())
-            .fold(0.0f64, |m, &c| m.max(c.abs()));
+        StaticOrient3d::with_max(crate::mesh::max_abs(points))
+    }
+
+    /// The filter for points whose coordinates are at most `max` in
+    /// magnitude.
+    fn with_max(max: f64) -> StaticOrient3d {
         let l = power_of_two_bound(max);
         let bound = if (2f64.powi(-200)..=2f64.powi(200)).contains(&l) {
             // Shewchuk's o3derrboundA, (7 + 56 eps) eps, on 48 L^3, and a
@@ -200,7 +203,7 @@ impl Merged {
     pub fn new(flat: Flat<'_>) -> Result<(Merged, Flat<'_>), TopologyError> {
         let n_he = flat.he_count();
         let n_t = n_he / 3;
-        let filter = StaticOrient3d::new(flat.pos);
+        let filter = StaticOrient3d::with_max(flat.max_abs());
         // Candidate edges: exactly two half-edges, one each way.
         let pairs: Vec<(u32, u32)> = (0..flat.edges.len() as u32)
             .into_par_iter()

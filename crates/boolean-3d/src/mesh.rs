@@ -5,6 +5,7 @@
 use crate::bvh::Aabb;
 use rayon::prelude::*;
 use robust_arith::Point3;
+use std::sync::OnceLock;
 use topology::{PolygonMesh, TopologyError, TriangleMesh};
 
 /// Half-edges facet by facet and the facets' offsets into them.
@@ -105,6 +106,37 @@ pub(crate) struct Flat<'a> {
     edge_off: Option<Vec<u32>>,
     /// Half-edge indices grouped by edge.
     pub edge_he: Vec<u32>,
+    /// The largest coordinate magnitude of `pos`, computed on first use
+    /// ([`Flat::max_abs`]).
+    max_abs: Cached,
+}
+
+/// A value derived from the flat form's points, computed on first use. It
+/// takes no part in comparisons: two flat forms with equal points derive
+/// equal values, whether computed yet or not.
+#[derive(Clone, Debug, Default)]
+struct Cached(OnceLock<f64>);
+
+impl PartialEq for Cached {
+    fn eq(&self, _: &Cached) -> bool {
+        true
+    }
+}
+
+/// The largest coordinate magnitude of the points (0 for none): three
+/// independent running maxima by plain comparisons (a NaN is never taken,
+/// as with `f64::max`).
+pub(crate) fn max_abs(points: &[Point3]) -> f64 {
+    let mut m = [0.0f64; 3];
+    for p in points {
+        for c in 0..3 {
+            let a = p[c].abs();
+            if a > m[c] {
+                m[c] = a;
+            }
+        }
+    }
+    m[0].max(m[1]).max(m[2])
 }
 
 /// The direction bit of a half-edge running from its edge's lower vertex
@@ -249,6 +281,7 @@ impl<'a> Flat<'a> {
             edges,
             edge_off: edge_offsets(edge_off),
             edge_he,
+            max_abs: parent.max_abs.clone(),
         })
     }
 
@@ -367,7 +400,14 @@ impl<'a> Flat<'a> {
             edges,
             edge_off,
             edge_he,
+            max_abs: Cached::default(),
         })
+    }
+
+    /// The largest coordinate magnitude of the points (of all of `pos`,
+    /// referenced or not), computed once.
+    pub fn max_abs(&self) -> f64 {
+        *self.max_abs.0.get_or_init(|| max_abs(self.pos))
     }
 
     /// The number of half-edges.
@@ -651,6 +691,20 @@ mod tests {
     }
 
     proptest! {
+        /// The running maxima equal the plain fold of `f64::max` over
+        /// every coordinate's magnitude, and the cached value is that.
+        #[test]
+        fn max_abs_is_the_largest_magnitude(
+            pts in prop::collection::vec([-1e6f64..1e6, -1e300f64..1e300, -1e-300f64..1e-300], 0..40),
+        ) {
+            let fold = pts.iter().flatten().fold(0.0f64, |m, &c| m.max(c.abs()));
+            prop_assert_eq!(max_abs(&pts), fold);
+            let m = TriangleMesh::new(pts.clone(), Vec::new());
+            let flat = Flat::from_triangle_mesh(&m).unwrap();
+            prop_assert_eq!(flat.max_abs(), fold);
+            prop_assert_eq!(flat.max_abs(), fold);
+        }
+
         /// The bucket sort carries each key's direction along and orders
         /// like a plain sort, below and above the insertion-sort length.
         #[test]
