@@ -141,8 +141,9 @@ pub fn orient3d(a: Point3, b: Point3, c: Point3, d: Point3) -> Ordering {
     orient3d_exact(a, b, c, d)
 }
 
-/// `(m, e)` with `v = m * 2^e` exactly (finite `v`).
-fn decode(v: f64) -> (i64, i32) {
+/// `(m, e)` with `v = m * 2^e` exactly (finite `v`; `|m| < 2^53`, zero
+/// only for `v = ±0`).
+pub(crate) fn decode(v: f64) -> (i64, i32) {
     let bits = v.to_bits();
     let negative = bits >> 63 == 1;
     let exp = ((bits >> 52) & 0x7ff) as i32;
@@ -155,16 +156,21 @@ fn decode(v: f64) -> (i64, i32) {
     (if negative { -m } else { m }, e)
 }
 
+/// The smallest exponent among the decoded non-zero values (0 when all
+/// are zero): scaled by `2^-low`, every value is an integer.
+pub(crate) fn common_exponent(dec: &[(i64, i32)]) -> i32 {
+    dec.iter()
+        .filter(|d| d.0 != 0)
+        .map(|d| d.1)
+        .min()
+        .unwrap_or(0)
+}
+
 /// The finite values as exact integers, all scaled by one common positive
 /// power of two (which changes no determinant's sign).
 fn scaled<const N: usize>(values: [f64; N]) -> [BigInt; N] {
     let dec = values.map(decode);
-    let low = dec
-        .iter()
-        .filter(|d| d.0 != 0)
-        .map(|d| d.1)
-        .min()
-        .unwrap_or(0);
+    let low = common_exponent(&dec);
     dec.map(|(m, e)| BigInt::from(m) << ((e - low) as usize))
 }
 

@@ -17,7 +17,7 @@
 //! proves a non-zero determinant; a zero residue (every coplanar input, and
 //! about one non-coplanar input in `2^61`) defers to the exact predicate.
 
-use crate::exact::{in_fast_range, orient3d};
+use crate::exact::{common_exponent, decode, in_fast_range, orient3d};
 use crate::{Point3, UNIT_ROUNDOFF};
 use std::cmp::Ordering;
 
@@ -64,38 +64,18 @@ fn sub(a: u64, b: u64) -> u64 {
     }
 }
 
-/// `(|m|, e, negative)` with `v = ±|m| * 2^e` exactly (finite `v`); `m` is
-/// zero only for `v = ±0`.
-#[inline]
-fn decode(v: f64) -> (u64, i32, bool) {
-    let bits = v.to_bits();
-    let exp = ((bits >> 52) & 0x7ff) as i32;
-    let frac = bits & 0x000f_ffff_ffff_ffff;
-    let (m, e) = if exp == 0 {
-        (frac, -1074)
-    } else {
-        (frac | (1 << 52), exp - 1075)
-    };
-    (m, e, bits >> 63 == 1)
-}
-
 /// The residues mod `P` of the coordinates scaled to integers by one
 /// common power of two.
 #[inline]
 fn residues(values: [f64; 12]) -> [u64; 12] {
     let dec = values.map(decode);
-    let low = dec
-        .iter()
-        .filter(|d| d.0 != 0)
-        .map(|d| d.1)
-        .min()
-        .unwrap_or(0);
-    dec.map(|(m, e, negative)| {
-        // m < 2^53 < P and the shift is below 61 (for a zero `m`, whose
+    let low = common_exponent(&dec);
+    dec.map(|(m, e)| {
+        // |m| < 2^53 < P and the shift is below 61 (for a zero `m`, whose
         // exponent may be below `low`, any shift gives zero), so the
         // product is below 2^114.
-        let r = reduce(u128::from(m) << (e - low).rem_euclid(61) as u32);
-        if negative {
+        let r = reduce(u128::from(m.unsigned_abs()) << (e - low).rem_euclid(61) as u32);
+        if m < 0 {
             sub(0, r)
         } else {
             r
@@ -189,9 +169,9 @@ mod tests {
     #[test]
     fn decode_is_exact() {
         for v in [1.0, -0.75, 3.5e-300, f64::from_bits(1), f64::MAX, -0.0] {
-            let (m, e, negative) = decode(v);
+            let (m, e) = decode(v);
             let back = m as f64 * 2f64.powi(e.max(-1022)) * 2f64.powi((e + 1022).min(0));
-            assert_eq!(if negative { -back } else { back }, v);
+            assert_eq!(back, v);
         }
     }
 
