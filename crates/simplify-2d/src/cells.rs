@@ -8,6 +8,7 @@ use crate::winding::Winding;
 use crate::SimplifyError;
 use rayon::slice::ParallelSliceMut;
 use robust_arith::intersection_error_bound;
+use std::borrow::Cow;
 use topology::{Edge2, PolygonSet2};
 
 /// One edge of the cell structure, directed from `start` to `end` (the
@@ -269,7 +270,7 @@ impl<W: Winding> CellStructure<W> {
             Some(b) => b.clone(),
             None => self.selected(keep),
         };
-        shape_of(&self.vertices, sel)
+        shape_of(Cow::Borrowed(&self.vertices), sel)
     }
 
     /// The selected edges of a structure kept only for its shape.
@@ -296,7 +297,7 @@ impl<W: Winding> CellStructure<W> {
         };
         drop(edges);
         drop(rotations);
-        shape_of(&vertices, sel)
+        shape_of(Cow::Owned(vertices), sel)
     }
 
     /// The edges separating a retained cell from a discarded one, keyed as
@@ -345,7 +346,13 @@ fn selected<W>(v: &[[f64; 2]], edges: &[CellEdge<W>], keep: impl Fn(&W) -> bool)
 /// `v`: identical edges merged, vertical edges merged by 1D simplification,
 /// vertices and edges in the canonical order of
 /// `EdgeCollection::to_polygon_set`.
-fn shape_of(v: &[[f64; 2]], sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
+///
+/// `v` is taken by value when the caller can give it up: when every vertex
+/// is used and the ids are already in lexicographic order (the vertices of
+/// the sweep's `Output::Boundary`, unless a backward step of section 7.6.1
+/// intervened), the ids are the ranks and the vertices the output's, and
+/// neither is copied or renumbered.
+fn shape_of(v: Cow<'_, [[f64; 2]]>, sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
     let nv = v.len() as u32;
     let pt = |i: u32| Pt::new(v[i as usize]);
     // The vertices the selected edges use (marked in `rank` until they
@@ -357,44 +364,59 @@ fn shape_of(v: &[[f64; 2]], sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
         rank[a as usize] = 1;
         rank[b as usize] = 1;
     }
-    let mut order: Vec<u32> = Vec::with_capacity(v.len());
-    order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
-    if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
-        let mut keyed: Vec<(SortKey, u32)> = order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
-        sort_unstable(&mut keyed);
-        order = keyed.into_iter().map(|(_, i)| i).collect();
-    }
-    for (r, &i) in order.iter().enumerate() {
-        rank[i as usize] = r as u32;
-    }
-    let points: Vec<[f64; 2]> = order.iter().map(|&i| v[i as usize]).collect();
-    // On ranks, sorting by key is the canonical edge order of
-    // `EdgeCollection::to_polygon_set` (vertices lexicographic, edges by
-    // key).
-    let ranked: Vec<(u32, u32, i32)> = sel
-        .into_iter()
-        .map(|(a, b, m)| (rank[a as usize], rank[b as usize], m))
-        .collect();
-    let mut edges = merge_keyed(ranked, points.len());
-    merge_vertical_edges(&mut edges, &points);
-    // Keep the vertices some edge still uses (merging can drop some);
-    // renumbering in order keeps the edges sorted.
-    let mut new_index = vec![u32::MAX; points.len()];
-    for &(a, b, _) in &edges {
-        new_index[a as usize] = 0;
-        new_index[b as usize] = 0;
-    }
-    let mut vertices = Vec::with_capacity(points.len());
-    for (i, p) in points.iter().enumerate() {
-        if new_index[i] == 0 {
-            new_index[i] = vertices.len() as u32;
-            vertices.push(*p);
+    let all_used = rank.iter().all(|&r| r == 1);
+    let (points, mut edges, cancelled) =
+        if all_used && v.windows(2).all(|w| Pt::new(w[0]) < Pt::new(w[1])) {
+            let (edges, cancelled) = merge_keyed(sel, v.len(), |i| i);
+            (v.into_owned(), edges, cancelled)
+        } else {
+            let mut order: Vec<u32> = Vec::with_capacity(v.len());
+            order.extend((0..nv).filter(|&i| rank[i as usize] == 1));
+            if !order.windows(2).all(|w| pt(w[0]) < pt(w[1])) {
+                let mut keyed: Vec<(SortKey, u32)> =
+                    order.iter().map(|&i| (pt(i).sort_key(), i)).collect();
+                sort_unstable(&mut keyed);
+                order = keyed.into_iter().map(|(_, i)| i).collect();
+            }
+            for (r, &i) in order.iter().enumerate() {
+                rank[i as usize] = r as u32;
+            }
+            let points: Vec<[f64; 2]> = order.iter().map(|&i| v[i as usize]).collect();
+            // On ranks, sorting by key is the canonical edge order of
+            // `EdgeCollection::to_polygon_set` (vertices lexicographic,
+            // edges by key).
+            let (edges, cancelled) = merge_keyed(sel, points.len(), |i| rank[i as usize]);
+            (points, edges, cancelled)
+        };
+    let merged = merge_vertical_edges(&mut edges, &points);
+    // Every point is used by a selected edge. Unless merging dropped an
+    // edge, they all still are, and the points and ranks are the output's.
+    let (vertices, edges) = if !cancelled && !merged {
+        (points, edges)
+    } else {
+        // Keep the vertices some edge still uses; renumbering in order
+        // keeps the edges sorted.
+        let mut new_index = vec![u32::MAX; points.len()];
+        for &(a, b, _) in &edges {
+            new_index[a as usize] = 0;
+            new_index[b as usize] = 0;
         }
-    }
+        let mut vertices = Vec::with_capacity(points.len());
+        for (i, p) in points.iter().enumerate() {
+            if new_index[i] == 0 {
+                new_index[i] = vertices.len() as u32;
+                vertices.push(*p);
+            }
+        }
+        let edges = edges
+            .into_iter()
+            .map(|(a, b, m)| (new_index[a as usize], new_index[b as usize], m))
+            .collect();
+        (vertices, edges)
+    };
     let out = edges
         .into_iter()
         .map(|(a, b, m)| {
-            let (a, b) = (new_index[a as usize], new_index[b as usize]);
             if m > 0 || m == i32::MIN {
                 Edge2 {
                     start: a,
@@ -432,62 +454,72 @@ impl<W: Winding> CellStructure<W> {
     }
 }
 
-/// Sorts keyed edges `(l, r, m)` on the ranks `0..n` and merges identical
-/// keys, adding the multiplicities and dropping those that cancel (section
-/// 7.1.2).
-fn merge_keyed(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
-    let mut out = sort_by_rank(sel, n);
-    // In place: the first `w` entries are the result so far.
-    let mut w = 0;
-    for i in 0..out.len() {
-        let (a, b, m) = out[i];
-        if w > 0 && out[w - 1].0 == a && out[w - 1].1 == b {
-            out[w - 1].2 = out[w - 1].2.wrapping_add(m);
-        } else {
-            if w > 0 && out[w - 1].2 == 0 {
-                w -= 1;
-            }
-            out[w] = (a, b, m);
-            w += 1;
-        }
-    }
-    if w > 0 && out[w - 1].2 == 0 {
-        w -= 1;
-    }
-    out.truncate(w);
-    out
-}
-
-/// Sorts keyed edges `(l, r, m)` by `(l, r)`, given ranks `l, r < n` (as
-/// `shape_with` builds them): a counting
-/// sort by `l` (the ranks are dense), then each run of equal `l` (the few
-/// edges leaving one vertex rightwards) by `r`. Identical keys are summed
-/// by the caller, so their order does not matter.
-fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
+/// Sorts keyed edges `(l, r, m)` on the ranks `rank(l), rank(r) < n` by
+/// `(rank(l), rank(r))` and merges identical keys, adding the
+/// multiplicities and dropping those that cancel (section 7.1.2); the
+/// edges returned are on the ranks. Also returns whether a key cancelled
+/// (then a vertex may have lost its last edge).
+///
+/// A counting sort by `l` (the ranks are dense), the ranks applied as the
+/// edges are placed, then each run of equal `l` (the few edges leaving one
+/// vertex rightwards) sorted by `r` and merged in place, in one pass.
+fn merge_keyed(
+    sel: Vec<(u32, u32, i32)>,
+    n: usize,
+    rank: impl Fn(u32) -> u32,
+) -> (Vec<(u32, u32, i32)>, bool) {
     let mut next = vec![0u32; n + 1];
     for &(a, _, _) in &sel {
-        next[a as usize + 1] += 1;
+        next[rank(a) as usize + 1] += 1;
     }
     for i in 1..=n {
         next[i] += next[i - 1];
     }
     let mut out = vec![(0u32, 0u32, 0i32); sel.len()];
-    for e in sel {
-        let at = &mut next[e.0 as usize];
-        out[*at as usize] = e;
+    for (a, b, m) in sel {
+        let a = rank(a);
+        let at = &mut next[a as usize];
+        out[*at as usize] = (a, rank(b), m);
         *at += 1;
     }
     // Now `next[l]` is where the edges of `l` end and those of `l + 1`
-    // start.
-    let mut from = 0;
+    // start. The first `w` entries are the result so far.
+    let (mut w, mut from, mut cancelled) = (0, 0, false);
     for &to in &next[..n] {
-        let run = &mut out[from as usize..to as usize];
-        if run.len() > 1 {
-            run.sort_unstable_by_key(|e| e.1);
+        let to = to as usize;
+        let run = &mut out[from..to];
+        match run.len() {
+            0 => continue,
+            1 => {}
+            // Most runs: no call into the sort.
+            2 => {
+                if run[0].1 > run[1].1 {
+                    run.swap(0, 1);
+                }
+            }
+            _ => run.sort_unstable_by_key(|e| e.1),
+        }
+        // Identical keys are consecutive in the run; their order does not
+        // matter, as they are summed.
+        let mut i = from;
+        while i < to {
+            let (a, b, mut m) = out[i];
+            i += 1;
+            while i < to && out[i].1 == b {
+                m = m.wrapping_add(out[i].2);
+                i += 1;
+            }
+            if m == 0 {
+                cancelled = true;
+            } else {
+                out[w] = (a, b, m);
+                w += 1;
+            }
         }
         from = to;
     }
-    out
+    out.truncate(w);
+    (out, cancelled)
 }
 
 /// Section 7.6.1, footnote 9: the vertical edges at each x are replaced by
@@ -503,9 +535,10 @@ fn sort_by_rank(sel: Vec<(u32, u32, i32)>, n: usize) -> Vec<(u32, u32, i32)> {
 /// the edges leaving them form one run of `edges`, the vertical edges of
 /// that x are those of the run whose right end lies at that x too, and the
 /// break points of their 1D simplification are found by adding the
-/// multiplicities at the ranks of their ends (as `sort_by_rank` counts)
-/// rather than by sorting marks by y.
-fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
+/// multiplicities at the ranks of their ends (as `merge_keyed` counts)
+/// rather than by sorting marks by y. Returns whether there was an x with
+/// two or more vertical edges (else `edges` is untouched).
+fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) -> bool {
     let x_of = |i: u32| v[i as usize][0];
     // Most shapes have no x with two vertical edges: find the first such x
     // (its vertical edges are consecutive among the vertical edges) before
@@ -515,7 +548,7 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
         let x = x_of(l);
         x == x_of(r) && last.replace(x) == Some(x)
     }) else {
-        return;
+        return false;
     };
     let x = x_of(edges[second].0);
     let mut i = second;
@@ -590,6 +623,7 @@ fn merge_vertical_edges(edges: &mut Vec<(u32, u32, i32)>, v: &[[f64; 2]]) {
         out.extend(run[k..].iter().filter(|e| x_of(e.1) != x));
     }
     *edges = out;
+    true
 }
 
 /// Below this length a sort runs on the calling thread.
@@ -803,24 +837,107 @@ mod tests {
         edges.sort_unstable();
     }
 
-    /// `merge_keyed` sums and sorts as a map does.
+    /// A random permutation of `0..n`.
+    fn permutation(rng: &mut Rng, n: usize) -> Vec<u32> {
+        let mut p: Vec<u32> = (0..n as u32).collect();
+        for i in (1..n).rev() {
+            p.swap(i, rng.below(i + 1));
+        }
+        p
+    }
+
+    /// `merge_keyed` sums and sorts as a map does, on the ranks it is
+    /// given (the identity or a permutation), and tells whether a key
+    /// cancelled.
     #[test]
     fn merge_keyed_sums_in_key_order() {
         let mut rng = Rng(Xorshift64::new(0x9E37_79B9_7F4A_7C15));
-        for _ in 0..2_000 {
+        let mut cancelled_cases = 0;
+        for round in 0..4_000 {
             let (sel, v) = random_case(&mut rng);
+            let rank: Vec<u32> = if round % 2 == 0 {
+                (0..v.len() as u32).collect()
+            } else {
+                permutation(&mut rng, v.len())
+            };
             let mut map: BTreeMap<(u32, u32), i32> = BTreeMap::new();
             for &(a, b, m) in &sel {
-                let s = map.entry((a, b)).or_insert(0);
+                let s = map.entry((rank[a as usize], rank[b as usize])).or_insert(0);
                 *s = s.wrapping_add(m);
             }
+            let cancelled = map.values().any(|&m| m == 0);
             let expect: Keyed = map
                 .into_iter()
                 .filter(|&(_, m)| m != 0)
                 .map(|((a, b), m)| (a, b, m))
                 .collect();
-            assert_eq!(merge_keyed(sel, v.len()), expect);
+            let got = merge_keyed(sel, v.len(), |i| rank[i as usize]);
+            assert_eq!(got, (expect, cancelled));
+            cancelled_cases += usize::from(cancelled);
         }
+        assert!(cancelled_cases > 500, "only {cancelled_cases} cancelled");
+    }
+
+    /// `shape_of` gives the polygon set of the edge collection of section
+    /// 7.1.2 (edges added, vertical edges merged), on ids in lexicographic
+    /// order or permuted, with or without unused vertices, borrowed or
+    /// owned: both its shortcut (every vertex used, ids in order) and its
+    /// general path.
+    #[test]
+    fn shape_of_matches_the_edge_collection() {
+        let mut rng = Rng(Xorshift64::new(0x51A9_E0F5_0000_0001));
+        let mut shortcut = 0;
+        for round in 0..3_000 {
+            let (mut sel, mut v) = random_case(&mut rng);
+            if round % 3 > 0 {
+                // Only the used vertices, renumbered in order.
+                let mut id = vec![u32::MAX; v.len()];
+                for &(a, b, _) in &sel {
+                    id[a as usize] = 0;
+                    id[b as usize] = 0;
+                }
+                let mut used = Vec::new();
+                for (i, p) in v.iter().enumerate() {
+                    if id[i] == 0 {
+                        id[i] = used.len() as u32;
+                        used.push(*p);
+                    }
+                }
+                for e in &mut sel {
+                    (e.0, e.1) = (id[e.0 as usize], id[e.1 as usize]);
+                }
+                v = used;
+            }
+            if round % 3 == 2 {
+                // Ids out of lexicographic order.
+                let p = permutation(&mut rng, v.len());
+                let mut moved = v.clone();
+                for (i, &to) in p.iter().enumerate() {
+                    moved[to as usize] = v[i];
+                }
+                v = moved;
+                for e in &mut sel {
+                    (e.0, e.1) = (p[e.0 as usize], p[e.1 as usize]);
+                }
+            }
+            let mut c = EdgeCollection::new();
+            for &(a, b, m) in &sel {
+                c.add_edge(v[a as usize], v[b as usize], m);
+            }
+            c.merge_vertical_edges();
+            let expect = c.to_polygon_set();
+            let mut used = vec![false; v.len()];
+            for &(a, b, _) in &sel {
+                used[a as usize] = true;
+                used[b as usize] = true;
+            }
+            if used.iter().all(|&u| u) && v.windows(2).all(|w| Pt::new(w[0]) < Pt::new(w[1])) {
+                shortcut += 1;
+            }
+            assert_eq!(shape_of(Cow::Borrowed(&v), sel.clone()), expect);
+            assert_eq!(shape_of(Cow::Owned(v.clone()), sel), expect);
+        }
+        assert!(shortcut > 500, "only {shortcut} took the shortcut");
     }
 
     /// The one-pass vertical merge gives exactly the edges and the order of
@@ -831,12 +948,14 @@ mod tests {
         let mut merged = 0;
         for _ in 0..5_000 {
             let (sel, v) = random_case(&mut rng);
-            let edges = merge_keyed(sel, v.len());
+            let (edges, _) = merge_keyed(sel, v.len(), |i| i);
             let mut expect = edges.clone();
             merge_vertical_edges_by_sorting(&mut expect, &v);
             let mut got = edges.clone();
-            merge_vertical_edges(&mut got, &v);
+            let changed = merge_vertical_edges(&mut got, &v);
             assert_eq!(got, expect, "edges {edges:?} on points {v:?}");
+            // It says when it did not touch the edges.
+            assert!(changed || got == edges);
             if got != edges {
                 merged += 1;
             }
