@@ -149,7 +149,19 @@ fn cells_of_one(
 /// assert_eq!(both.shape.signed_area(), 1.0);
 /// ```
 pub fn simplify(set: &PolygonSet2, rule: FillRule) -> Result<Simplified, SimplifyError> {
-    Simplified::select(|w| rule.contains(*w), |out| cells_of_one(set, out))
+    let cells = |out: Output<'_, i32>| cells_of_one(set, out);
+    // One predicate per rule, each holding its rule as a constant, so that
+    // `contains` folds to the rule's test: the sweep calls the predicate
+    // twice per output edge, and the match on a rule held in the closure
+    // cost more than the test.
+    match rule {
+        FillRule::Positive => Simplified::select(|w| FillRule::Positive.contains(*w), cells),
+        FillRule::NonZero => Simplified::select(|w| FillRule::NonZero.contains(*w), cells),
+        FillRule::EvenOdd => Simplified::select(|w| FillRule::EvenOdd.contains(*w), cells),
+        FillRule::Negative => Simplified::select(|w| FillRule::Negative.contains(*w), cells),
+        FillRule::AtLeast2 => Simplified::select(|w| FillRule::AtLeast2.contains(*w), cells),
+        FillRule::Custom(f) => Simplified::select(move |w| f(*w), cells),
+    }
 }
 
 /// The cell structure of two polygon sets assembled, with the winding

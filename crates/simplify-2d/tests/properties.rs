@@ -96,6 +96,10 @@ fn check_always(input: &PolygonSet2, n: usize) -> CellStructure<i32> {
         assert_eq!(simplified.epsilon, cells.epsilon(), "{rule:?}");
         assert_eq!(simplified.stats, cells.stats(), "{rule:?}");
     }
+    // A caller's predicate, which `simplify` calls through another path
+    // than the named rules.
+    let custom = simplify(input, FillRule::Custom(|w| w & 1 == 1)).unwrap();
+    assert_eq!(custom.shape, cells.shape_with(|w| w & 1 == 1));
     let nv = cells.vertices().len();
     assert!(nv <= 2 * n * n + 8, "{nv} vertices for n = {n}");
     // Provenance: each cell edge within eps of the input edge it came from.
