@@ -213,10 +213,39 @@ pub fn boolean(
     b: &PolygonSet2,
     op: BooleanOp,
 ) -> Result<Simplified, SimplifyError> {
-    Simplified::select(
-        |w: &[i32; 2]| op.selects(w[0] > 0, w[1] > 0),
-        |out| cells_of_two(a, b, out),
-    )
+    let cells = |out: Output<'_, [i32; 2]>| cells_of_two(a, b, out);
+    // One predicate per operation, as in `simplify`.
+    let inside = |w: &[i32; 2]| (w[0] > 0, w[1] > 0);
+    match op {
+        BooleanOp::Union => Simplified::select(
+            |w| {
+                let (a, b) = inside(w);
+                BooleanOp::Union.selects(a, b)
+            },
+            cells,
+        ),
+        BooleanOp::Intersection => Simplified::select(
+            |w| {
+                let (a, b) = inside(w);
+                BooleanOp::Intersection.selects(a, b)
+            },
+            cells,
+        ),
+        BooleanOp::Difference => Simplified::select(
+            |w| {
+                let (a, b) = inside(w);
+                BooleanOp::Difference.selects(a, b)
+            },
+            cells,
+        ),
+        BooleanOp::Xor => Simplified::select(
+            |w| {
+                let (a, b) = inside(w);
+                BooleanOp::Xor.selects(a, b)
+            },
+            cells,
+        ),
+    }
 }
 
 /// The cell structure of any number of polygon sets assembled, with the
