@@ -270,7 +270,7 @@ impl<W: Winding> CellStructure<W> {
             Some(b) => b.clone(),
             None => self.selected(keep),
         };
-        shape_of(Cow::Borrowed(&self.vertices), sel)
+        shape_of(Cow::Borrowed(&self.vertices), sel, self.boundary.is_some())
     }
 
     /// The selected edges of a structure kept only for its shape.
@@ -291,13 +291,15 @@ impl<W: Winding> CellStructure<W> {
             boundary,
             ..
         } = self;
-        let sel = match boundary {
-            Some(b) => b,
-            None => selected(&vertices, &edges, keep),
+        // The vertices of a boundary structure are the ends of its
+        // selected edges (`Output::Boundary`).
+        let (sel, every_used) = match boundary {
+            Some(b) => (b, true),
+            None => (selected(&vertices, &edges, keep), false),
         };
         drop(edges);
         drop(rotations);
-        shape_of(Cow::Owned(vertices), sel)
+        shape_of(Cow::Owned(vertices), sel, every_used)
     }
 
     /// The edges separating a retained cell from a discarded one, keyed as
@@ -351,22 +353,37 @@ fn selected<W>(v: &[[f64; 2]], edges: &[CellEdge<W>], keep: impl Fn(&W) -> bool)
 /// is used and the ids are already in lexicographic order (the vertices of
 /// the sweep's `Output::Boundary`, unless a backward step of section 7.6.1
 /// intervened), the ids are the ranks and the vertices the output's, and
-/// neither is copied or renumbered.
-fn shape_of(v: Cow<'_, [[f64; 2]]>, sel: Vec<(u32, u32, i32)>) -> PolygonSet2 {
+/// neither is copied or renumbered. `every_used` tells that every vertex
+/// is an end of a selected edge (the vertices of `Output::Boundary`), so
+/// that they need not be marked.
+fn shape_of(v: Cow<'_, [[f64; 2]]>, sel: Vec<(u32, u32, i32)>, every_used: bool) -> PolygonSet2 {
     let nv = v.len() as u32;
     let pt = |i: u32| Pt::new(v[i as usize]);
-    // The vertices the selected edges use (marked in `rank` until they
-    // are ranked), in lexicographic order. Ids were given in event
+    // The vertices the selected edges use (marked with 1 in `rank` until
+    // they are ranked), in lexicographic order. Ids were given in event
     // order, which is lexicographic except after the backward steps of
-    // section 7.6.1: check before sorting.
-    let mut rank = vec![0u32; v.len()];
-    for &(a, b, _) in &sel {
-        rank[a as usize] = 1;
-        rank[b as usize] = 1;
+    // section 7.6.1: check before sorting. Not marked when the caller
+    // knows that every vertex is used.
+    let marks = |rank: &mut Vec<u32>| {
+        for &(a, b, _) in &sel {
+            rank[a as usize] = 1;
+            rank[b as usize] = 1;
+        }
+    };
+    let mut rank = vec![u32::from(every_used); v.len()];
+    if every_used {
+        debug_assert!({
+            let mut used = vec![0; v.len()];
+            marks(&mut used);
+            used == rank
+        });
+    } else {
+        marks(&mut rank);
     }
-    let all_used = rank.iter().all(|&r| r == 1);
+    let all_used = every_used || rank.iter().all(|&r| r == 1);
     let (points, mut edges, cancelled) =
         if all_used && v.windows(2).all(|w| Pt::new(w[0]) < Pt::new(w[1])) {
+            drop(rank);
             let (edges, cancelled) = merge_keyed(sel, v.len(), |i| i);
             (v.into_owned(), edges, cancelled)
         } else {
@@ -963,8 +980,9 @@ mod tests {
             if used.iter().all(|&u| u) && v.windows(2).all(|w| Pt::new(w[0]) < Pt::new(w[1])) {
                 shortcut += 1;
             }
-            assert_eq!(shape_of(Cow::Borrowed(&v), sel.clone()), expect);
-            assert_eq!(shape_of(Cow::Owned(v.clone()), sel), expect);
+            assert_eq!(shape_of(Cow::Borrowed(&v), sel.clone(), false), expect);
+            let every_used = used.iter().all(|&u| u);
+            assert_eq!(shape_of(Cow::Owned(v.clone()), sel, every_used), expect);
         }
         assert!(shortcut > 500, "only {shortcut} took the shortcut");
     }
