@@ -333,13 +333,6 @@ impl<W: Winding> Emitted<'_, W> {
 
     /// Sends a finished sweep-line edge (from `l` to the vertex `end` at
     /// `p`) to the output edges; it leaves the sweep line.
-    ///
-    /// Inlined into the group loop of `Sweep::process`, its one caller
-    /// (two call sites), which the compiler does not do by itself: the
-    /// call saved and restored six registers for a body of a few dozen
-    /// instructions, once per output edge (about 1% of a simplification's
-    /// instructions).
-    #[inline(always)]
     fn emit(&mut self, e: &SweepEdge<W>, end: u32, p: Pt, k: u32) {
         self.k_max = self.k_max.max(k);
         let start = e.lid;
