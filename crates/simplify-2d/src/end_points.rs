@@ -126,26 +126,26 @@ impl EndPoints {
         (self.count.len() - 1) as Slot
     }
 
-    /// The smallest candidate event point not passed yet.
+    /// The smallest candidate event point not passed yet, as its sort key.
     #[inline]
-    pub(crate) fn candidate(&self) -> Option<Pt> {
+    pub(crate) fn candidate(&self) -> Option<SortKey> {
         let a = self.input.last().map(|e| e.0);
         let b = self.extra.peek().map(|r| r.0 .0);
         match (a, b) {
-            (Some(a), Some(b)) => Some(Pt::from_sort_key(a.min(b))),
-            (Some(k), None) | (None, Some(k)) => Some(Pt::from_sort_key(k)),
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (Some(k), None) | (None, Some(k)) => Some(k),
             (None, None) => None,
         }
     }
 
-    /// Marks the event point `p`, the smallest of all candidates and
-    /// pending left points, as reached, and returns the number of
+    /// Marks the event point `p` (sort key `key`), the smallest of all
+    /// candidates and pending left points, as reached, and returns the number of
     /// sweep-line edges that end there in the slots visited here: the input
     /// right point's and the heap's. The caller adds the slots of the
     /// buffer edges starting at `p` ([`EndPoints::take`]). Also returns
     /// whether the heap held `p` (every uncovered split point is there).
-    pub(crate) fn reach(&mut self, p: Pt) -> (u32, bool) {
-        let key = p.sort_key();
+    #[inline]
+    pub(crate) fn reach(&mut self, p: Pt, key: SortKey) -> (u32, bool) {
         let mut n = 0;
         let mut extra = false;
         if let Some(&(k, slot)) = self.input.last() {
@@ -302,7 +302,7 @@ mod tests {
                     // An event at the smallest candidate or pending point.
                     _ => {
                         let pmin = pending.iter().map(|q| q.0).min();
-                        let p = match (e.candidate(), pmin) {
+                        let p = match (e.candidate().map(Pt::from_sort_key), pmin) {
                             (Some(a), Some(b)) => a.min(b),
                             (Some(a), None) | (None, Some(a)) => a,
                             (None, None) => continue,
@@ -311,7 +311,7 @@ mod tests {
                         for (q, _) in &live {
                             assert!(*q >= p, "live end {q:?} skipped before {p:?}");
                         }
-                        let mut n = e.reach(p).0;
+                        let mut n = e.reach(p, p.sort_key()).0;
                         passed = passed.max(Some(p));
                         for &(q, slot) in &pending {
                             if q == p {
@@ -359,9 +359,10 @@ mod tests {
                 e.start();
                 let mut last: Option<Pt> = None;
                 let mut distinct = 0;
-                while let Some(p) = e.candidate() {
+                while let Some(key) = e.candidate() {
+                    let p = Pt::from_sort_key(key);
                     assert!(last < Some(p), "n {n}: {p:?} after {last:?}");
-                    e.reach(p);
+                    e.reach(p, key);
                     last = Some(p);
                     distinct += 1;
                 }
