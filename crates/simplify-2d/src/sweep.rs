@@ -74,9 +74,10 @@ struct Pending<W> {
 /// the larger adjustment count and the first provenance; an edge whose
 /// multiplicity cancels to zero is removed, and a later identical edge
 /// starts afresh.
+#[inline]
 fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Most points start edges to distinct right points, none cancelled:
-    // nothing to merge.
+    // nothing to merge (checked here, inline, the merge apart).
     if items
         .windows(2)
         .all(|w| w[0].l != w[1].l || w[0].r != w[1].r)
@@ -84,6 +85,12 @@ fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     {
         return;
     }
+    merge_runs(items);
+}
+
+/// [`merge_identical`] when some edges are identical or cancelled.
+#[inline(never)]
+fn merge_runs<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Items before `w` are the result; `open` while the last of them may
     // still absorb identical edges.
     let mut w: usize = 0;
