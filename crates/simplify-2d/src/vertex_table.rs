@@ -262,6 +262,7 @@ impl PointTable {
 impl VertexTable {
     /// The processed point `q` of the current column, if it is one. Notes
     /// a look-up behind the column.
+    #[inline]
     fn find(&mut self, q: Pt) -> Option<Found> {
         match self.max_done {
             Some(m) if q <= m => {
