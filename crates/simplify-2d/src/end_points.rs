@@ -146,29 +146,46 @@ impl EndPoints {
     /// whether the heap held `p` (every uncovered split point is there).
     #[inline]
     pub(crate) fn reach(&mut self, p: Pt, key: SortKey) -> (u32, bool) {
+        // Inline, the comparisons that usually find nothing to visit (a
+        // crossing); the visits apart.
         let mut n = 0;
-        let mut extra = false;
-        if let Some(&(k, slot)) = self.input.last() {
-            if k == key {
-                n += self.take(slot);
-                while self.input.last().is_some_and(|e| e.0 == key) {
-                    self.input.pop();
-                }
-                crate::cells::release_consumed(&mut self.input);
-            }
+        if self.input.last().is_some_and(|e| e.0 == key) {
+            n += self.reach_input(key);
         }
+        let extra = self.extra.peek().is_some_and(|r| r.0 .0 == key);
+        if extra {
+            n += self.reach_extra(key);
+        }
+        if self.passed.is_none_or(|m| p > m) {
+            self.passed = Some(p);
+        }
+        (n, extra)
+    }
+
+    /// [`EndPoints::reach`] at the next input right point, `key`.
+    #[inline(never)]
+    fn reach_input(&mut self, key: SortKey) -> u32 {
+        let slot = self.input.last().map_or(Slot::MAX, |e| e.1);
+        let n = self.take(slot);
+        while self.input.last().is_some_and(|e| e.0 == key) {
+            self.input.pop();
+        }
+        crate::cells::release_consumed(&mut self.input);
+        n
+    }
+
+    /// [`EndPoints::reach`] at the smallest point of the heap, `key`.
+    #[inline(never)]
+    fn reach_extra(&mut self, key: SortKey) -> u32 {
+        let mut n = 0;
         while let Some(&Reverse((k, slot))) = self.extra.peek() {
             if k != key {
                 break;
             }
             self.extra.pop();
             n += self.take(slot);
-            extra = true;
         }
-        if self.passed.is_none_or(|m| p > m) {
-            self.passed = Some(p);
-        }
-        (n, extra)
+        n
     }
 
     /// Visits `slot` at its point: returns its count and zeroes it (the
