@@ -89,19 +89,28 @@ impl Ahead {
     }
 
     /// The count of `q`, inserted as 0 if absent.
+    #[inline]
     fn get_or_zero(&mut self, q: Pt) -> &mut u32 {
         if self.map.is_empty() {
-            if let Some(i) = self.list.iter().position(|e| e.0 == q) {
-                return &mut self.list[i].1;
-            }
-            if self.list.len() < AHEAD_LIST_MAX {
-                self.list.push((q, 0));
-                let last = self.list.len() - 1;
-                return &mut self.list[last].1;
-            }
-            for (p, k) in self.list.drain(..) {
-                *self.map.get_or_zero(p) = k;
-            }
+            return self.list_get_or_zero(q);
+        }
+        self.map.get_or_zero(q)
+    }
+
+    /// [`Ahead::get_or_zero`] while the table is empty: in the list, or
+    /// in the table once the list is full.
+    #[inline(never)]
+    fn list_get_or_zero(&mut self, q: Pt) -> &mut u32 {
+        if let Some(i) = self.list.iter().position(|e| e.0 == q) {
+            return &mut self.list[i].1;
+        }
+        if self.list.len() < AHEAD_LIST_MAX {
+            self.list.push((q, 0));
+            let last = self.list.len() - 1;
+            return &mut self.list[last].1;
+        }
+        for (p, k) in self.list.drain(..) {
+            *self.map.get_or_zero(p) = k;
         }
         self.map.get_or_zero(q)
     }
