@@ -101,8 +101,9 @@ impl BufferHeap {
         let mut i = 0;
         loop {
             let c = 4 * i + 1;
-            if c + 3 < n {
-                let (k0, k1, k2, k3) = (v[c].k(), v[c + 1].k(), v[c + 2].k(), v[c + 3].k());
+            // One bounds check for the four children.
+            if let Some(f) = v.get(c..c + 4) {
+                let (k0, k1, k2, k3) = (f[0].k(), f[1].k(), f[2].k(), f[3].k());
                 let (a, ka) = if k1 < k0 { (c + 1, k1) } else { (c, k0) };
                 let (b, kb) = if k3 < k2 { (c + 3, k3) } else { (c + 2, k2) };
                 let m = if kb < ka { b } else { a };

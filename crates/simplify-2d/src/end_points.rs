@@ -126,49 +126,66 @@ impl EndPoints {
         (self.count.len() - 1) as Slot
     }
 
-    /// The smallest candidate event point not passed yet.
+    /// The smallest candidate event point not passed yet, as its sort key.
     #[inline]
-    pub(crate) fn candidate(&self) -> Option<Pt> {
+    pub(crate) fn candidate(&self) -> Option<SortKey> {
         let a = self.input.last().map(|e| e.0);
         let b = self.extra.peek().map(|r| r.0 .0);
         match (a, b) {
-            (Some(a), Some(b)) => Some(Pt::from_sort_key(a.min(b))),
-            (Some(k), None) | (None, Some(k)) => Some(Pt::from_sort_key(k)),
+            (Some(a), Some(b)) => Some(a.min(b)),
+            (Some(k), None) | (None, Some(k)) => Some(k),
             (None, None) => None,
         }
     }
 
-    /// Marks the event point `p`, the smallest of all candidates and
-    /// pending left points, as reached, and returns the number of
+    /// Marks the event point `p` (sort key `key`), the smallest of all
+    /// candidates and pending left points, as reached, and returns the number of
     /// sweep-line edges that end there in the slots visited here: the input
     /// right point's and the heap's. The caller adds the slots of the
     /// buffer edges starting at `p` ([`EndPoints::take`]). Also returns
     /// whether the heap held `p` (every uncovered split point is there).
-    pub(crate) fn reach(&mut self, p: Pt) -> (u32, bool) {
-        let key = p.sort_key();
+    #[inline]
+    pub(crate) fn reach(&mut self, p: Pt, key: SortKey) -> (u32, bool) {
+        // Inline, the comparisons that usually find nothing to visit (a
+        // crossing); the visits apart.
         let mut n = 0;
-        let mut extra = false;
-        if let Some(&(k, slot)) = self.input.last() {
-            if k == key {
-                n += self.take(slot);
-                while self.input.last().is_some_and(|e| e.0 == key) {
-                    self.input.pop();
-                }
-                crate::cells::release_consumed(&mut self.input);
-            }
+        if self.input.last().is_some_and(|e| e.0 == key) {
+            n += self.reach_input(key);
         }
+        let extra = self.extra.peek().is_some_and(|r| r.0 .0 == key);
+        if extra {
+            n += self.reach_extra(key);
+        }
+        if self.passed.is_none_or(|m| p > m) {
+            self.passed = Some(p);
+        }
+        (n, extra)
+    }
+
+    /// [`EndPoints::reach`] at the next input right point, `key`.
+    #[inline(never)]
+    fn reach_input(&mut self, key: SortKey) -> u32 {
+        let slot = self.input.last().map_or(Slot::MAX, |e| e.1);
+        let n = self.take(slot);
+        while self.input.last().is_some_and(|e| e.0 == key) {
+            self.input.pop();
+        }
+        crate::cells::release_consumed(&mut self.input);
+        n
+    }
+
+    /// [`EndPoints::reach`] at the smallest point of the heap, `key`.
+    #[inline(never)]
+    fn reach_extra(&mut self, key: SortKey) -> u32 {
+        let mut n = 0;
         while let Some(&Reverse((k, slot))) = self.extra.peek() {
             if k != key {
                 break;
             }
             self.extra.pop();
             n += self.take(slot);
-            extra = true;
         }
-        if self.passed.is_none_or(|m| p > m) {
-            self.passed = Some(p);
-        }
-        (n, extra)
+        n
     }
 
     /// Visits `slot` at its point: returns its count and zeroes it (the
@@ -302,7 +319,7 @@ mod tests {
                     // An event at the smallest candidate or pending point.
                     _ => {
                         let pmin = pending.iter().map(|q| q.0).min();
-                        let p = match (e.candidate(), pmin) {
+                        let p = match (e.candidate().map(Pt::from_sort_key), pmin) {
                             (Some(a), Some(b)) => a.min(b),
                             (Some(a), None) | (None, Some(a)) => a,
                             (None, None) => continue,
@@ -311,7 +328,7 @@ mod tests {
                         for (q, _) in &live {
                             assert!(*q >= p, "live end {q:?} skipped before {p:?}");
                         }
-                        let mut n = e.reach(p).0;
+                        let mut n = e.reach(p, p.sort_key()).0;
                         passed = passed.max(Some(p));
                         for &(q, slot) in &pending {
                             if q == p {
@@ -359,9 +376,10 @@ mod tests {
                 e.start();
                 let mut last: Option<Pt> = None;
                 let mut distinct = 0;
-                while let Some(p) = e.candidate() {
+                while let Some(key) = e.candidate() {
+                    let p = Pt::from_sort_key(key);
                     assert!(last < Some(p), "n {n}: {p:?} after {last:?}");
-                    e.reach(p);
+                    e.reach(p, key);
                     last = Some(p);
                     distinct += 1;
                 }

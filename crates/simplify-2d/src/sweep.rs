@@ -37,7 +37,7 @@
 use crate::buffer_heap::{BufferHeap, Entry};
 use crate::cells::{CellEdge, CellStructure, Fan, Keyed, SweepStats};
 use crate::end_points::{EndPoints, Slot};
-use crate::point::Pt;
+use crate::point::{Pt, SortKey};
 use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
@@ -74,9 +74,10 @@ struct Pending<W> {
 /// the larger adjustment count and the first provenance; an edge whose
 /// multiplicity cancels to zero is removed, and a later identical edge
 /// starts afresh.
+#[inline]
 fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Most points start edges to distinct right points, none cancelled:
-    // nothing to merge.
+    // nothing to merge (checked here, inline, the merge apart).
     if items
         .windows(2)
         .all(|w| w[0].l != w[1].l || w[0].r != w[1].r)
@@ -84,6 +85,12 @@ fn merge_identical<W: Winding>(items: &mut Vec<Pending<W>>) {
     {
         return;
     }
+    merge_runs(items);
+}
+
+/// [`merge_identical`] when some edges are identical or cancelled.
+#[inline(never)]
+fn merge_runs<W: Winding>(items: &mut Vec<Pending<W>>) {
     // Items before `w` are the result; `open` while the last of them may
     // still absorb identical edges.
     let mut w: usize = 0;
@@ -512,19 +519,22 @@ fn sweep<W: Winding + Sync>(
         .saturating_mul(8)
         .saturating_add(1 << 20);
     loop {
+        // The sources of the next event point compare as sort keys, and
+        // the point is decoded once.
         let pe = s.first_pending();
         let se = s.ends.candidate();
-        let p = match (pe, se) {
+        let key = match (pe, se) {
             (Some(a), Some(b)) => a.min(b),
             (Some(a), None) => a,
             (None, Some(b)) => b,
             (None, None) => break,
         };
+        let p = Pt::from_sort_key(key);
         let mut pending = std::mem::take(&mut s.scratch_pending);
         pending.clear();
-        let (mut ending, mut split_point) = s.ends.reach(p);
-        if pe == Some(p) {
-            let (n, buffered) = s.take_pending_at(p, &mut pending);
+        let (mut ending, mut split_point) = s.ends.reach(p, key);
+        if pe == Some(key) {
+            let (n, buffered) = s.take_pending_at(p, key, &mut pending);
             ending += n;
             split_point |= buffered;
         }
@@ -668,10 +678,11 @@ impl<W: Winding> Sweep<'_, W> {
         forward.then_some(slot)
     }
 
-    /// The smallest left point of a pending edge.
-    fn first_pending(&self) -> Option<Pt> {
-        let a = self.input.last().map(|e| e.l);
-        let b = self.buffer.peek_key().map(Pt::from_sort_key);
+    /// The smallest left point of a pending edge, as its sort key.
+    #[inline]
+    fn first_pending(&self) -> Option<SortKey> {
+        let a = self.input.last().map(|e| e.l.sort_key());
+        let b = self.buffer.peek_key();
         match (a, b) {
             (Some(a), Some(b)) => Some(a.min(b)),
             (a, None) => a,
@@ -683,8 +694,8 @@ impl<W: Winding> Sweep<'_, W> {
     /// merged (section 7.1.2), sorted by right point, non-zero, in `out`
     /// (empty on entry). Returns the number of sweep-line edges ending at
     /// `p` in the counting slots the buffer edges cover (`end_points.rs`),
-    /// and whether any buffer edge started at `p`.
-    fn take_pending_at(&mut self, p: Pt, out: &mut Vec<Pending<W>>) -> (u32, bool) {
+    /// and whether any buffer edge started at `p`, whose sort key is `key`.
+    fn take_pending_at(&mut self, p: Pt, key: SortKey, out: &mut Vec<Pending<W>>) -> (u32, bool) {
         // Input edges are already merged; move them out (the last ones
         // of the reversed list, taken in key order).
         if self.input.last().is_some_and(|e| e.l == p) {
@@ -693,7 +704,6 @@ impl<W: Winding> Sweep<'_, W> {
             }
             crate::cells::release_consumed(&mut self.input);
         }
-        let key = p.sort_key();
         let mut ending = 0;
         let mut buffered = false;
         while self.buffer.peek_key() == Some(key) {
