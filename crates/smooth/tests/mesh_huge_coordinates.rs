@@ -2,7 +2,9 @@
 //! and a tetrahedron whose coordinates reach about 1e306, smoothed at
 //! `size * 2^-48`, where squared distances and the squared tolerance
 //! overflow. The result must be valid, idempotent, and no vertex may move
-//! farther than the reported distortion bound.
+//! farther than the reported distortion bound. Also a property-test find:
+//! a vertex created on edges `1e300` long, which only the bound's rounding
+//! allowance covers.
 
 use boolean_3d::{boolean_mesh, BooleanOp};
 use smooth::{sanity_check_mesh, smooth_mesh, smooth_triangles, SmoothOptions};
@@ -125,4 +127,49 @@ fn huge_planar_coordinates_stay_within_the_distortion_bound() {
             out.report
         );
     }
+}
+
+/// A property-test find: a box whose corners were replaced by garbage up
+/// to `1e300`, smoothed at tolerance 0 (so at the scaled floor `2^-500`,
+/// about `3e89` here). Two of its edges, in the plane `x = 1`, cross: one
+/// along y at `z = 1`, one from `z = 1e300` to `z = -1e300`, and the vertex
+/// created at their crossing can only be placed within the coordinates'
+/// resolution (about `1e284`) of the steep edge. The bound must cover that
+/// rounding (it reported `2.5` times the tolerance alone, below the
+/// measured `1.8e252`), and stay within it.
+#[test]
+fn a_vertex_created_on_edges_1e300_long_stays_within_the_bound() {
+    let corners = [
+        [1.0, 1.0, 1.0],
+        [2.5462949704181076e89, 0.0, 1.0],
+        [1.0, 1e300, 0.0],
+        [1.0, 1.0, 1e300],
+        [1.0, 1.0, 1.0],
+        [1.0, 8.257250981989829e283, 1.0],
+        [1.0, 1.0, 1.0],
+        [1.0, 3.05887055934763e268, -1e300],
+    ];
+    let loops: [&[u32]; 6] = [
+        &[0, 2, 3, 1],
+        &[4, 5, 7, 6],
+        &[0, 1, 5, 4],
+        &[2, 6, 7, 3],
+        &[0, 4, 6, 2],
+        &[1, 3, 7, 5],
+    ];
+    let m = PolygonMesh::new(
+        corners.to_vec(),
+        loops.iter().map(|l| Facet::from_loop(l)).collect(),
+    );
+    let out = smooth_mesh(&m, &SmoothOptions::new(0.0)).unwrap();
+    sanity_check_mesh(&out.shape, 0.0).unwrap();
+    let r = &out.report;
+    assert!(r.counts.vertices_created >= 1, "{r:?}");
+    assert!(r.max_displacement > 1e200, "the crossing's rounding: {r:?}");
+    assert!(r.max_displacement <= r.distortion_bound, "{r:?}");
+    // 2.5 times the tolerance used plus 64 units of roundoff of 1e300.
+    assert!(
+        r.distortion_bound <= 1e90 + 64.0 * (f64::EPSILON / 2.0) * 1e300,
+        "{r:?}"
+    );
 }

@@ -15,7 +15,9 @@
 //! 5. empty facet and unreferenced vertex removal, and the report.
 //!
 //! An input vertex moves at most `delta`; a created vertex lies within
-//! `2.5 delta` of the input edges it descends from: the distortion bound.
+//! `2.5 delta` of the input edges it descends from, plus the rounding of
+//! its computation (at most 64 units of roundoff of the largest coordinate
+//! of its edges): the distortion bound.
 
 mod cancel;
 mod crack;
@@ -34,7 +36,8 @@ pub use triangles::smooth_triangles;
 use crate::mesh::geom::{dist2, point_segment};
 use crate::mesh::structure::{Origin, Work};
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
-use topology::PolygonMesh;
+use robust_arith::UNIT_ROUNDOFF;
+use topology::{Point3, PolygonMesh};
 
 /// Smooths a polygon mesh (Appendix A): merges vertices within
 /// `options.tolerance`, cracks edges at nearby vertices and where two
@@ -117,6 +120,32 @@ pub(crate) fn range_scale_of(
     let e = ((top.to_bits() >> 52) & 0x7ff) as i32 - 1023;
     let k = e - RANGE_TOP_EXP;
     Some((2f64.powi(-k), 2f64.powi(k)))
+}
+
+/// The rounding allowance of a created vertex, in units of `u M` with
+/// `u` the unit roundoff and `M` the largest coordinate magnitude of the
+/// vertex and the two edges it was made on. Their closest points
+/// (`segment_segment`: a difference, a product and a sum per coordinate)
+/// lie within `5 sqrt(3) u M` of the edges, their midpoint adds
+/// `2 sqrt(3) u M`, and the report's distance to an edge
+/// (`point_segment`) errs by at most about `37 u M` (the projection
+/// parameter, `28 u M` along the edge, and the closest point,
+/// `5 sqrt(3) u M`): together under `50 u M`. No `f64` point need lie
+/// closer than that to a long edge, so a tolerance finer than the
+/// coordinates' resolution cannot bound a created vertex by itself (a
+/// property-test find: edges `1e300` long at tolerance 0, smoothed at the
+/// scaled tolerance `2^-500`).
+const CREATED_ROUNDING_ULPS: f64 = 64.0;
+
+/// [`CREATED_ROUNDING_ULPS`] `u M` for a vertex at `p` created on the
+/// edges with end points `e`.
+fn created_rounding(p: Point3, e: &[Point3; 4]) -> f64 {
+    let m = e
+        .iter()
+        .chain(std::iter::once(&p))
+        .flatten()
+        .fold(0.0f64, |m, x| m.max(x.abs()));
+    CREATED_ROUNDING_ULPS * UNIT_ROUNDOFF * m
 }
 
 /// The tolerance used at the scale `down` (at least `2^-500`, whose
@@ -276,7 +305,7 @@ fn report(
         match w.origin[v] {
             Origin::Input(_) if w.adjustments[v] > 0 => bound = bound.max(delta),
             Origin::Input(_) => {}
-            Origin::Created(_) => bound = bound.max(2.5 * delta),
+            Origin::Created(e) => bound = bound.max(2.5 * delta + created_rounding(w.pos[v], &e)),
         }
         if slot.is_none() {
             continue;
