@@ -39,7 +39,9 @@ proptest! {
             sanity_check_mesh(&near.shape, DELTA).unwrap();
             prop_assert_eq!(canonical::mesh_facets(&near.shape), canonical::mesh_facets(&whole.shape));
             prop_assert_eq!(near.report.counts, whole.report.counts);
-            m = whole.shape;
+            let settled = settle(whole.shape, |m| smooth_mesh(m, &opts).unwrap());
+            prop_assume!(settled.is_some(), "smoothing did not settle");
+            m = settled.unwrap();
         }
     }
 
@@ -51,15 +53,59 @@ proptest! {
         let opts = SmoothOptions::new(DELTA);
         let mut m = box_triangles(first.0, first.1);
         for (o, b) in &rest {
-            let (out, c) =
-                boolean_triangles_with_contacts(&m, &box_triangles(b.0, b.1), *o, DELTA).unwrap();
+            let other = box_triangles(b.0, b.1);
+            let (out, c) = boolean_triangles_with_contacts(&m, &other, *o, DELTA).unwrap();
             let whole = smooth_triangles(&out.mesh, &opts).unwrap();
             let near = smooth_triangles_near(&out.mesh, &opts, &c.boxes).unwrap();
             sanity_check_triangles(&near.shape, DELTA).unwrap();
-            prop_assert_eq!(canonical::triangles(&near.shape), canonical::triangles(&whole.shape));
-            m = whole.shape;
+            let (near_t, whole_t) = (canonical::triangles(&near.shape), canonical::triangles(&whole.shape));
+            if near_t != whole_t {
+                // The documented exception: the Boolean re-triangulates a
+                // merged coplanar region also away from the contacts (a
+                // property-test find: a union with a disjoint box), and in
+                // a vertex cluster a few delta wide the new triangulation
+                // can pass within delta of a vertex, which whole smoothing
+                // cracks and near smoothing leaves. Every triangle only
+                // near smoothing has is then one the Boolean made, in
+                // neither operand.
+                let operands: std::collections::HashSet<_> = canonical::triangles(&m)
+                    .into_iter()
+                    .chain(canonical::triangles(&other))
+                    .collect();
+                for t in near_t.iter().filter(|t| whole_t.binary_search(t).is_err()) {
+                    prop_assert!(!operands.contains(t), "an operand's triangle differs: {:?}", t);
+                    let p = t.map(|q| q.map(f64::from_bits));
+                    let touches = |bx: &[Point3; 2]| {
+                        (0..3).all(|k| {
+                            p.iter().any(|q| q[k] >= bx[0][k]) && p.iter().any(|q| q[k] <= bx[1][k])
+                        })
+                    };
+                    prop_assert!(!c.boxes.iter().any(touches), "a difference at a contact: {:?}", p);
+                }
+            }
+            let settled = settle(whole.shape, |m| smooth_triangles(m, &opts).unwrap());
+            prop_assume!(settled.is_some(), "smoothing did not settle");
+            m = settled.unwrap();
         }
     }
+}
+
+/// The next operand of a chain: `m` smoothed again until a run changes
+/// nothing (at most four runs; `None` if it does not settle). The
+/// comparison needs operands that need no smoothing, and one run does not
+/// always leave a fixpoint: in the triangle variant re-triangulation may
+/// add an internal edge within `delta` of a vertex in a cluster a few
+/// `delta` wide, which a second run cracks (the documented limit of
+/// idempotence; a property-test find on a union of boxes 1e-7 apart).
+fn settle<M>(mut m: M, mut smooth: impl FnMut(&M) -> smooth::Smoothed<M>) -> Option<M> {
+    for _ in 0..4 {
+        let again = smooth(&m);
+        if again.report.counts == smooth::SmoothCounts::default() {
+            return Some(m);
+        }
+        m = again.shape;
+    }
+    None
 }
 
 #[test]
