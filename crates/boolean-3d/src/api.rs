@@ -531,11 +531,11 @@ pub(crate) fn triangle_result(
     audit: bool,
     proximity: Option<f64>,
 ) -> Result<(TriangleOutput, Option<Audit>, Option<Contacts>), Boolean3Error> {
-    let (r, l3, mut audit, contacts) = run(fa, fb, broad, op, audit, proximity)?;
+    let (r, l3, mut audit, mut contacts) = run(fa, fb, broad, op, audit, proximity)?;
     let intersections = l3.x12.len() + l3.x21.len();
     drop(l3);
     let sigma_b = if op == BooleanOp::Difference { -1 } else { 1 };
-    let mesh = to_triangle_mesh(
+    let (mesh, changed) = to_triangle_mesh(
         r,
         [
             Source {
@@ -554,6 +554,13 @@ pub(crate) fn triangle_result(
             },
         ],
     );
+    if let Some(c) = contacts.as_mut() {
+        // The regions re-triangulated anew lie at the contacts when the
+        // Boolean cut them; the others (a merge dropped a vertex that only
+        // subdivided a straight edge) are places the result differs from
+        // the operands too.
+        c.add_changed(changed);
+    }
     if let Some(au) = audit.as_mut() {
         // Theorem 4 on the polygon result the Boolean built, then shape
         // boundary closure of its triangulation.

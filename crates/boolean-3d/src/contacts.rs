@@ -19,13 +19,32 @@ pub struct Contacts {
     /// operand (in the triangle-mesh variant: of the merged coplanar
     /// facets the Boolean ran on) that may come within `proximity` of a
     /// facet of the other operand, grown by `proximity` on every side, in
-    /// A's facet order then B's. A facet pair counts when their boxes come
+    /// A's facet order then B's; in the triangle-mesh variant followed by
+    /// the box of every region re-triangulated anew although its merged
+    /// facet held several input triangles, grown alike (the result's
+    /// triangles differ from the operands' there, also where a merge
+    /// dropped a vertex that only subdivided a straight edge, away from
+    /// the other operand). A facet pair counts when their boxes come
     /// within `proximity` and no plane of either facet separates them by
     /// more than `proximity` (a conservative test: never a pair that does
     /// come that close left out). Every point of either operand within
     /// `proximity` of the other operand, every intersection point, and so
     /// every vertex the Boolean created lies in one of them.
     pub boxes: Vec<[Point3; 2]>,
+}
+
+impl Contacts {
+    /// Adds the exact boxes `changed` (regions the triangle variant's
+    /// re-triangulation made anew), grown by the proximity, after those
+    /// of the operands' facets.
+    pub(crate) fn add_changed(&mut self, changed: Vec<[Point3; 2]>) {
+        let p = self.proximity;
+        self.boxes.extend(
+            changed
+                .into_iter()
+                .map(|[lo, hi]| [lo.map(|x| x - p), hi.map(|x| x + p)]),
+        );
+    }
 }
 
 /// The single-precision margin of the broad phase for `proximity`: twice

@@ -62,10 +62,24 @@ pub(crate) struct Source<'a> {
 /// thousand holes) does not hold up the facets after it in its chunk.
 const PIECE_HALF_EDGES: usize = 4096;
 
+/// One piece's triangles and the boxes of its regions re-triangulated
+/// anew.
+type Piece = (Vec<[u32; 3]>, Vec<[Point3; 2]>);
+
 /// Triangulates every retained facet, piece by piece in parallel (runs of
 /// facets of one chunk, see [`PIECE_HALF_EDGES`]), concatenated in facet
 /// order: the output does not depend on the thread count.
-pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> TriangleMesh {
+///
+/// Also returns the exact bounding box of every region that was
+/// re-triangulated although its merged facet held several input triangles
+/// (a facet the Boolean cut, or one whose merge dropped a vertex that only
+/// subdivided a straight edge): the places where the result's triangles
+/// differ from the operands' besides the facets of one triangle, in piece
+/// order.
+pub(crate) fn to_triangle_mesh(
+    r: Retained,
+    sources: [Source<'_>; 2],
+) -> (TriangleMesh, Vec<[Point3; 2]>) {
     // (chunk, facets lo..hi of its list, first half-edge of facet lo).
     let mut pieces: Vec<(usize, usize, usize, usize)> = Vec::new();
     for (c, (_, _, list)) in r.chunks.iter().enumerate() {
@@ -91,7 +105,7 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
     } else {
         usize::MAX
     };
-    let parts: Vec<Vec<[u32; 3]>> = pieces
+    let parts: Vec<Piece> = pieces
         .par_iter()
         .with_min_len(split)
         .map(|&(c, lo, hi, start)| {
@@ -101,15 +115,22 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
             // One triangle per facet in the common case (a triangle kept).
             let mut tris = Vec::with_capacity(hi - lo);
             let mut scratch = Scratch::default();
+            let mut changed = Vec::new();
             let mut at = start;
             for &(f, n) in &list[lo..hi] {
                 let part = &hes[at..at + n as usize];
                 at += n as usize;
-                facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
+                let before = tris.len();
+                let fresh = facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
+                if fresh > 0 {
+                    changed.push(bounding_box(&r.vertices, &tris[before..before + fresh]));
+                }
             }
-            tris
+            (tris, changed)
         })
         .collect();
+    let (parts, changed): (Vec<_>, Vec<_>) = parts.into_iter().unzip();
+    let changed = changed.into_iter().flatten().collect();
     // The retained facets and vertex maps are freed before the triangles
     // are gathered into one array.
     let Retained {
@@ -119,7 +140,21 @@ pub(crate) fn to_triangle_mesh(r: Retained, sources: [Source<'_>; 2]) -> Triangl
         ..
     } = r;
     drop((chunks, maps));
-    TriangleMesh::new(vertices, gather(parts, split))
+    (TriangleMesh::new(vertices, gather(parts, split)), changed)
+}
+
+/// The exact bounding box of the vertices of `tris`.
+fn bounding_box(vertices: &[Point3], tris: &[[u32; 3]]) -> [Point3; 2] {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for &v in tris.iter().flatten() {
+        let p = vertices[v as usize];
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    [lo, hi]
 }
 
 /// The pieces' triangles in piece order, in one array; the copies run in
@@ -204,7 +239,11 @@ fn net_half_edges(
     }
 }
 
-/// Triangulates the retained facet `part` of merged facet `f`.
+/// Triangulates the retained facet `part` of merged facet `f`. Returns how
+/// many of the triangles it appends (the first ones) were made anew when
+/// `f` held several input triangles (0 for a facet of one triangle, whose
+/// triangulation is the Boolean's cut, and for input triangles taken
+/// over).
 fn facet(
     vertices: &[Point3],
     src: &Source<'_>,
@@ -213,14 +252,14 @@ fn facet(
     part: &[(u32, u32)],
     s: &mut Scratch,
     out: &mut Vec<[u32; 3]>,
-) {
+) -> usize {
     let tris = src.merged.triangles(f);
     if tris.len() <= 1 {
         match one_triangle(vertices, part) {
             Some(t) => out.push(t),
             None => triangulate_facet(vertices, part, out),
         }
-        return;
+        return 0;
     }
     let sigma = src.sigma;
     let vid = |v: u32| map.vid[v as usize];
@@ -252,7 +291,7 @@ fn facet(
         };
         if same && all_retained() {
             out.extend(tris.iter().map(|&t| oriented(t)));
-            return;
+            return 0;
         }
     }
     // The cut box.
@@ -295,8 +334,9 @@ fn facet(
         })
     }));
     if !s.kept.iter().any(|&k| k) {
+        let before = out.len();
         triangulate_facet(vertices, part, out);
-        return;
+        return out.len() - before;
     }
     // A merged partner lies in the same merged facet: its place in `tris`
     // is `tri_pos`.
@@ -336,13 +376,16 @@ fn facet(
         }
     }
     net_half_edges(&mut s.residual, &mut s.net, &mut s.hes);
+    let before = out.len();
     triangulate_facet(vertices, &s.hes, out);
+    let fresh = out.len() - before;
     out.extend(
         tris.iter()
             .zip(&s.kept)
             .filter(|(_, &k)| k)
             .map(|(&t, _)| oriented(t)),
     );
+    fresh
 }
 
 /// What [`triangulate_facet`] gives for `half_edges` when they are one

@@ -159,3 +159,116 @@ proptest! {
         }
     }
 }
+
+/// Every triangle of the result that neither operand has (either way
+/// round: B's triangles come reversed in a difference) lies in a contact
+/// box, so smoothing near the contacts sees every place the result is
+/// new. Besides the cut facets this covers a merged coplanar region that
+/// was re-triangulated away from the other operand because the merge
+/// dropped a vertex that only subdivided a straight edge (a find of
+/// `smooth`'s near-versus-whole property test: boxes `1e-7` apart united,
+/// then united with a disjoint box).
+fn assert_new_triangles_in_contacts(
+    a: &TriangleMesh,
+    b: &TriangleMesh,
+    op: BooleanOp,
+    p: f64,
+) -> TriangleMesh {
+    let (out, c) = boolean_triangles_with_contacts(a, b, op, p).unwrap();
+    assert_eq!(out, boolean_triangles(a, b, op).unwrap());
+    let mut known: HashSet<[[u64; 3]; 3]> = HashSet::new();
+    for m in [a, b] {
+        for t in &m.triangles {
+            let q = t.map(|v| m.vertices[v as usize].map(f64::to_bits));
+            for r in [q, [q[0], q[2], q[1]]] {
+                for k in 0..3 {
+                    known.insert([r[k], r[(k + 1) % 3], r[(k + 2) % 3]]);
+                }
+            }
+        }
+    }
+    let m = &out.mesh;
+    for (i, t) in m.triangles.iter().enumerate() {
+        if known.contains(&t.map(|v| m.vertices[v as usize].map(f64::to_bits))) {
+            continue;
+        }
+        let bt = exact_box(m, i);
+        assert!(
+            c.boxes
+                .iter()
+                .any(|b| inside(&bt[0], b) && inside(&bt[1], b)),
+            "{op:?}: new triangle {:?} outside every contact box",
+            t.map(|v| m.vertices[v as usize])
+        );
+    }
+    out.mesh
+}
+
+/// `m` with the edge between the vertices at `a` and `b` split at its
+/// midpoint in both triangles that share it (still closed).
+fn with_edge_midpoint(mut m: TriangleMesh, a: Point3, b: Point3) -> TriangleMesh {
+    let at = |p: Point3| m.vertices.iter().position(|q| *q == p).unwrap() as u32;
+    let (ia, ib) = (at(a), at(b));
+    let mid = m.vertices.len() as u32;
+    m.vertices
+        .push(std::array::from_fn(|k| 0.5 * (a[k] + b[k])));
+    let mut tris = Vec::new();
+    for t in &m.triangles {
+        match (0..3).find(|&k| {
+            let (x, y) = (t[k], t[(k + 1) % 3]);
+            (x, y) == (ia, ib) || (x, y) == (ib, ia)
+        }) {
+            Some(k) => {
+                let (x, y, z) = (t[k], t[(k + 1) % 3], t[(k + 2) % 3]);
+                tris.push([x, mid, z]);
+                tris.push([mid, y, z]);
+            }
+            None => tris.push(*t),
+        }
+    }
+    TriangleMesh::new(m.vertices, tris)
+}
+
+#[test]
+fn a_region_re_triangulated_away_from_the_other_operand_is_a_contact() {
+    // A cube whose top and front faces share an edge split at its
+    // midpoint: the coplanar merge drops the midpoint, so both faces are
+    // re-triangulated though the other operand is far away.
+    let m = with_edge_midpoint(
+        box_triangles([0.0; 3], [1.0; 3]),
+        [0.0, 0.0, 1.0],
+        [1.0, 0.0, 1.0],
+    );
+    m.check_topology().unwrap();
+    let far = box_triangles([3.0; 3], [4.0; 3]);
+    let (out, c) = boolean_triangles_with_contacts(&m, &far, BooleanOp::Union, 1e-5).unwrap();
+    assert_new_triangles_in_contacts(&m, &far, BooleanOp::Union, 1e-5);
+    // Both faces changed and nothing else did: two boxes, each a face.
+    assert_eq!(c.boxes.len(), 2, "{:?}", c.boxes);
+    assert!(out.mesh.vertices.len() < m.vertices.len() + far.vertices.len());
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(24))]
+    /// Chains of three grid boxes, each shifted by up to `1e-7`, under
+    /// every operation: new triangles lie in contact boxes at each step.
+    #[test]
+    fn new_triangles_of_box_chains_lie_in_contact_boxes(
+        boxes in prop::collection::vec(
+            (prop::array::uniform3(0u8..4), prop::array::uniform3(1u8..4), prop::array::uniform3(-1i8..=1)),
+            3,
+        ),
+        ops in prop::collection::vec(0u8..3, 2),
+    ) {
+        let mesh = |(o, s, j): &([u8; 3], [u8; 3], [i8; 3])| {
+            let lo: Point3 = std::array::from_fn(|k| 0.25 * f64::from(o[k]) + 1e-7 * f64::from(j[k]));
+            let hi: Point3 = std::array::from_fn(|k| lo[k] + 0.25 * f64::from(s[k]));
+            box_triangles(lo, hi)
+        };
+        let mut m = mesh(&boxes[0]);
+        for (b, &o) in boxes[1..].iter().zip(&ops) {
+            let op = [BooleanOp::Union, BooleanOp::Intersection, BooleanOp::Difference][o as usize];
+            m = assert_new_triangles_in_contacts(&m, &mesh(b), op, 1e-5);
+        }
+    }
+}
