@@ -553,6 +553,7 @@ pub(crate) fn triangle_result(
                 sigma: sigma_b,
             },
         ],
+        contacts.is_some(),
     );
     if let Some(c) = contacts.as_mut() {
         // The regions re-triangulated anew lie at the contacts when the

@@ -39,12 +39,26 @@ impl Contacts {
     /// of the operands' facets.
     pub(crate) fn add_changed(&mut self, changed: Vec<[Point3; 2]>) {
         let p = self.proximity;
-        self.boxes.extend(
-            changed
-                .into_iter()
-                .map(|[lo, hi]| [lo.map(|x| x - p), hi.map(|x| x + p)]),
-        );
+        self.boxes.extend(changed.into_iter().map(|b| grown(b, p)));
     }
+}
+
+/// The exact bounding box of `points` (`lo > hi` when there are none).
+pub(crate) fn exact_box<'p>(points: impl IntoIterator<Item = &'p Point3>) -> [Point3; 2] {
+    let mut lo = [f64::INFINITY; 3];
+    let mut hi = [f64::NEG_INFINITY; 3];
+    for p in points {
+        for c in 0..3 {
+            lo[c] = lo[c].min(p[c]);
+            hi[c] = hi[c].max(p[c]);
+        }
+    }
+    [lo, hi]
+}
+
+/// Box `b` grown by `proximity` on every side.
+fn grown([lo, hi]: [Point3; 2], proximity: f64) -> [Point3; 2] {
+    [lo.map(|x| x - proximity), hi.map(|x| x + proximity)]
 }
 
 /// The single-precision margin of the broad phase for `proximity`: twice
@@ -132,17 +146,9 @@ pub(crate) fn near_facets(
 /// The exact boxes of `facets` of `m`, grown by `proximity`.
 fn boxes_of(m: &Flat<'_>, facets: &[u32], proximity: f64, out: &mut Vec<[Point3; 2]>) {
     for &f in facets {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for (s, _) in m.facet_half_edges(f) {
-            let p = &m.pos[s as usize];
-            for c in 0..3 {
-                lo[c] = lo[c].min(p[c]);
-                hi[c] = hi[c].max(p[c]);
-            }
-        }
-        if lo[0] <= hi[0] {
-            out.push([lo.map(|x| x - proximity), hi.map(|x| x + proximity)]);
+        let b = exact_box(m.facet_half_edges(f).map(|(s, _)| &m.pos[s as usize]));
+        if b[0][0] <= b[1][0] {
+            out.push(grown(b, proximity));
         }
     }
 }

@@ -32,6 +32,7 @@
 //! the region the Boolean changed plus the input triangles around it.
 
 use crate::construct::{Retained, VertexMap};
+use crate::contacts::exact_box;
 use crate::merge::{Merged, NONE};
 use crate::mesh::Flat;
 use crate::par;
@@ -70,7 +71,7 @@ type Piece = (Vec<[u32; 3]>, Vec<[Point3; 2]>);
 /// facets of one chunk, see [`PIECE_HALF_EDGES`]), concatenated in facet
 /// order: the output does not depend on the thread count.
 ///
-/// Also returns the exact bounding box of every region that was
+/// With `track`, also returns the exact bounding box of every region that was
 /// re-triangulated although its merged facet held several input triangles
 /// (a facet the Boolean cut, or one whose merge dropped a vertex that only
 /// subdivided a straight edge): the places where the result's triangles
@@ -79,6 +80,7 @@ type Piece = (Vec<[u32; 3]>, Vec<[Point3; 2]>);
 pub(crate) fn to_triangle_mesh(
     r: Retained,
     sources: [Source<'_>; 2],
+    track: bool,
 ) -> (TriangleMesh, Vec<[Point3; 2]>) {
     // (chunk, facets lo..hi of its list, first half-edge of facet lo).
     let mut pieces: Vec<(usize, usize, usize, usize)> = Vec::new();
@@ -122,8 +124,9 @@ pub(crate) fn to_triangle_mesh(
                 at += n as usize;
                 let before = tris.len();
                 let fresh = facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
-                if fresh > 0 {
-                    changed.push(bounding_box(&r.vertices, &tris[before..before + fresh]));
+                if track && fresh > 0 {
+                    let made = tris[before..before + fresh].iter().flatten();
+                    changed.push(exact_box(made.map(|&v| &r.vertices[v as usize])));
                 }
             }
             (tris, changed)
@@ -141,20 +144,6 @@ pub(crate) fn to_triangle_mesh(
     } = r;
     drop((chunks, maps));
     (TriangleMesh::new(vertices, gather(parts, split)), changed)
-}
-
-/// The exact bounding box of the vertices of `tris`.
-fn bounding_box(vertices: &[Point3], tris: &[[u32; 3]]) -> [Point3; 2] {
-    let mut lo = [f64::INFINITY; 3];
-    let mut hi = [f64::NEG_INFINITY; 3];
-    for &v in tris.iter().flatten() {
-        let p = vertices[v as usize];
-        for c in 0..3 {
-            lo[c] = lo[c].min(p[c]);
-            hi[c] = hi[c].max(p[c]);
-        }
-    }
-    [lo, hi]
 }
 
 /// The pieces' triangles in piece order, in one array; the copies run in

@@ -8,6 +8,7 @@
 
 use boolean_3d::{boolean_mesh, BooleanOp};
 use smooth::{sanity_check_mesh, smooth_mesh, smooth_triangles, SmoothOptions};
+use test_support::shapes::push_box;
 use topology::{Facet, PolygonMesh};
 
 fn fuzz_mesh() -> PolygonMesh {
@@ -149,18 +150,11 @@ fn a_vertex_created_on_edges_1e300_long_stays_within_the_bound() {
         [1.0, 1.0, 1.0],
         [1.0, 3.05887055934763e268, -1e300],
     ];
-    let loops: [&[u32]; 6] = [
-        &[0, 2, 3, 1],
-        &[4, 5, 7, 6],
-        &[0, 1, 5, 4],
-        &[2, 6, 7, 3],
-        &[0, 4, 6, 2],
-        &[1, 3, 7, 5],
-    ];
-    let m = PolygonMesh::new(
-        corners.to_vec(),
-        loops.iter().map(|l| Facet::from_loop(l)).collect(),
-    );
+    // A box's corners and facets (`push_box`), the corners replaced.
+    let (mut vertices, mut facets) = (Vec::new(), Vec::new());
+    push_box(&mut vertices, &mut facets, [0.0; 3], [0.25; 3], false);
+    assert_eq!(vertices.len(), corners.len());
+    let m = PolygonMesh::new(corners.to_vec(), facets);
     let out = smooth_mesh(&m, &SmoothOptions::new(0.0)).unwrap();
     sanity_check_mesh(&out.shape, 0.0).unwrap();
     let r = &out.report;

@@ -72,7 +72,7 @@ proptest! {
 /// always leave a fixpoint: in the triangle variant re-triangulation may
 /// add an internal edge within `delta` of a vertex in a cluster a few
 /// `delta` wide, which a second run cracks (the documented limit of
-/// idempotence; a property-test find on a union of boxes 1e-7 apart).
+/// idempotence).
 fn settle<M>(mut m: M, mut smooth: impl FnMut(&M) -> smooth::Smoothed<M>) -> Option<M> {
     for _ in 0..4 {
         let again = smooth(&m);
