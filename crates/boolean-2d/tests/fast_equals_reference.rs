@@ -89,7 +89,7 @@ fn loops_of(
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
 
     #[test]
     fn random_loops(a in loops_of(unit_point()), b in loops_of(unit_point())) {

@@ -76,7 +76,7 @@ fn unit_loops() -> impl Strategy<Value = Vec<Vec<[f64; 2]>>> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(48)))]
 
     /// eq. 4.20 on random (mostly self-intersecting) polygons, whose
     /// winding numbers range well outside {0, 1} (section 4.7).

@@ -924,7 +924,7 @@ mod props {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(64))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
 
         /// The build, sequential and split at every node, is the plain
         /// recursive build node for node (so every query and pair search

@@ -699,7 +699,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(48))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(48)))]
 
         /// Random shells, jittered or garbage, both variants.
         #[test]

@@ -149,7 +149,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(12))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(12)))]
 
         /// Chains of boxes cut out of a plate in the triangle-mesh variant,
         /// one difference at a time, with the thresholds forced to

@@ -513,7 +513,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(2000))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(2000)))]
 
         /// A triangle kept (in order), reversed (out of order, as level 5
         /// lists a reversed triangle), rotated, or with a vertex repeated

@@ -239,7 +239,7 @@ mod random_placements {
     use proptest::prelude::*;
 
     proptest! {
-        #![proptest_config(ProptestConfig { cases: 32, .. ProptestConfig::default() })]
+        #![proptest_config(ProptestConfig { cases: test_support::cases(32), .. ProptestConfig::default() })]
 
         /// Eq. 4.20 for random tetrahedra (either orientation, so winding
         /// numbers -1, 0, 1) against a random box or a second tetrahedron.

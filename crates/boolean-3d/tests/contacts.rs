@@ -142,7 +142,7 @@ fn created_vertices_lie_in_contact_boxes_and_results_are_unchanged() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(24)))]
     /// Two boxes placed at random near each other, at random proximities:
     /// every pair of triangles within the proximity by their exact boxes
     /// is covered (the brute-force oracle).
@@ -249,7 +249,7 @@ fn a_region_re_triangulated_away_from_the_other_operand_is_a_contact() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(24)))]
     /// Chains of three grid boxes, each shifted by up to `1e-7`, under
     /// every operation: new triangles lie in contact boxes at each step.
     #[test]

@@ -84,7 +84,7 @@ fn damage(m: &mut PolygonMesh, rng: &mut Lcg64) {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(64), .. ProptestConfig::default() })]
 
     /// The Boolean accepts exactly the meshes `check_topology` accepts and
     /// reports the same first violation.

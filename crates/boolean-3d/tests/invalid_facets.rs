@@ -365,7 +365,7 @@ fn facets_with_inside_out_holes_are_not_extended() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(64), .. ProptestConfig::default() })]
 
     /// Random loops (almost always self-intersecting): the triangulation is
     /// closed and covers no more than the best triangulation of the loop.

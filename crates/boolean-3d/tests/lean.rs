@@ -193,7 +193,7 @@ fn cut_strategy() -> impl Strategy<Value = Cut> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(24))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(24)))]
 
     /// Random chains of box holes and sphere cavities in distinct cells:
     /// closure after every step, the exact volume (the slab's minus each

@@ -53,7 +53,7 @@ const OPS: [BooleanOp; 3] = [
 ];
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(48))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(48)))]
 
     #[test]
     fn prepared_operands_give_the_one_call_result(

@@ -289,7 +289,7 @@ fn generator_covers_the_advertised_topologies() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(48), .. ProptestConfig::default() })]
 
     #[test]
     fn random_topologies_satisfy_theorems_1_to_4(

@@ -144,7 +144,7 @@ fn triangles_of(m: &PolygonMesh) -> TriangleMesh {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(64), .. ProptestConfig::default() })]
 
     #[test]
     fn garbage_grid_and_near_degenerate_coordinates_give_valid_results(

@@ -138,7 +138,7 @@ fn facets_touching_themselves_at_a_vertex_triangulate_faithfully() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, .. ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(64), .. ProptestConfig::default() })]
 
     /// Any facet, valid or not, gives a closed set of triangles: the
     /// triangles' half-edges minus the facet's cancel in opposite pairs.

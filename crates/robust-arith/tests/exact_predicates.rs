@@ -82,7 +82,7 @@ fn scale(v: i32, k: i32) -> f64 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(3000))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(3000)))]
 
     #[test]
     fn orient2d_is_exact_at_any_magnitude(c in proptest::collection::vec(any_magnitude(), 6)) {

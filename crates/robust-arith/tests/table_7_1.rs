@@ -52,7 +52,7 @@ fn segment_and_x() -> impl Strategy<Value = ([f64; 2], [f64; 2], f64)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(512)))]
 
     /// Section 7.1.1: `x_P = x_L` gives `y_L` and `x_P = x_R` gives `y_R`
     /// exactly, bit for bit.

@@ -92,7 +92,7 @@ fn run(i: &Input) -> [f64; 2] {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(1024))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(1024)))]
 
     /// Table 7.2 is eq. 4.2-4.6 with `k = 1`: plus pair at the left end,
     /// minus pair at the right end, both points equal bit for bit.

@@ -104,7 +104,7 @@ fn exact_edge_minus_vertex(v: [i128; 2], s: [i128; 2], e: [i128; 2]) -> i128 {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(1024))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(1024)))]
 
     #[test]
     fn theorem_1_at_level_1((v, s, e) in any_vertex_edge()) {

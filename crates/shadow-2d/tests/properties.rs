@@ -195,7 +195,7 @@ fn theorem_1_x11(a0: P, a1: P, b0: P, b1: P) -> Result<(), TestCaseError> {
 // ----------------------------------------------------------------- tests
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(512))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(512)))]
 
     /// Theorem 1 at level 2: X11 always, X02/X20 of a closed facet never
     /// report a missing partner, in 2D and 3D.

@@ -1388,7 +1388,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(300))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(300)))]
 
         /// Joining the two right parts of a crossing in one heap entry
         /// changes no decision: the cell structure, its rotations and the

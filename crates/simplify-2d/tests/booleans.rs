@@ -51,7 +51,7 @@ fn squares() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 48, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(48), ..ProptestConfig::default() })]
 
     /// Random (generally self-intersecting) operands: each result cell is
     /// selected by the per-operand exact winding numbers.

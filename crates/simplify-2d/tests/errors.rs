@@ -107,7 +107,7 @@ fn coord() -> impl Strategy<Value = f64> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 256, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(256), ..ProptestConfig::default() })]
 
     /// Random coordinates of any magnitude, repeated vertices, zero-length
     /// edges, multiplicities of any sign: closure holds by construction, so

@@ -179,7 +179,7 @@ fn check_idempotent(out: &PolygonSet2) -> bool {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 64, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(64), ..ProptestConfig::default() })]
 
     #[test]
     fn random_polygons(n in 4usize..=120, seed in any::<u64>(), d in 0u8..6) {
@@ -252,7 +252,7 @@ proptest! {
     // Few cases: a 1,000-vertex polygon has about 10^5 crossings, and each
     // case costs up to a second or so in the `test` profile. Shrinking is
     // bounded for the same reason.
-    #![proptest_config(ProptestConfig { cases: 8, max_shrink_iters: 32, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(8), max_shrink_iters: 32, ..ProptestConfig::default() })]
 
     /// Section 7.7's sizes up to 1,000 vertices: every case checks the
     /// polygon undisplaced and displaced by 1.5*2^49 or 1.5*2^47 (one of

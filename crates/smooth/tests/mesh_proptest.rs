@@ -38,7 +38,7 @@ fn check_mesh_smoothing(raw: &PolygonMesh) -> Result<(), TestCaseError> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 200, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(200), ..ProptestConfig::default() })]
 
     #[test]
     fn boolean_chains_of_jittered_grid_boxes(
@@ -113,7 +113,7 @@ proptest! {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: 300, ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig { cases: test_support::cases(300), ..ProptestConfig::default() })]
 
     /// Garbage coordinates at every scale (up to `f64::MAX / 4`, where
     /// squared distances overflow) with tolerances from 0 to 1e300: no

@@ -43,13 +43,9 @@ fn jitter(rng: &mut Xorshift64Star, ring: &Ring, amount: f64) -> Ring {
         .collect()
 }
 
-/// 48 cases per property (`PROPTEST_CASES` raises it for a long run).
+/// 48 cases per property (`UMBRA_PROPTEST_SCALE` raises it for a long run).
 fn config() -> ProptestConfig {
-    let cases = std::env::var("PROPTEST_CASES")
-        .ok()
-        .and_then(|v| v.parse().ok())
-        .unwrap_or(48);
-    ProptestConfig::with_cases(cases)
+    ProptestConfig::with_cases(test_support::cases(48))
 }
 
 proptest! {

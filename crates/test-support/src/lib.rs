@@ -32,3 +32,18 @@ pub fn data_path(relative: &str) -> std::path::PathBuf {
         .join("data")
         .join(relative)
 }
+
+/// A property test's case count: `base`, multiplied by the environment
+/// variable `UMBRA_PROPTEST_SCALE` when it holds a positive integer, so
+/// that a long campaign raises every property test in proportion to its
+/// own budget (`UMBRA_PROPTEST_SCALE=20 cargo test --release`) while CI
+/// runs the budgets written in the tests. Proptest's own `PROPTEST_CASES`
+/// only changes the tests that keep the default count.
+pub fn cases(base: u32) -> u32 {
+    let scale = std::env::var("UMBRA_PROPTEST_SCALE")
+        .ok()
+        .and_then(|v| v.trim().parse::<u32>().ok())
+        .filter(|&s| s > 0)
+        .unwrap_or(1);
+    base.saturating_mul(scale)
+}

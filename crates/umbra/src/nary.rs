@@ -596,7 +596,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(24))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(24)))]
 
         /// The slab minus boxes through it in one call, triangle variant:
         /// the lean re-triangulation keeps the count of the shape's real

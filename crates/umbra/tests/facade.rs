@@ -434,7 +434,7 @@ mod triangle_path {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(16))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(16)))]
 
         #[test]
         fn random_box_chains_agree(

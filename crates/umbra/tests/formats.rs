@@ -126,7 +126,7 @@ fn any_mesh() -> impl Strategy<Value = PolygonMesh> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
 
     /// OBJ, OFF, PLY (both encodings) and ASCII STL keep every f64 bit for
     /// bit; OBJ, OFF and PLY keep the vertex numbering and facets too.
@@ -539,7 +539,7 @@ fn byte_order_marks_are_dropped() {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(256)))]
 
     /// Random bytes, and valid files with random bytes overwritten: a mesh
     /// or one line naming the file, never a panic.

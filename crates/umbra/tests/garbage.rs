@@ -90,7 +90,7 @@ fn token() -> impl Strategy<Value = &'static str> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(256))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(256)))]
 
     #[test]
     fn random_edits_of_valid_text(edits in prop::collection::vec((0usize..200, token()), 1..6)) {

@@ -83,7 +83,7 @@ fn token() -> impl Strategy<Value = &'static str> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(400))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(400)))]
 
     #[test]
     fn token_soup(tokens in proptest::collection::vec(token(), 0..80)) {

@@ -580,7 +580,7 @@ fn grid_volume(boxes: &[([i32; 3], [i32; 3])], op: &str) -> f64 {
 }
 
 proptest::proptest! {
-    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(48))]
+    #![proptest_config(proptest::prelude::ProptestConfig::with_cases(test_support::cases(48)))]
 
     #[test]
     fn random_box_operations_match_the_grid_oracle(

@@ -382,7 +382,7 @@ fn arb_transform() -> impl Strategy<Value = Transform> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(64))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
 
     #[test]
     fn random_transforms_scale_volume_by_the_determinant(t in arb_transform(), which in 0usize..4) {

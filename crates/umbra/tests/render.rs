@@ -474,7 +474,7 @@ mod garbage {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(96))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(96)))]
 
         #[test]
         fn meshes_never_panic(

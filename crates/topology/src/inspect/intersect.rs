@@ -844,7 +844,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(48))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(48)))]
 
         /// Big convex caps halved give the same facet pairs as section
         /// 4.8's triangulation (a fan): two prisms over random convex
@@ -1029,7 +1029,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(4000))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(4000)))]
 
         /// `improper` agrees with the oracle on triangle pairs on a small
         /// integer grid (full of coplanar, collinear and touching cases)

@@ -364,7 +364,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(300))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(300)))]
 
         /// Garbage meshes (dangling indices, NaN and huge coordinates,
         /// repeated and zero-length half-edges) are reported, never a

@@ -252,7 +252,7 @@ fn garbage() -> impl Strategy<Value = (Vec<Point3>, Vec<(u32, u32)>)> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(200))]
+    #![proptest_config(ProptestConfig::with_cases(test_support::cases(200)))]
 
     #[test]
     fn plates_keep_the_invariants_and_both_searches_agree(p in plate_strategy()) {

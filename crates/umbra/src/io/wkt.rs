@@ -563,7 +563,7 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(128))]
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(128)))]
 
         /// Any loops, written as they are and read back as they are, give
         /// the same directed edges bit for bit.
