@@ -21,7 +21,11 @@ use topology::{Facet, Point3, PolygonMesh};
 const DELTA: f64 = 1e-5;
 
 proptest! {
-    #![proptest_config(ProptestConfig { cases: test_support::cases(120), ..ProptestConfig::default() })]
+    #![proptest_config(ProptestConfig {
+        cases: test_support::cases(120),
+        max_global_rejects: test_support::cases(1024),
+        ..ProptestConfig::default()
+    })]
 
     /// A chain of Booleans, each result smoothed before the next (so both
     /// operands are clean): near and whole smoothing agree at every step.

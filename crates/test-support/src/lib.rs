@@ -38,7 +38,8 @@ pub fn data_path(relative: &str) -> std::path::PathBuf {
 /// that a long campaign raises every property test in proportion to its
 /// own budget (`UMBRA_PROPTEST_SCALE=20 cargo test --release`) while CI
 /// runs the budgets written in the tests. Proptest's own `PROPTEST_CASES`
-/// only changes the tests that keep the default count.
+/// only changes the tests that keep the default count. A test that rejects
+/// draws (`prop_assume!`) scales its `max_global_rejects` the same way.
 pub fn cases(base: u32) -> u32 {
     let scale = std::env::var("UMBRA_PROPTEST_SCALE")
         .ok()

@@ -126,7 +126,11 @@ fn any_mesh() -> impl Strategy<Value = PolygonMesh> {
 }
 
 proptest! {
-    #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
+    #![proptest_config(ProptestConfig {
+        cases: test_support::cases(64),
+        max_global_rejects: test_support::cases(1024),
+        ..ProptestConfig::default()
+    })]
 
     /// OBJ, OFF, PLY (both encodings) and ASCII STL keep every f64 bit for
     /// bit; OBJ, OFF and PLY keep the vertex numbering and facets too.

@@ -844,7 +844,11 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(test_support::cases(48)))]
+        #![proptest_config(ProptestConfig {
+            cases: test_support::cases(48),
+            max_global_rejects: test_support::cases(1024),
+            ..ProptestConfig::default()
+        })]
 
         /// Big convex caps halved give the same facet pairs as section
         /// 4.8's triangulation (a fan): two prisms over random convex
@@ -1029,7 +1033,12 @@ mod tests {
     }
 
     proptest! {
-        #![proptest_config(ProptestConfig::with_cases(test_support::cases(4000)))]
+        #![proptest_config(ProptestConfig {
+            cases: test_support::cases(4000),
+            // About 7% of the draws are rejected: scaled with the cases.
+            max_global_rejects: test_support::cases(1024),
+            ..ProptestConfig::default()
+        })]
 
         /// `improper` agrees with the oracle on triangle pairs on a small
         /// integer grid (full of coplanar, collinear and touching cases)
