@@ -48,6 +48,24 @@ fn config() -> ProptestConfig {
     ProptestConfig::with_cases(test_support::cases(48))
 }
 
+/// A find of `random_polygons_on_coarse_grids` (seed 1463292133831106352,
+/// 29 points, offset `1.5 * 2^49`, tolerance 0.5): removing a
+/// straight-through vertex after edge cracking by vertex joined a straight
+/// side that a vertex exactly 0.5 above it cracks, though it cracked
+/// neither part, so the result was not clean.
+#[test]
+fn straight_side_stays_split_beside_a_vertex_at_the_tolerance() {
+    let off = 1.5 * 2f64.powi(49);
+    let mut rng = Xorshift64Star::new(1_463_292_133_831_106_352);
+    let ring: Ring = (0..29)
+        .map(|_| {
+            let p = rng.in_disc();
+            [p[0] * 16.0 + off, p[1] * 16.0 + off]
+        })
+        .collect();
+    smooth_checked(&set_of(&[ring]), 0.5);
+}
+
 proptest! {
     #![proptest_config(config())]
 

@@ -174,10 +174,63 @@ proptest! {
         let bytes = mesh_to_stl(&m, false).unwrap();
         let back = parse_stl(&bytes, "m.stl").unwrap();
         prop_assert_eq!(edge_soup(&back.to_polygon_mesh()), edge_soup(&rounded));
-        // And the f32 mesh round-trips exactly.
-        let again = parse_stl(&mesh_to_stl(&back.to_polygon_mesh(), false).unwrap(), "m.stl").unwrap();
-        prop_assert_eq!(again, back);
+        // And the f32 mesh round-trips exactly, but for the triangles
+        // that welding gave a repeated corner (distinct vertices at one
+        // position, as on a tiny octahedron far from the origin): such a
+        // facet balances itself and triangulates to nothing (section 4.8),
+        // so writing drops it, and a file left without triangles reads as
+        // empty. A property-test find at `UMBRA_PROPTEST_SCALE=40`.
+        let written = mesh_to_stl(&back.to_polygon_mesh(), false).unwrap();
+        let proper: Vec<[u32; 3]> = back
+            .triangles
+            .iter()
+            .copied()
+            .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+            .collect();
+        if proper.is_empty() {
+            let empty = matches!(parse_stl(&written, "m.stl"), Err(UmbraError::Empty { .. }));
+            prop_assert!(empty);
+        } else if proper.len() == back.triangles.len() {
+            prop_assert_eq!(parse_stl(&written, "m.stl").unwrap(), back);
+        } else {
+            let again = parse_stl(&written, "m.stl").unwrap();
+            let kept = TriangleMesh::new(back.vertices.clone(), proper);
+            prop_assert_eq!(
+                edge_soup(&again.to_polygon_mesh()),
+                edge_soup(&kept.to_polygon_mesh())
+            );
+        }
     }
+}
+
+/// The find of `binary_stl_rounds_to_f32`: an octahedron of size 1e-3
+/// centred at (-1.7e31, -1.1e35, 0), whose four corners off the z axis are
+/// one position. Binary STL welds them into one vertex, so every triangle
+/// read back has a repeated corner; written again, each triangulates to
+/// nothing, and the file, without triangles, reads as empty.
+#[test]
+fn welded_away_octahedron_writes_an_empty_stl() {
+    let o = octahedron(
+        [
+            -1.680_882_511_638_074_5e31,
+            -1.087_961_376_052_089_2e35,
+            0.0,
+        ],
+        1e-3,
+    );
+    let back = parse_stl(&mesh_to_stl(&o, false).unwrap(), "o.stl").unwrap();
+    assert_eq!(back.vertices.len(), 3);
+    assert_eq!(back.triangles.len(), 8);
+    assert!(back
+        .triangles
+        .iter()
+        .all(|t| t[0] == t[1] || t[1] == t[2] || t[2] == t[0]));
+    let written = mesh_to_stl(&back.to_polygon_mesh(), false).unwrap();
+    assert_eq!(written.len(), 84);
+    assert!(matches!(
+        parse_stl(&written, "o.stl"),
+        Err(UmbraError::Empty { .. })
+    ));
 }
 
 #[test]

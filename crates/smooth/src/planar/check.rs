@@ -3,7 +3,7 @@
 //! pairs), for tests, `xtask` and fuzz targets.
 
 use super::broad::{edge_pairs, segment_box, VertexIndex};
-use super::geom::{dist2, edges_conflict, on_open_segment, point_segment_dist2};
+use super::geom::{cracks_at, dist2, edges_conflict};
 use super::work::WEdge;
 use crate::merge_vertices;
 use std::fmt;
@@ -133,18 +133,12 @@ pub fn sanity_check_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(),
     let tol2 = tolerance * tolerance;
     for (i, e) in edges.iter().enumerate() {
         let (pa, pb) = (pts[e.a as usize], pts[e.b as usize]);
-        let len2 = dist2(&pa, &pb);
         let (lo, hi) = segment_box(pa, pb, tolerance);
         for v in index.in_box(lo, hi) {
             if v == e.a || v == e.b {
                 continue;
             }
-            let pv = pts[v as usize];
-            let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
-            if (d2 <= tol2 || on_open_segment(pv, pa, pb))
-                && dist2(&pa, &pv) < len2
-                && dist2(&pv, &pb) < len2
-            {
+            if cracks_at(pts[v as usize], pa, pb, tol2) {
                 return Err(PlanarDefect::VertexNearEdge { vertex: v, edge: i });
             }
         }

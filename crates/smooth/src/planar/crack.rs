@@ -16,7 +16,7 @@
 
 use super::broad::{edge_pairs, segment_box, VertexIndex};
 use super::budget::Budget;
-use super::geom::{crossing_point, dist2, on_open_segment, point_segment_dist2, properly_cross};
+use super::geom::{cracks_at, crossing_point, point_segment_dist2, properly_cross};
 use super::work::{VertexRecord, WEdge, Work};
 use crate::{merge_vertices, SmoothCounts, SmoothError};
 
@@ -131,7 +131,6 @@ pub fn crack_by_vertices(w: &mut Work, tol: f64, counts: &mut SmoothCounts, budg
             continue;
         }
         let (pa, pb) = (w.pts[e.a as usize], w.pts[e.b as usize]);
-        let len2 = dist2(&pa, &pb);
         let (lo, hi) = segment_box(pa, pb, tol);
         let mut best: Option<(f64, u32)> = None;
         for v in index.in_box(lo, hi) {
@@ -139,9 +138,8 @@ pub fn crack_by_vertices(w: &mut Work, tol: f64, counts: &mut SmoothCounts, budg
                 continue;
             }
             let pv = w.pts[v as usize];
-            let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
-            let near = d2 <= tol2 || on_open_segment(pv, pa, pb);
-            if near && dist2(&pa, &pv) < len2 && dist2(&pv, &pb) < len2 {
+            if cracks_at(pv, pa, pb, tol2) {
+                let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
                 let d2 = if d2.is_nan() { 0.0 } else { d2 };
                 if best.is_none_or(|(bd, bv)| (d2, v) < (bd, bv)) {
                     best = Some((d2, v));

@@ -48,6 +48,17 @@ pub fn point_segment_dist2<const N: usize>(p: &[f64; N], a: &[f64; N], b: &[f64;
     (d2, t)
 }
 
+/// Appendix A's rule for cracking the edge `a -> b` at the vertex `v`:
+/// `v` lies within the tolerance of the segment (`tol2` is its square) or
+/// exactly on its open segment, and both parts are strictly shorter than
+/// the edge. Edge cracking by vertex, the removal of straight-through
+/// vertices and the checker all decide by it.
+pub fn cracks_at(v: Point2, a: Point2, b: Point2, tol2: f64) -> bool {
+    let len2 = dist2(&a, &b);
+    let (d2, _) = point_segment_dist2(&v, &a, &b);
+    (d2 <= tol2 || on_open_segment(v, a, b)) && dist2(&a, &v) < len2 && dist2(&v, &b) < len2
+}
+
 /// `true` when `p` lies exactly on the open segment `a b` (exact
 /// orientation, then strictly between the ends in the lexicographic order
 /// of the segment's direction).

@@ -130,7 +130,7 @@ fn smooth_in_range(
         passes += 1;
         merge::merge_phase(&mut w, tol, &mut counts, &mut budget);
         debug_check(&w, "vertex merging")?;
-        straighten::straighten(&mut w, &mut counts);
+        straighten::straighten(&mut w, tol, &mut counts);
         debug_check(&w, "straight-through vertex removal")?;
         let alpha = intersection_error_bound(max_abs(&w));
         if crack::crack_between_edges(&mut w, tol, &mut counts, &mut budget)? {
@@ -139,7 +139,7 @@ fn smooth_in_range(
         debug_check(&w, "edge cracking between edges")?;
         crack::crack_by_vertices(&mut w, tol, &mut counts, &mut budget);
         debug_check(&w, "edge cracking by vertex")?;
-        straighten::straighten(&mut w, &mut counts);
+        straighten::straighten(&mut w, tol, &mut counts);
         debug_check(&w, "straight-through vertex removal")?;
         w.remove_unreferenced(&mut counts);
         match resolve::resolve(&mut w, &mut counts)? {
