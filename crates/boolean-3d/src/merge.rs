@@ -517,6 +517,8 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config::with_cases(test_support::cases(256)))]
+
         /// The static filter is never certain of a zero `orient3d`: random
         /// points, points on slanted lattice planes (exactly coplanar),
         /// such points moved by a few units in the last place, and points

@@ -691,6 +691,8 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(256)))]
+
         /// The running maxima equal the plain fold of `f64::max` over
         /// every coordinate's magnitude, and the cached value is that.
         #[test]
@@ -756,6 +758,8 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(256)))]
+
         /// A triangle operand read in place gives the same flat form as
         /// the same triangles copied as polygon facets, and the same first
         /// violation, on random soups (degenerate, non-manifold, open).

@@ -206,6 +206,8 @@ mod tests {
     }
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(256)))]
+
         #[test]
         fn grid_equals_all_pairs_definition(
             pts in prop::collection::vec(prop::array::uniform3(-4i32..4), 0..60),

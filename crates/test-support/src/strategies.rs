@@ -43,6 +43,8 @@ mod tests {
     use super::*;
 
     proptest! {
+        #![proptest_config(ProptestConfig::with_cases(crate::cases(256)))]
+
         #[test]
         fn coordinates_stay_in_their_ranges(
             f in float_coord(),

@@ -445,6 +445,8 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config::with_cases(test_support::cases(256)))]
+
         /// Random multigraphs: the chosen edges are balanced at every
         /// vertex and the rest holds no cycle (so the choice is maximal).
         #[test]

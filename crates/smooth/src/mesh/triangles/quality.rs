@@ -289,6 +289,8 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config::with_cases(test_support::cases(256)))]
+
         #[test]
         fn cut_caps_triangulate_without_folds_or_crackable_edges(
             gaps in proptest::collection::vec(0.3f64..1.5, 3..8),
@@ -372,6 +374,8 @@ mod tests {
     }
 
     proptest::proptest! {
+        #![proptest_config(proptest::test_runner::Config::with_cases(test_support::cases(256)))]
+
         #[test]
         fn garbage_loops_triangulate_completely_and_closed(
             pts in proptest::collection::vec(
