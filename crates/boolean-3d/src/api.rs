@@ -2,7 +2,7 @@
 //! audit mode that returns the level data behind Theorems 1-4.
 
 use crate::construct::{construct, CompositeKind, CompositeRecord, FacetSource, Retained};
-use crate::contacts::Contacts;
+use crate::contacts::{exact_box, Contacts};
 use crate::level3::{
     level3 as level3_fast, level3_broad, level3_brute, level3_with_contacts, Broad, Level3Data,
     Winding,
@@ -213,34 +213,23 @@ fn make_audit(
 ) -> Result<Audit, Boolean3Error> {
     let cast = level3_fast(a, b, Winding::CastEach)?;
     let mut misplaced = Vec::new();
-    let range = |pts: &mut dyn Iterator<Item = [f64; 3]>| {
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for p in pts {
-            for c in 0..3 {
-                lo[c] = lo[c].min(p[c]);
-                hi[c] = hi[c].max(p[c]);
-            }
-        }
-        (lo, hi)
-    };
-    let inside = |p: &[f64; 3], own: &([f64; 3], [f64; 3]), other: &([f64; 3], [f64; 3])| {
-        (0..2).all(|c| own.0[c] <= p[c] && p[c] <= own.1[c])
-            && own.0[2].min(other.0[2]) <= p[2]
-            && p[2] <= own.1[2].max(other.1[2])
+    let inside = |p: &Point3, own: &[Point3; 2], other: &[Point3; 2]| {
+        (0..2).all(|c| own[0][c] <= p[c] && p[c] <= own[1][c])
+            && own[0][2].min(other[0][2]) <= p[2]
+            && p[2] <= own[1][2].max(other[1][2])
     };
     for h in &l3.x12 {
         let (p, q) = a.edge_points(h.edge);
-        let own = range(&mut [p, q].into_iter());
-        let other = range(&mut b.facet_points(h.facet).map(|(s, _)| s));
+        let own = exact_box([p, q]);
+        let other = exact_box(b.facet_points(h.facet).map(|(s, _)| s));
         if !inside(&h.point, &own, &other) {
             misplaced.push((CompositeKind::EdgeA(h.edge), h.point));
         }
     }
     for h in &l3.x21 {
         let (p, q) = b.edge_points(h.edge);
-        let own = range(&mut a.facet_points(h.facet).map(|(s, _)| s));
-        let other = range(&mut [p, q].into_iter());
+        let own = exact_box(a.facet_points(h.facet).map(|(s, _)| s));
+        let other = exact_box([p, q]);
         if !inside(&h.point, &own, &other) {
             misplaced.push((CompositeKind::EdgeB(h.edge), h.point));
         }

@@ -44,7 +44,7 @@ impl Contacts {
 }
 
 /// The exact bounding box of `points` (`lo > hi` when there are none).
-pub(crate) fn exact_box<'p>(points: impl IntoIterator<Item = &'p Point3>) -> [Point3; 2] {
+pub(crate) fn exact_box(points: impl IntoIterator<Item = Point3>) -> [Point3; 2] {
     let mut lo = [f64::INFINITY; 3];
     let mut hi = [f64::NEG_INFINITY; 3];
     for p in points {
@@ -146,7 +146,7 @@ pub(crate) fn near_facets(
 /// The exact boxes of `facets` of `m`, grown by `proximity`.
 fn boxes_of(m: &Flat<'_>, facets: &[u32], proximity: f64, out: &mut Vec<[Point3; 2]>) {
     for &f in facets {
-        let b = exact_box(m.facet_half_edges(f).map(|(s, _)| &m.pos[s as usize]));
+        let b = exact_box(m.facet_half_edges(f).map(|(s, _)| m.pos[s as usize]));
         if b[0][0] <= b[1][0] {
             out.push(grown(b, proximity));
         }

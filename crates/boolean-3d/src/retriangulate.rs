@@ -126,7 +126,7 @@ pub(crate) fn to_triangle_mesh(
                 let fresh = facet(&r.vertices, src, map, f, part, &mut scratch, &mut tris);
                 if track && fresh > 0 {
                     let made = tris[before..before + fresh].iter().flatten();
-                    changed.push(exact_box(made.map(|&v| &r.vertices[v as usize])));
+                    changed.push(exact_box(made.map(|&v| r.vertices[v as usize])));
                 }
             }
             (tris, changed)
