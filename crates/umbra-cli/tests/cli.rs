@@ -369,8 +369,8 @@ fn bad_input_exits_1_with_one_line_naming_the_file() {
             "one geometry per file",
         ),
         (
-            write(&dir, "z.wkt", "POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))"),
-            "only 2D",
+            write(&dir, "z.wkt", "POLYGON Z ((0 0 0, 1 0 0, 1 1, 0 0 0))"),
+            "this geometry's coordinates have 3",
         ),
         (write(&dir, "shape.txt", A_SQUARE), "unsupported file type"),
         (

@@ -3,6 +3,10 @@
 //! Parsing uses the `wkt` crate after a structural pre-scan (balanced
 //! parentheses, one geometry per file, bounded nesting) so that truncated
 //! files and trailing text are reported instead of silently dropped.
+//! Geometries with `Z`, `M` or `ZM` coordinates are read in the plane: the
+//! third and fourth ordinates are dropped, as the GeoJSON reader drops the
+//! altitude, and the `SRID=n;` prefix of extended WKT (PostGIS's
+//! `ST_AsEWKT`) is accepted and ignored. The writer writes `x y` only.
 //! Coordinates are written in Rust's shortest round-trip formatting, so a
 //! write followed by a read gives the same `f64` values bit for bit.
 
@@ -15,7 +19,7 @@ use std::fmt::Write as _;
 use std::path::Path;
 use std::str::FromStr;
 use topology::PolygonSet2;
-use wkt::types::{Dimension, Polygon};
+use wkt::types::Polygon;
 use wkt::Wkt;
 
 /// The deepest parenthesis nesting accepted (a `GEOMETRYCOLLECTION` of
@@ -81,6 +85,8 @@ pub fn read_wkt_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, U
 /// without building a set; `file` names the source in errors.
 pub fn parse_wkt_polygons(text: &str, file: &str) -> Result<Polygons, UmbraError> {
     let text = strip_bom(text);
+    let blanked = blank_srid(text, file)?;
+    let text = blanked.as_deref().unwrap_or(text);
     if text.trim().is_empty() {
         return Err(UmbraError::Empty {
             file: file.to_string(),
@@ -109,6 +115,39 @@ fn parse_wkt(text: &str, file: &str, options: ReadOptions) -> Result<PolygonSet2
         validate_polygons(&polygons, file)?;
     }
     build_set(&polygons, options.orientation, file)
+}
+
+/// The text with an extended-WKT `SRID=n;` prefix replaced by as many
+/// spaces (so that positions in messages stay those of the file), or
+/// `None` when there is no such prefix. A prefix without digits is an
+/// error; the spatial reference itself is not interpreted.
+fn blank_srid(text: &str, file: &str) -> Result<Option<String>, UmbraError> {
+    let start = text.len() - text.trim_start().len();
+    let rest = &text[start..];
+    let has_prefix = rest
+        .get(..5)
+        .is_some_and(|p| p.eq_ignore_ascii_case("SRID="));
+    if !has_prefix {
+        return Ok(None);
+    }
+    let after = &rest[5..];
+    let body = after.strip_prefix('-').unwrap_or(after);
+    let digits = body.len() - body.trim_start_matches(|c: char| c.is_ascii_digit()).len();
+    let end = start + 5 + (after.len() - body.len()) + digits;
+    if digits == 0 || !text[end..].starts_with(';') {
+        return Err(UmbraError::Parse {
+            file: file.to_string(),
+            message: format!(
+                "malformed extended-WKT prefix at {}: expected 'SRID=<integer>;' before the geometry",
+                position(text, start)
+            ),
+        });
+    }
+    let mut out = String::with_capacity(text.len());
+    out.push_str(&text[..start]);
+    out.extend(std::iter::repeat_n(' ', end + 1 - start));
+    out.push_str(&text[end + 1..]);
+    Ok(Some(out))
 }
 
 /// Checks the bracket structure: balanced, not nested too deeply, and
@@ -228,13 +267,6 @@ fn collect_polygons(
         file: file.to_string(),
         found,
     };
-    if geometry.dimension() != Dimension::XY {
-        return Err(unsupported(format!(
-            "{context}{} with {:?} coordinates (only 2D x y is supported)",
-            kind(geometry),
-            geometry.dimension()
-        )));
-    }
     match geometry {
         Wkt::Polygon(p) => out.push(open_rings(p)),
         Wkt::MultiPolygon(mp) => out.extend(mp.polygons().iter().map(open_rings)),
@@ -249,7 +281,8 @@ fn collect_polygons(
     Ok(())
 }
 
-/// The rings of a WKT polygon without their closing duplicates.
+/// The rings of a WKT polygon without their closing duplicates, in the
+/// plane (`z` and `m` dropped).
 fn open_rings(p: &Polygon<f64>) -> Vec<Vec<Point2>> {
     p.rings()
         .iter()
@@ -458,7 +491,24 @@ mod tests {
                 "POLYGON ((0 0, 1 1e308, 1 1, 0 0))",
                 "polygon 1, ring 1, point 2: y coordinate 1e308 exceeds",
             ),
-            ("POLYGON Z ((0 0 0, 1 0 0, 1 1 0, 0 0 0))", "only 2D"),
+            (
+                "POLYGON Z ((0 0, 1 0, 1 1, 0 0))",
+                "a coordinate of 2 numbers ending at line 1, column 15, but this geometry's coordinates have 3",
+            ),
+            (
+                "POLYGON ((0 0 1, 1 0 1, 1 1 1, 0 0 1))",
+                "a coordinate of 3 numbers ending at line 1, column 15, but this geometry's coordinates have 2 (x y z or x y z m need the Z, M or ZM keyword",
+            ),
+            (
+                "SRID=;POLYGON ((0 0, 1 0, 1 1, 0 0))",
+                "malformed extended-WKT prefix at line 1, column 1",
+            ),
+            ("  srid=4326 POLYGON ((0 0, 1 0, 1 1, 0 0))", "'SRID=<integer>;'"),
+            // Positions after an SRID prefix are those of the text.
+            (
+                "SRID=4326;POLYGON ((0 0, 1 0, 1 x, 0 0))",
+                "'x' at line 1, column 33 is not a number",
+            ),
             ("POLYGON ((0 0, 1 0, 1 x, 0 0))", "malformed WKT"),
             ("hello", "expected a geometry"),
             ("POLYGON EMPTY trailing words here", "expected a geometry"),
@@ -478,6 +528,36 @@ mod tests {
             .unwrap_err()
             .to_string()
             .contains("nested deeper"));
+    }
+
+    #[test]
+    fn z_and_m_ordinates_and_srid_prefixes_are_read_in_the_plane() {
+        let plain = read(
+            "MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)), ((10 0, 11 0, 11 1, 10 0)))",
+        )
+        .unwrap();
+        let as_written = |s: &PolygonSet2| write_wkt_string(s, RingOrientation::ByRole).unwrap();
+        for text in [
+            "MULTIPOLYGON Z (((0 0 5, 4 0 5, 4 4 5, 0 4 5, 0 0 5), (1 1 -1, 1 2 -1, 2 2 -1, 2 1 -1, 1 1 -1)), ((10 0 0, 11 0 1, 11 1 2, 10 0 3)))",
+            "MULTIPOLYGON M (((0 0 5, 4 0 5, 4 4 5, 0 4 5, 0 0 5), (1 1 0, 1 2 0, 2 2 0, 2 1 0, 1 1 0)), ((10 0 0, 11 0 1, 11 1 2, 10 0 3)))",
+            "MULTIPOLYGON ZM (((0 0 5 1, 4 0 5 1, 4 4 5 1, 0 4 5 1, 0 0 5 1), (1 1 0 0, 1 2 0 0, 2 2 0 0, 2 1 0 0, 1 1 0 0)), ((10 0 0 0, 11 0 1 0, 11 1 2 0, 10 0 3 0)))",
+            "SRID=4326;MULTIPOLYGON (((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 1 2, 2 2, 2 1, 1 1)), ((10 0, 11 0, 11 1, 10 0)))",
+            " srid=-1;GEOMETRYCOLLECTION Z (POLYGON Z ((0 0 1, 4 0 1, 4 4 1, 0 4 1, 0 0 1), (1 1 1, 1 2 1, 2 2 1, 2 1 1, 1 1 1)), MULTIPOLYGON Z (((10 0 0, 11 0 0, 11 1 0, 10 0 0))))",
+        ] {
+            let set = read(text).unwrap_or_else(|e| panic!("{text}: {e}"));
+            assert_eq!(as_written(&set), as_written(&plain), "{text}");
+        }
+        for empty in ["POLYGON Z EMPTY", "SRID=3857;MULTIPOLYGON ZM EMPTY"] {
+            assert!(read(empty).unwrap().is_empty(), "{empty}");
+        }
+        // A word where a number belongs is refused in any ordinate.
+        for text in [
+            "POLYGON Z ((0 0 NaN, 1 0 0, 1 1 0, 0 0 0))",
+            "POLYGON ZM ((0 0 0 inf, 1 0 0 0, 1 1 0 0, 0 0 0 0))",
+        ] {
+            let err = read(text).unwrap_err().to_string();
+            assert!(err.contains("is not a finite number"), "{text}: {err}");
+        }
     }
 
     #[test]

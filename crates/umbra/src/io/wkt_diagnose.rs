@@ -8,7 +8,8 @@
 //! `ZM`, then `EMPTY` or a parenthesised list nested as deep as the type
 //! needs (`POINT`, `LINESTRING` and `MULTIPOINT` one level, `POLYGON`,
 //! `MULTILINESTRING` and a `MULTIPOINT` of parenthesised points two,
-//! `MULTIPOLYGON` three); a coordinate is 2 to 4 numbers;
+//! `MULTIPOLYGON` three); a coordinate is 2 numbers, 3 with `Z` or `M`, 4
+//! with `ZM`;
 //! `GEOMETRYCOLLECTION` holds geometries. Nesting depth is bounded by the
 //! caller's pre-scan, which bounds the recursion here.
 
@@ -154,7 +155,8 @@ fn geometry(lx: &mut Lexer<'_>) -> Check {
             ))
         }
     };
-    lx.dims = None;
+    // Without `Z`, `M` or `ZM` a coordinate has two numbers.
+    lx.dims = Some(2);
     if let (Tok::Word(w), _) = lx.peek() {
         if ["Z", "M", "ZM"].iter().any(|d| w.eq_ignore_ascii_case(d)) {
             lx.dims = Some(if w.len() == 2 { 4 } else { 3 });
@@ -292,8 +294,13 @@ fn coordinate(lx: &mut Lexer<'_>) -> Check {
     }
     match lx.dims {
         Some(d) if d != n => Err(format!(
-            "a coordinate of {n} numbers ending at {}, but this geometry's coordinates have {d}",
-            lx.here()
+            "a coordinate of {n} numbers ending at {}, but this geometry's coordinates have {d}{}",
+            lx.here(),
+            if d == 2 {
+                " (x y z or x y z m need the Z, M or ZM keyword: POLYGON Z (...))"
+            } else {
+                ""
+            }
         )),
         Some(_) => Ok(()),
         None => {
