@@ -107,6 +107,65 @@ fn a_boolean_from_stl_to_every_mesh_format() {
     assert!((stl_volume(&std::fs::read_to_string(&a).unwrap()) - 8.0).abs() < 1e-12);
 }
 
+/// The empty result of a Boolean (disjoint boxes intersected), written in
+/// every readable mesh format and both STL and PLY encodings, reads back:
+/// `check` finds the empty mesh valid, and it serves as an operand (its
+/// union with a box is the box).
+#[test]
+fn an_empty_result_reads_back_in_every_mesh_format() {
+    let dir = temp_dir("empty");
+    let a = dir.join("a.stl");
+    let b = dir.join("b.stl");
+    std::fs::write(&a, box_stl([0.0; 3], [1.0; 3])).unwrap();
+    std::fs::write(&b, box_stl([5.0; 3], [6.0; 3])).unwrap();
+    for (ext, ascii) in [
+        ("stl", false),
+        ("stl", true),
+        ("ply", false),
+        ("ply", true),
+        ("obj", false),
+        ("off", false),
+    ] {
+        let out = dir.join(format!("empty-{ascii}.{ext}"));
+        let mut args = vec![
+            "boolean".as_ref(),
+            "intersection".as_ref(),
+            a.as_os_str(),
+            b.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+        ];
+        if ascii {
+            args.push("--ascii".as_ref());
+        }
+        let o = umbra(args);
+        assert!(o.status.success(), "{ext}: {}", stderr(&o));
+        let c = umbra(["check".as_ref(), out.as_os_str(), "--json".as_ref()]);
+        assert!(c.status.success(), "{ext} {ascii}: {}", stderr(&c));
+        let j: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+        assert_eq!(j["topologically_valid"], true, "{ext}: {j}");
+        assert_eq!(j["facets"], 0, "{ext}: {j}");
+        assert_eq!(j["signed_volume"], 0.0, "{ext}: {j}");
+        let union = dir.join(format!("union-{ascii}.off"));
+        let o = umbra([
+            "boolean".as_ref(),
+            "union".as_ref(),
+            out.as_os_str(),
+            a.as_os_str(),
+            "-o".as_ref(),
+            union.as_os_str(),
+        ]);
+        assert!(o.status.success(), "{ext}: {}", stderr(&o));
+        let c = umbra(["check".as_ref(), union.as_os_str(), "--json".as_ref()]);
+        let j: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+        assert_eq!(j["signed_volume"], 1.0, "{ext}: {j}");
+    }
+    // A file of nothing but white space is still refused.
+    let blank = dir.join("blank.stl");
+    std::fs::write(&blank, "  \n").unwrap();
+    assert_bad_input(&blank, "empty");
+}
+
 fn assert_bad_input(path: &Path, needle: &str) {
     let o = umbra(["check".as_ref(), path.as_os_str()]);
     assert_eq!(

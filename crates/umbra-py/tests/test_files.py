@@ -43,6 +43,19 @@ def test_boolean_results_round_trip(tmp_path, ext):
     assert back.check()["two_manifold"]
 
 
+@pytest.mark.parametrize("ext", MESH_EXACT + ["stl"])
+@pytest.mark.parametrize("ascii", [False, True])
+def test_an_empty_result_round_trips(tmp_path, ext, ascii):
+    # Disjoint cubes intersect in the empty solid, which every readable
+    # format writes and reads back as the empty mesh.
+    e = umbra.boolean(cube(), cube((5.0, 5.0, 5.0)), "intersection")
+    assert len(e.vertices) == 0 and e.volume() == 0.0
+    path = tmp_path / f"e.{ext}"
+    umbra.write(e, path, ascii=ascii)
+    back = umbra.read(path)
+    assert back.is_valid() and back.volume() == 0.0 and len(back.faces) == 0
+
+
 @pytest.mark.parametrize("ext", ["3mf", "glb"])
 def test_write_only_mesh_formats(tmp_path, ext):
     path = tmp_path / f"cube.{ext}"

@@ -32,7 +32,9 @@ pub enum UmbraError {
         /// Why the type is not supported (one sentence).
         detail: String,
     },
-    /// The file holds nothing but white space.
+    /// The file holds nothing but white space (an OBJ file: no comment or
+    /// OBJ statement either; a PLY header: neither a vertex nor a face
+    /// element). A well-formed file without facets is the empty mesh.
     Empty {
         /// The file.
         file: String,

@@ -120,10 +120,16 @@ pub(crate) fn parse_obj_with_origins(
     let mut vertices: Vec<Point3> = Vec::new();
     let mut facets: Vec<Facet> = Vec::new();
     let mut loop_: Vec<u32> = Vec::new();
+    // Whether any line is a comment or an OBJ statement: a file of those
+    // without vertices or faces (the writer's empty mesh) is the empty
+    // mesh, a file of anything else is no OBJ at all.
+    let mut saw_obj = false;
     for (i, raw) in text.lines().enumerate() {
         let line_no = i + 1;
         let line = raw.split('#').next().unwrap_or("");
         let mut tokens = line.split_whitespace();
+        let first = tokens.clone().next();
+        saw_obj |= raw.trim_start().starts_with('#') || first.is_some_and(is_obj_statement);
         match tokens.next() {
             Some("v") => {
                 let mut p = [0.0; 3];
@@ -197,12 +203,20 @@ pub(crate) fn parse_obj_with_origins(
             _ => {}
         }
     }
-    if vertices.is_empty() && facets.is_empty() {
+    if !saw_obj {
         return Err(UmbraError::Empty {
             file: file.to_string(),
         });
     }
     Ok((PolygonMesh::new(vertices, facets), origins))
+}
+
+/// The keywords of OBJ's geometry, grouping and material statements.
+fn is_obj_statement(word: &str) -> bool {
+    matches!(
+        word,
+        "v" | "vt" | "vn" | "vp" | "f" | "l" | "p" | "o" | "g" | "s" | "mg" | "usemtl" | "mtllib"
+    )
 }
 
 /// Parses OFF text into a polygon mesh (unchecked; see the module docs).
@@ -443,6 +457,24 @@ mod tests {
         let off = parse_off(&mesh_to_off(&m), "x").unwrap();
         assert_eq!(off.vertices, m.vertices);
         off.check_topology().unwrap();
+    }
+
+    #[test]
+    fn the_empty_mesh_round_trips_and_text_without_obj_is_empty() {
+        let empty = PolygonMesh::default();
+        assert_eq!(parse_obj(&mesh_to_obj(&empty), "e.obj").unwrap(), empty);
+        assert_eq!(parse_off(&mesh_to_off(&empty), "e.off").unwrap(), empty);
+        for text in [
+            "# nothing\n",
+            "o part\ng group\n",
+            "mtllib a.mtl\nusemtl b\n",
+        ] {
+            assert_eq!(parse_obj(text, "e.obj").unwrap(), empty, "{text:?}");
+        }
+        for text in ["", " \n\t\n", "hello world\n"] {
+            let e = parse_obj(text, "e.obj").unwrap_err().to_string();
+            assert_eq!(e, "e.obj: the file is empty (no geometry)", "{text:?}");
+        }
     }
 
     #[test]

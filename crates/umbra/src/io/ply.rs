@@ -506,11 +506,8 @@ pub(crate) fn parse_ply_with_origins(
             ));
         }
     }
-    if vertices.is_empty() && facets.is_empty() {
-        return Err(UmbraError::Empty {
-            file: file.to_string(),
-        });
-    }
+    // A header with a vertex element of count 0 is the empty mesh (what
+    // the writer writes for an empty result).
     Ok((PolygonMesh::new(vertices, facets), origins))
 }
 
@@ -656,6 +653,22 @@ mod tests {
             vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.5]]
         );
         assert_eq!(m.facets.len(), 2);
+    }
+
+    #[test]
+    fn the_empty_mesh_round_trips() {
+        let empty = PolygonMesh::default();
+        for ascii in [false, true] {
+            assert_eq!(
+                parse_ply(&mesh_to_ply(&empty, ascii), "e.ply").unwrap(),
+                empty
+            );
+        }
+        // A header without a vertex or face element holds no mesh.
+        let e = parse_ply(b"ply\nformat ascii 1.0\nend_header\n", "e.ply")
+            .unwrap_err()
+            .to_string();
+        assert_eq!(e, "e.ply: the file is empty (no geometry)");
     }
 
     #[test]

@@ -120,19 +120,15 @@ pub fn parse_stl(bytes: &[u8], file: &str) -> Result<TriangleMesh, UmbraError> {
     Ok(mesh)
 }
 
-/// [`parse_stl`] with the record or line of every triangle and vertex; a
-/// file without triangles is [`UmbraError::Empty`].
+/// [`parse_stl`] with the record or line of every triangle and vertex. A
+/// well-formed file without triangles (a binary header with count 0,
+/// `solid ... endsolid`: what the writer writes for an empty result) is the
+/// empty mesh; a file of nothing but white space is [`UmbraError::Empty`].
 pub(crate) fn parse_stl_with_origins(
     bytes: &[u8],
     file: &str,
 ) -> Result<(TriangleMesh, Origins), UmbraError> {
-    let (mesh, origins) = parse_stl_any(bytes, file)?;
-    if mesh.triangles.is_empty() {
-        return Err(UmbraError::Empty {
-            file: file.to_string(),
-        });
-    }
-    Ok((mesh, origins))
+    parse_stl_any(bytes, file)
 }
 
 /// Binary or ASCII by the rules of the module docs.
@@ -622,12 +618,24 @@ mod tests {
     }
 
     #[test]
-    fn no_triangles_is_empty() {
+    fn no_triangles_is_the_empty_mesh_and_white_space_an_error() {
         let mut b = vec![b' '; 84];
         b[80..84].copy_from_slice(&0u32.to_le_bytes());
-        for bytes in [b, b"solid x\nendsolid x\n".to_vec()] {
-            let e = parse_stl(&bytes, "e.stl").unwrap_err().to_string();
+        for bytes in [
+            b,
+            b"solid x\nendsolid x\n".to_vec(),
+            b"solid\nendsolid".to_vec(),
+        ] {
+            assert_eq!(parse_stl(&bytes, "e.stl").unwrap(), TriangleMesh::default());
+        }
+        for bytes in [&b""[..], b" \n\t"] {
+            let e = parse_stl(bytes, "e.stl").unwrap_err().to_string();
             assert_eq!(e, "e.stl: the file is empty (no geometry)");
+        }
+        // Both encodings of the empty mesh read back as written.
+        for ascii in [false, true] {
+            let bytes = mesh_to_stl(&PolygonMesh::default(), ascii).unwrap();
+            assert_eq!(parse_stl(&bytes, "e.stl").unwrap(), TriangleMesh::default());
         }
     }
 
