@@ -202,3 +202,55 @@ fn a_destination_that_is_a_file_of_the_script_is_refused() {
     );
     assert_eq!(std::fs::read(&mesh).unwrap(), before);
 }
+
+/// `umbra csg` smooths near the Booleans' contacts when a Boolean ran (and
+/// the whole mesh otherwise), says which in the report, and smooths
+/// nothing with `--smooth 0`.
+#[test]
+fn csg_smooths_near_contacts_and_says_so() {
+    let dir = temp_dir("near");
+    let single = dir.join("single.json");
+    std::fs::write(&single, r#"{"box": {"size": [1, 1, 1]}}"#).unwrap();
+    let cases = [
+        (examples().join("pipe_tee.json"), vec![], Some(true)),
+        (
+            examples().join("pipe_tee.json"),
+            vec!["--smooth", "1e-3"],
+            Some(true),
+        ),
+        (single.clone(), vec![], Some(false)),
+        (
+            examples().join("pipe_tee.json"),
+            vec!["--smooth", "0"],
+            None,
+        ),
+    ];
+    for (k, (script, extra, want)) in cases.into_iter().enumerate() {
+        let out = dir.join(format!("out{k}.obj"));
+        let report = dir.join(format!("r{k}.json"));
+        let mut args = vec![
+            "csg".as_ref(),
+            script.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+            "--report".as_ref(),
+            report.as_os_str(),
+            "--quiet".as_ref(),
+        ];
+        args.extend(extra.iter().map(std::ffi::OsStr::new));
+        let o = umbra(args);
+        assert!(o.status.success(), "{k}: {}", stderr(&o));
+        let r = json(&report);
+        match want {
+            Some(near) => {
+                assert_eq!(r["smoothed_near_contacts"], near, "{k}: {r}");
+                assert!(r["smoothing"].is_object(), "{k}");
+            }
+            None => {
+                assert!(r.get("smoothed_near_contacts").is_none(), "{k}: {r}");
+                assert!(r["smoothing"].is_null(), "{k}");
+            }
+        }
+        assert_eq!(r["topologically_valid"], true, "{k}");
+    }
+}

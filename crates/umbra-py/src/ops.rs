@@ -192,7 +192,14 @@ pub fn csg<'py>(
         .extract()?;
     let out = run(py, || {
         let node = parse_csg(&text)?;
-        evaluate_csg(&node, CsgOptions { triangulate }).map(|r| r.mesh)
+        evaluate_csg(
+            &node,
+            CsgOptions {
+                triangulate,
+                contacts: None,
+            },
+        )
+        .map(|r| r.mesh)
     })?;
     Mesh::wrap(py, out)
 }

@@ -52,7 +52,14 @@ fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
     let mut tri_pairs = 0;
     for (k, triangulate) in [false, true].into_iter().enumerate() {
         let t = Instant::now();
-        let out = evaluate_csg(tree, CsgOptions { triangulate }).unwrap();
+        let out = evaluate_csg(
+            tree,
+            CsgOptions {
+                triangulate,
+                contacts: None,
+            },
+        )
+        .unwrap();
         assert!(out.report.topologically_valid, "{what}");
         assert_eq!(out.mesh.check_topology(), Ok(()));
         let raw = check_mesh(&out.mesh);
@@ -165,7 +172,14 @@ fn triangle_variant_rounding_is_smoothed_away() {
         check_mesh(&polygon.mesh).self_intersecting_facet_pairs,
         Some(0)
     );
-    let triangles = evaluate_csg(&tree, CsgOptions { triangulate: true }).unwrap();
+    let triangles = evaluate_csg(
+        &tree,
+        CsgOptions {
+            triangulate: true,
+            contacts: None,
+        },
+    )
+    .unwrap();
     let raw = check_mesh(&triangles.mesh);
     assert!(raw.is_valid());
     eprintln!(

@@ -152,7 +152,14 @@ fn every_shipped_example_evaluates_to_a_valid_closed_solid() {
         seen += 1;
         let tree = read_csg_file(&path).unwrap_or_else(|e| panic!("{e}"));
         for triangulate in [false, true] {
-            let out = evaluate_csg(&tree, CsgOptions { triangulate }).unwrap();
+            let out = evaluate_csg(
+                &tree,
+                CsgOptions {
+                    triangulate,
+                    contacts: None,
+                },
+            )
+            .unwrap();
             assert!(out.report.topologically_valid, "{}", path.display());
             assert_eq!(out.mesh.check_topology(), Ok(()));
             assert!(out.report.volume > 0.0, "{}", path.display());
@@ -171,7 +178,14 @@ fn every_shipped_example_evaluates_to_a_valid_closed_solid() {
 fn triangle_variant_agrees_with_the_polygon_variant() {
     let tree = read_csg_file(&examples().join("pipe_tee.json")).unwrap();
     let poly = evaluate_csg(&tree, CsgOptions::default()).unwrap();
-    let tri = evaluate_csg(&tree, CsgOptions { triangulate: true }).unwrap();
+    let tri = evaluate_csg(
+        &tree,
+        CsgOptions {
+            triangulate: true,
+            contacts: None,
+        },
+    )
+    .unwrap();
     assert_eq!(tri.report.variant, "triangle");
     assert!(tri.mesh.facets.iter().all(|f| f.half_edges.len() == 3));
     assert!(close(poly.report.volume, tri.report.volume, 1e-9));
@@ -604,7 +618,7 @@ proptest::proptest! {
         let script = format!(r#"{{"op": "{op}", "children": [{}]}}"#, children.join(","));
         let tree = parse_csg(&script).unwrap();
         for triangulate in [false, true] {
-            let out = evaluate_csg(&tree, CsgOptions { triangulate }).unwrap();
+            let out = evaluate_csg(&tree, CsgOptions { triangulate, contacts: None }).unwrap();
             proptest::prop_assert!(out.report.topologically_valid);
             // Intersection points are interpolated in f64 (eq. 4.2-4.6), so
             // the volume may differ from the exact one in the last bits.

@@ -2,14 +2,14 @@
 //! files and Booleans (the JSON form below) with the 3D Boolean, batched and
 //! in parallel, deterministic whatever the thread count.
 
-use super::{millis_since, smooth_result, tolerance_arg};
+use super::{csg_options, millis_since, smooth_result, tolerance_arg};
 use crate::files::OutputArgs;
 use crate::progress::Progress;
 use crate::stdout::outln;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
-use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, CsgOptions, FileKind};
+use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, FileKind};
 
 /// The script form, shown by `umbra csg --help`.
 const SCRIPT_HELP: &str = "\
@@ -51,8 +51,10 @@ pub struct CsgArgs {
     #[arg(long)]
     quiet: bool,
     /// Smooth the result once, at the end, at this tolerance (Appendix
-    /// A). Default: 1e-9 times the result's largest bounding-box extent;
-    /// `--smooth 0` writes the Booleans' raw output.
+    /// A), near where the Booleans' operands met (as `umbra boolean`
+    /// does; `umbra smooth` cleans a whole mesh). Default: 1e-9 times the
+    /// result's largest bounding-box extent; `--smooth 0` writes the
+    /// Booleans' raw output.
     #[arg(long, value_name = "T", value_parser = tolerance_arg)]
     smooth: Option<f64>,
 }
@@ -72,9 +74,7 @@ impl CsgArgs {
         let bar = Progress::new(tree.boolean_count(), self.quiet);
         let result = evaluate_csg_with_progress(
             &tree,
-            CsgOptions {
-                triangulate: self.triangulate,
-            },
+            csg_options(self.triangulate, self.smooth),
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();

@@ -4,7 +4,7 @@
 //! the result once (Appendix A, the default tolerance), writes the
 //! mesh, its script and a picture (`plant.png`, iso view), and prints a validity and timing summary.
 
-use super::{millis_since, smooth_result};
+use super::{csg_options, millis_since, smooth_result};
 use crate::files::write_all;
 use crate::progress::Progress;
 use crate::stdout::outln;
@@ -12,7 +12,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    check_mesh, demo_plant, encode_mesh, evaluate_csg_with_progress, render_mesh, CsgOptions,
+    check_mesh, demo_plant, encode_mesh, evaluate_csg_with_progress, render_mesh,
     DemoDetail, FileKind, RenderOptions,
 };
 
@@ -46,9 +46,7 @@ impl DemoArgs {
         let bar = Progress::new(tree.boolean_count(), self.quiet);
         let result = evaluate_csg_with_progress(
             &tree,
-            CsgOptions {
-                triangulate: self.triangulate,
-            },
+            csg_options(self.triangulate, None),
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();

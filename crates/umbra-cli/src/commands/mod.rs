@@ -68,7 +68,10 @@ pub fn tolerance_arg(s: &str) -> Result<f64, String> {
 /// at the end of a chain of Booleans cheaper than one per Boolean, section
 /// 5.2): at `tolerance`, or by default at
 /// [`umbra::DEFAULT_RELATIVE_TOLERANCE`] times the result's extent; a
-/// tolerance of 0 leaves the result raw.
+/// tolerance of 0 leaves the result raw. Where the evaluation gathered
+/// contacts at a proximity of at least the tolerance ([`csg_options`]),
+/// only near them, as `umbra boolean` smooths (the same result when the
+/// leaves need no smoothing themselves); else the whole mesh.
 pub fn smooth_result(
     result: umbra::CsgResult,
     triangulate: bool,
@@ -84,16 +87,37 @@ pub fn smooth_result(
         umbra::MeshVariant::PolygonMesh
     };
     let start = std::time::Instant::now();
-    let smoothed = umbra::smooth_solid(&result.mesh, variant, &umbra::SmoothOptions::new(tol))
-        .map_err(|source| umbra::UmbraError::Smooth {
-            file: String::new(),
-            source,
-        })?;
-    let report = result.report.smoothed(&smoothed, millis_since(start));
+    let options = umbra::SmoothOptions::new(tol);
+    let near = result.contacts.as_ref().filter(|c| c.proximity >= tol);
+    let smoothed = match near {
+        Some(c) => umbra::smooth_solid_near(&result.mesh, variant, &options, c),
+        None => umbra::smooth_solid(&result.mesh, variant, &options),
+    }
+    .map_err(|source| umbra::UmbraError::Smooth {
+        file: String::new(),
+        source,
+    })?;
+    let report = result
+        .report
+        .smoothed(&smoothed, millis_since(start), near.is_some());
     Ok(umbra::CsgResult {
         mesh: smoothed.shape,
         report,
+        contacts: None,
     })
+}
+
+/// The evaluation options of `umbra csg` and `umbra demo`: the variant,
+/// and contacts gathered for [`smooth_result`] unless smoothing is off
+/// (`--smooth 0`).
+pub fn csg_options(triangulate: bool, smooth: Option<f64>) -> umbra::CsgOptions {
+    umbra::CsgOptions {
+        triangulate,
+        contacts: match smooth {
+            Some(t) if t <= 0.0 => None,
+            t => Some(t.unwrap_or(0.0)),
+        },
+    }
 }
 
 /// Milliseconds since `start`.

@@ -2,15 +2,26 @@
 //! balanced trees of binary Booleans, independent branches in parallel
 //! (rayon), the same output bit for bit whatever the thread count, a
 //! progress callback and a typed report with per-node timings.
+//!
+//! On request the evaluation also gathers where the operands of every
+//! Boolean came close ([`Contacts`]), carried up the tree through the
+//! nodes' transforms into the root's frame, so that the result can be
+//! smoothed only there ([`crate::smooth_solid_near`]) instead of as a
+//! whole: every vertex a Boolean of the tree created, and every sliver or
+//! gap between its operands, lies in one of those boxes.
 
 use super::error::ModelError;
 use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
 use super::tree::{path_string, CsgNode, CsgShape, MAX_DEPTH};
 use crate::nary::reduce_op;
-use boolean_3d::{boolean_mesh, boolean_triangles, triangulate_mesh, BooleanOp};
-use glam::DVec3;
+use boolean_3d::{
+    boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
+    triangulate_mesh, BooleanOp, Contacts,
+};
+use glam::{DMat3, DMat4, DVec3};
 use rayon::prelude::*;
+use robust_arith::Point3;
 use serde::Serialize;
 use smooth::{SmoothReport, Smoothed};
 use std::collections::HashMap;
@@ -20,13 +31,32 @@ use std::time::Instant;
 use topology::{PolygonMesh, TriangleMesh};
 
 /// How a tree is evaluated.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
 pub struct CsgOptions {
     /// Use the triangle-mesh variant of the 3D Boolean (every leaf
     /// triangulated, every result triangulated, section 4.8) instead of
     /// the polygon-mesh variant.
     pub triangulate: bool,
+    /// Gather the Booleans' [`Contacts`] into [`CsgResult::contacts`] at a
+    /// proximity of at least this distance in the root's frame (`None`:
+    /// not gathered). Each Boolean looks at least
+    /// [`CONTACT_RELATIVE_PROXIMITY`] times its operands' extent around
+    /// them, so that `Some(0.0)` gives contacts that serve smoothing at the
+    /// default tolerance ([`crate::DEFAULT_RELATIVE_TOLERANCE`] times the
+    /// result's extent) unless a Boolean's operands are a thousand times
+    /// smaller than the result; [`Contacts::proximity`] of the result says
+    /// what was reached.
+    pub contacts: Option<f64>,
 }
+
+/// The least proximity at which a Boolean of a tree gathers contacts
+/// ([`CsgOptions::contacts`]), relative to the largest extent of its two
+/// operands' bounding boxes: a thousand times the default smoothing
+/// tolerance, so that the contacts of a part serve smoothing the whole
+/// tree's result at its default tolerance when the part is at least a
+/// thousandth of the result's size. The boxes grow by it, which costs
+/// little: facets are much larger than this.
+pub const CONTACT_RELATIVE_PROXIMITY: f64 = 1e-6;
 
 /// The timing and sizes of one node of the tree.
 #[derive(Clone, Debug, PartialEq, Serialize)]
@@ -81,6 +111,11 @@ pub struct CsgReport {
     /// What smoothing did, when the result was smoothed
     /// ([`CsgReport::smoothed`]); `null` otherwise.
     pub smoothing: Option<SmoothReport>,
+    /// Whether smoothing looked only near the Booleans' contacts
+    /// ([`CsgResult::contacts`]) rather than at the whole mesh; `null`
+    /// when the result was not smoothed.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub smoothed_near_contacts: Option<bool>,
     /// Wall-clock milliseconds: `total` is the whole evaluation.
     pub timings_ms: CsgTimings,
     /// One entry per node, in tree order (pre-order).
@@ -88,10 +123,17 @@ pub struct CsgReport {
 }
 
 impl CsgReport {
-    /// The report once the result was smoothed in `smooth_ms`: the output
-    /// described again (counts, validity, manifoldness, volume, bounds),
-    /// the smoothing report kept, `total` including smoothing.
-    pub fn smoothed(mut self, smoothed: &Smoothed<PolygonMesh>, smooth_ms: f64) -> Self {
+    /// The report once the result was smoothed in `smooth_ms` (only near
+    /// the contacts when `near`): the output described again (counts,
+    /// validity, manifoldness, volume, bounds), the smoothing report kept,
+    /// `total` including smoothing.
+    pub fn smoothed(
+        mut self,
+        smoothed: &Smoothed<PolygonMesh>,
+        smooth_ms: f64,
+        near: bool,
+    ) -> Self {
+        self.smoothed_near_contacts = Some(near);
         let mesh = &smoothed.shape;
         let topology = mesh.check_topology();
         self.vertices = mesh.vertices.len();
@@ -127,6 +169,16 @@ pub struct CsgResult {
     pub mesh: PolygonMesh,
     /// The report.
     pub report: CsgReport,
+    /// Where the operands of the tree's Booleans came close, in the root's
+    /// frame, when [`CsgOptions::contacts`] asked for it and a Boolean
+    /// ran: the boxes of every Boolean of the tree, each grown by at least
+    /// [`Contacts::proximity`] (the least proximity any Boolean reached,
+    /// measured in the root's frame). Smoothing the result at a tolerance
+    /// up to that proximity near these boxes
+    /// ([`crate::smooth_solid_near`]) equals smoothing it whole
+    /// ([`crate::smooth_solid`]) when the leaves themselves need no
+    /// smoothing.
+    pub contacts: Option<Contacts>,
 }
 
 /// A solid in the variant being evaluated.
@@ -151,6 +203,94 @@ impl Solid {
     }
 }
 
+/// A node's result with the contacts of the Booleans below it, in the
+/// node's frame before its own transform.
+struct Part {
+    solid: Solid,
+    /// The contact boxes ([`Contacts::boxes`]).
+    boxes: Vec<[Point3; 2]>,
+    /// The least distance by which those boxes are grown, measured in the
+    /// root's frame (infinite when no Boolean ran below).
+    margin: f64,
+}
+
+impl Part {
+    fn new(solid: Solid) -> Part {
+        Part {
+            solid,
+            boxes: Vec::new(),
+            margin: f64::INFINITY,
+        }
+    }
+
+    /// The largest extent of the solid's bounding box (0 when empty).
+    fn extent(&self) -> f64 {
+        let v = match &self.solid {
+            Solid::Poly(m) => &m.vertices,
+            Solid::Tri(m) => &m.vertices,
+        };
+        let mut lo = [f64::INFINITY; 3];
+        let mut hi = [f64::NEG_INFINITY; 3];
+        for p in v {
+            for c in 0..3 {
+                lo[c] = lo[c].min(p[c]);
+                hi[c] = hi[c].max(p[c]);
+            }
+        }
+        (0..3).map(|c| hi[c] - lo[c]).fold(0.0, f64::max)
+    }
+}
+
+/// An upper bound of `1 / sigma_min` of the linear part of `m` (the
+/// Frobenius norm of its inverse, at least its spectral norm): points
+/// within `D` of each other after `m` were within `D * bound` before it,
+/// and a box grown by `d` before `m` is grown by at least `d / bound`
+/// after it. Infinite when the part is singular or not finite.
+fn inverse_norm_bound(m: &DMat4) -> f64 {
+    let l = DMat3::from_mat4(*m);
+    let det = l.determinant();
+    if !det.is_finite() || det == 0.0 {
+        return f64::INFINITY;
+    }
+    let inv = l.inverse();
+    let f = [inv.x_axis, inv.y_axis, inv.z_axis]
+        .iter()
+        .map(|c| c.length_squared())
+        .sum::<f64>()
+        .sqrt();
+    if f.is_finite() {
+        f
+    } else {
+        f64::INFINITY
+    }
+}
+
+/// The box of the image of box `b` under `m`, grown by a bound of the
+/// rounding of the transform (the mesh's vertices are transformed in
+/// `f64`, so the images of points in `b` lie in it).
+fn transform_box(m: &DMat4, [lo, hi]: [Point3; 2]) -> [Point3; 2] {
+    let mut out_lo = [f64::INFINITY; 3];
+    let mut out_hi = [f64::NEG_INFINITY; 3];
+    let mut mag: f64 = 0.0;
+    for k in 0..8 {
+        let c = DVec3::new(
+            if k & 1 == 0 { lo[0] } else { hi[0] },
+            if k & 2 == 0 { lo[1] } else { hi[1] },
+            if k & 4 == 0 { lo[2] } else { hi[2] },
+        );
+        mag = mag.max(c.abs().max_element());
+        let q = m.transform_point3(c).to_array();
+        for a in 0..3 {
+            out_lo[a] = out_lo[a].min(q[a]);
+            out_hi[a] = out_hi[a].max(q[a]);
+            mag = mag.max(q[a].abs());
+        }
+    }
+    let entries: f64 = m.to_cols_array().iter().map(|x| x.abs()).sum();
+    let slack = 1e-12 * mag * (1.0 + entries);
+    [out_lo.map(|x| x - slack), out_hi.map(|x| x + slack)]
+}
+
 struct Ctx<'a> {
     options: CsgOptions,
     total: usize,
@@ -160,23 +300,48 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
+    /// The Boolean of two parts at a node whose result reaches the root's
+    /// frame through a linear part with [`inverse_norm_bound`] `inv`,
+    /// gathering its contacts when asked.
     fn boolean(
         &self,
-        a: Solid,
-        b: Solid,
+        a: Part,
+        b: Part,
         op: BooleanOp,
         path: &[usize],
-    ) -> Result<Solid, ModelError> {
+        inv: f64,
+    ) -> Result<Part, ModelError> {
         let err = |source| ModelError::Boolean {
             node: path_string(path),
             source,
         };
-        let out = match (a, b) {
-            (Solid::Poly(a), Solid::Poly(b)) => {
-                Solid::Poly(boolean_mesh(&a, &b, op).map_err(err)?.mesh)
+        // The proximity here: the wanted one carried back from the root's
+        // frame, and at least the relative one; none when the transforms
+        // above cannot carry a distance back.
+        let proximity = self.options.contacts.and_then(|want| {
+            // The factors keep the reached margin (below) at least `want`
+            // whatever the rounding of these products.
+            let local = (want.max(0.0) * inv * (1.0 + 1e-11))
+                .max(CONTACT_RELATIVE_PROXIMITY * a.extent().max(b.extent()))
+                .max(f64::MIN_POSITIVE);
+            (local.is_finite() && inv.is_finite()).then_some(local)
+        });
+        let (solid, contacts) = match (a.solid, b.solid, proximity) {
+            (Solid::Poly(x), Solid::Poly(y), None) => (
+                Solid::Poly(boolean_mesh(&x, &y, op).map_err(err)?.mesh),
+                None,
+            ),
+            (Solid::Poly(x), Solid::Poly(y), Some(p)) => {
+                let (o, c) = boolean_mesh_with_contacts(&x, &y, op, p).map_err(err)?;
+                (Solid::Poly(o.mesh), Some(c))
             }
-            (Solid::Tri(a), Solid::Tri(b)) => {
-                Solid::Tri(boolean_triangles(&a, &b, op).map_err(err)?.mesh)
+            (Solid::Tri(x), Solid::Tri(y), None) => (
+                Solid::Tri(boolean_triangles(&x, &y, op).map_err(err)?.mesh),
+                None,
+            ),
+            (Solid::Tri(x), Solid::Tri(y), Some(p)) => {
+                let (o, c) = boolean_triangles_with_contacts(&x, &y, op, p).map_err(err)?;
+                (Solid::Tri(o.mesh), Some(c))
             }
             _ => {
                 return Err(err(boolean_3d::Boolean3Error::Internal(
@@ -184,11 +349,27 @@ impl Ctx<'_> {
                 )))
             }
         };
+        let mut boxes = a.boxes;
+        boxes.extend(b.boxes);
+        // Without contacts (not asked, or the transforms above are
+        // singular) the margin is 0: the result's contacts serve nothing.
+        let mut margin = a.margin.min(b.margin);
+        match contacts {
+            Some(c) => {
+                margin = margin.min(c.proximity / inv * (1.0 - 1e-12));
+                boxes.extend(c.boxes);
+            }
+            None => margin = 0.0,
+        }
         let done = self.done.fetch_add(1, Ordering::SeqCst) + 1;
         if let Some(p) = self.progress {
             p(done, self.total);
         }
-        Ok(out)
+        Ok(Part {
+            solid,
+            boxes,
+            margin,
+        })
     }
 
     /// The n-ary `op` of `items` as a balanced tree of binary Booleans
@@ -197,11 +378,12 @@ impl Ctx<'_> {
     /// does not depend on the schedule.
     fn reduce(
         &self,
-        items: Vec<Solid>,
+        items: Vec<Part>,
         op: BooleanOp,
         path: &[usize],
-    ) -> Result<Solid, ModelError> {
-        reduce_op(items, op, &|a, b, op| self.boolean(a, b, op, path))?.ok_or_else(|| {
+        inv: f64,
+    ) -> Result<Part, ModelError> {
+        reduce_op(items, op, &|a, b, op| self.boolean(a, b, op, path, inv))?.ok_or_else(|| {
             ModelError::Script {
                 file: String::new(),
                 node: path_string(path),
@@ -245,46 +427,64 @@ impl Ctx<'_> {
         })
     }
 
-    fn eval(&self, node: &CsgNode, path: &[usize]) -> Result<Solid, ModelError> {
-        let (solid, booleans, operand_facets, own_ms) = match &node.shape {
+    /// Evaluates `node`, whose result reaches the root's frame through
+    /// `above` (the product of its ancestors' transforms).
+    fn eval(&self, node: &CsgNode, path: &[usize], above: &DMat4) -> Result<Part, ModelError> {
+        let own = (!node.transform.is_identity()).then(|| node.transform.matrix());
+        let to_root = own.map_or(*above, |m| *above * m);
+        let (part, booleans, operand_facets, own_ms) = match &node.shape {
             CsgShape::Op { op, children } => {
-                let results: Vec<Result<Solid, ModelError>> = children
+                let results: Vec<Result<Part, ModelError>> = children
                     .par_iter()
                     .enumerate()
                     .map(|(i, c)| {
                         let mut p = path.to_vec();
                         p.push(i);
-                        self.eval(c, &p)
+                        self.eval(c, &p, &to_root)
                     })
                     .collect();
-                let solids: Vec<Solid> = results.into_iter().collect::<Result<_, _>>()?;
-                let operand_facets = solids.iter().map(Solid::facets).collect();
+                let parts: Vec<Part> = results.into_iter().collect::<Result<_, _>>()?;
+                let operand_facets = parts.iter().map(|p| p.solid.facets()).collect();
                 let start = Instant::now();
-                let booleans = solids.len().saturating_sub(1);
+                let booleans = parts.len().saturating_sub(1);
+                let inv = if self.options.contacts.is_some() {
+                    inverse_norm_bound(&to_root)
+                } else {
+                    f64::INFINITY
+                };
                 // Xor reaches the 3D Boolean, which refuses it with an
                 // error naming the node.
-                let solid = self.reduce(solids, *op, path)?;
-                (solid, booleans, operand_facets, start.elapsed())
+                let part = self.reduce(parts, *op, path, inv)?;
+                (part, booleans, operand_facets, start.elapsed())
             }
             _ => {
                 let start = Instant::now();
-                let solid = self.leaf(node, path)?;
-                (solid, 0, Vec::new(), start.elapsed())
+                let part = Part::new(self.leaf(node, path)?);
+                (part, 0, Vec::new(), start.elapsed())
             }
         };
         let start = Instant::now();
-        let solid = if node.transform.is_identity() {
-            solid
-        } else {
-            let m = node.transform.matrix();
-            let located = |e: ModelError| ModelError::Script {
-                file: String::new(),
-                node: path_string(path),
-                message: e.to_string(),
-            };
-            match solid {
-                Solid::Poly(s) => Solid::Poly(transform_mesh(&s, &m).map_err(located)?),
-                Solid::Tri(s) => Solid::Tri(transform_triangles(&s, &m).map_err(located)?),
+        let part = match own {
+            None => part,
+            Some(m) => {
+                let located = |e: ModelError| ModelError::Script {
+                    file: String::new(),
+                    node: path_string(path),
+                    message: e.to_string(),
+                };
+                let solid = match part.solid {
+                    Solid::Poly(s) => Solid::Poly(transform_mesh(&s, &m).map_err(located)?),
+                    Solid::Tri(s) => Solid::Tri(transform_triangles(&s, &m).map_err(located)?),
+                };
+                Part {
+                    solid,
+                    boxes: part
+                        .boxes
+                        .into_iter()
+                        .map(|b| transform_box(&m, b))
+                        .collect(),
+                    margin: part.margin,
+                }
             }
         };
         let ms = (own_ms + start.elapsed()).as_secs_f64() * 1e3;
@@ -293,14 +493,14 @@ impl Ctx<'_> {
             kind: node.shape.kind().to_string(),
             booleans,
             operand_facets,
-            vertices: solid.vertices(),
-            facets: solid.facets(),
+            vertices: part.solid.vertices(),
+            facets: part.solid.facets(),
             ms,
         };
         if let Ok(mut nodes) = self.nodes.lock() {
             nodes.push((path.to_vec(), report));
         }
-        Ok(solid)
+        Ok(part)
     }
 }
 
@@ -400,8 +600,13 @@ pub fn evaluate_csg_with_progress(
         progress,
         nodes: Mutex::new(Vec::new()),
     };
-    let solid = ctx.eval(root, &[])?;
-    let mesh = match solid {
+    let part = ctx.eval(root, &[], &DMat4::IDENTITY)?;
+    let contacts =
+        (options.contacts.is_some() && ctx.done.load(Ordering::SeqCst) > 0).then_some(Contacts {
+            proximity: part.margin,
+            boxes: part.boxes,
+        });
+    let mesh = match part.solid {
         Solid::Poly(m) => m,
         Solid::Tri(t) => t.to_polygon_mesh(),
     };
@@ -427,11 +632,16 @@ pub fn evaluate_csg_with_progress(
         volume: topology::mesh_signed_volume(&mesh),
         bounds,
         smoothing: None,
+        smoothed_near_contacts: None,
         timings_ms: CsgTimings {
             total: start.elapsed().as_secs_f64() * 1e3,
             smooth: None,
         },
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };
-    Ok(CsgResult { mesh, report })
+    Ok(CsgResult {
+        mesh,
+        report,
+        contacts,
+    })
 }
