@@ -403,7 +403,8 @@ fn compact_vertices(pos: &[Point3], created: &[Point3], used: &[bool]) -> (Vec<P
 
 /// What smoothing a region gave.
 enum Outcome {
-    /// No facet comes near a contact: nothing to smooth.
+    /// No facet comes near a contact, or smoothing the region gave it
+    /// back unchanged: the mesh as it is.
     Untouched(SmoothReport),
     /// The region, smoothed and fitting its cut.
     Smoothed {
@@ -419,6 +420,19 @@ enum Outcome {
     },
     /// Smoothing reached the cut at every growth.
     Reached,
+}
+
+/// Whether `out` holds exactly the facets of `facets` marked in `region`,
+/// in their order, each with the same half-edges in the same order.
+fn same_facets<F: Facets + ?Sized>(facets: &F, region: &[bool], out: &[Vec<(u32, u32)>]) -> bool {
+    let mut out = out.iter();
+    for f in (0..facets.count()).filter(|&f| region[f]) {
+        match out.next() {
+            Some(o) if facets.half_edges(f).eq(o.iter().copied()) => {}
+            _ => return false,
+        }
+    }
+    out.next().is_none()
 }
 
 /// Smooths the region of `facets` near the contacts, re-triangulating
@@ -472,6 +486,12 @@ fn smooth_region<F: Facets + ?Sized>(
             })
             .collect();
         if fits(&region_facets, &c.frozen) {
+            // Smoothing that changed nothing gives the mesh back as it
+            // is, facets in their order (as whole smoothing does), not
+            // with the region's facets moved to the end.
+            if next as usize == pos.len() && same_facets(facets, &region, &region_facets) {
+                return Ok(Outcome::Untouched(report));
+            }
             // An input vertex keeps its position (`place` matched it by
             // position); created ones are new.
             let mut created = vec![[0.0; 3]; next as usize - pos.len()];
