@@ -171,12 +171,16 @@ pub fn union_all<'py>(
 /// ``umbra csg --help`` shows every node). ``file`` leaves are read
 /// relative to the working directory. Independent branches run in
 /// parallel; the result is the same whatever the thread count.
+/// ``smooth=T`` smooths the result at tolerance ``T`` near where the
+/// operands of the tree's Booleans met, as ``umbra csg --smooth T`` does;
+/// ``None`` (the default) or 0 returns the Booleans' raw output.
 #[pyfunction]
-#[pyo3(signature = (tree, *, triangulate = false))]
+#[pyo3(signature = (tree, *, triangulate = false, smooth = None))]
 pub fn csg<'py>(
     py: Python<'py>,
     tree: &Bound<'py, PyAny>,
     triangulate: bool,
+    smooth: Option<f64>,
 ) -> PyResult<Bound<'py, Mesh>> {
     if !tree.is_instance_of::<PyDict>() {
         return Err(error(
@@ -190,16 +194,41 @@ pub fn csg<'py>(
         .call_method("dumps", (tree,), Some(&kwargs))
         .map_err(|e| error(format!("tree: not JSON data: {e}")))?
         .extract()?;
-    let out = run(py, || {
-        let node = parse_csg(&text)?;
-        evaluate_csg(
-            &node,
-            CsgOptions {
-                triangulate,
-                contacts: None,
-            },
-        )
-        .map(|r| r.mesh)
+    let smooth = smooth.filter(|&t| t != 0.0);
+    let out = run(py, || -> Result<PolygonMesh, String> {
+        let smooth_error = |source| {
+            UmbraError::Smooth {
+                file: String::new(),
+                source,
+            }
+            .to_string()
+        };
+        let opts = smooth.map(SmoothOptions::new);
+        if let Some(o) = &opts {
+            o.validate().map_err(smooth_error)?;
+        }
+        let node = parse_csg(&text).map_err(|e| e.to_string())?;
+        let options = CsgOptions {
+            triangulate,
+            contacts: smooth,
+        };
+        let result = evaluate_csg(&node, options).map_err(|e| e.to_string())?;
+        let Some(opts) = opts else {
+            return Ok(result.mesh);
+        };
+        // As the command line does: near the gathered contacts when they
+        // reach the tolerance, else the whole mesh.
+        let variant = variant(triangulate);
+        match result
+            .contacts
+            .as_ref()
+            .filter(|c| c.proximity >= opts.tolerance)
+        {
+            Some(c) => smooth_solid_near(&result.mesh, variant, &opts, c),
+            None => smooth_solid(&result.mesh, variant, &opts),
+        }
+        .map(|out| out.shape)
+        .map_err(smooth_error)
     })?;
     Mesh::wrap(py, out)
 }

@@ -72,6 +72,24 @@ def test_csg_equals_the_cli(cli, tmp_path):
     assert mine.read_bytes() == out.read_bytes()
 
 
+@pytest.mark.parametrize("triangulate", [False, True])
+@pytest.mark.parametrize("smooth", [2e-9, 5e-2])
+def test_csg_smooth_equals_the_cli(cli, tmp_path, triangulate, smooth):
+    # `smooth=T` smooths near the tree's contacts as `umbra csg --smooth T`
+    # does (at 5e-2 the pipe tee's vertices do merge).
+    script = EXAMPLES / "pipe_tee.json"
+    out = tmp_path / "cli.obj"
+    flags = ["--triangulate"] if triangulate else []
+    r = run(cli, "csg", str(script), "-o", str(out), "--quiet", "--smooth", str(smooth), *flags)
+    assert r.returncode == 0, r.stderr
+    mine = tmp_path / "py.obj"
+    tree = json.loads(script.read_text())
+    umbra.write(umbra.csg(tree, triangulate=triangulate, smooth=smooth), mine)
+    assert mine.read_bytes() == out.read_bytes()
+    with pytest.raises(umbra.UmbraError, match="tolerance"):
+        umbra.csg(tree, smooth=-1.0)
+
+
 @pytest.mark.parametrize("valid", [True, False])
 def test_check_equals_the_cli(cli, tmp_path, valid):
     c = cube((0.25, 0.5, 0.125), 2.0)

@@ -198,16 +198,18 @@ def union_all(meshes: Iterable[Mesh], *, triangulate: bool = False) -> Mesh:
     return _umbra.union_all(list(meshes), triangulate=triangulate)
 
 
-def csg(tree: dict, *, triangulate: bool = False) -> Mesh:
+def csg(tree: dict, *, triangulate: bool = False, smooth: float | None = None) -> Mesh:
     """The mesh of a CSG tree in the JSON form of ``umbra csg``, as a dict.
 
     Example: ``{"op": "difference", "children": [{"box": {"size": [2, 2, 2],
     "center": True}}, {"cylinder": {"radius": 0.5, "height": 3, "center":
     True}}]}``. Leaves: box, sphere, cylinder, torus, file (relative to the
     working directory); any node may carry translate, rotate (degrees) and
-    scale. Independent branches run in parallel.
+    scale. Independent branches run in parallel. ``smooth=T`` smooths the
+    result at tolerance ``T`` near where the Booleans' operands met (as
+    ``umbra csg --smooth T``); by default the raw result is returned.
     """
-    return _umbra.csg(tree, triangulate=triangulate)
+    return _umbra.csg(tree, triangulate=triangulate, smooth=smooth)
 
 
 def boolean_2d(
