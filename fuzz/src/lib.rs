@@ -350,3 +350,103 @@ impl FacetInput {
         (positions, half_edges, plane, cells.len())
     }
 }
+
+/// A node of a small CSG tree: a coarse primitive or a Boolean of two or
+/// three children, with an optional transform (rotation, a scale that may
+/// be non-uniform or mirror, a translation), printed as the JSON script
+/// that `umbra csg` reads (`Debug`).
+#[derive(Clone, Arbitrary)]
+pub enum CsgInput {
+    /// A primitive: kind (box, sphere, cylinder, torus), size and segment
+    /// parameters, transform.
+    Leaf(u8, [u8; 3], u8, CsgTransform),
+    /// A Boolean (0 union, 1 intersection, 2 difference, 3 xor, refused
+    /// in 3D) of the children, transform.
+    Op(u8, Vec<CsgInput>, CsgTransform),
+}
+
+/// A node's transform, each part optional.
+#[derive(Clone, Copy, Arbitrary)]
+pub struct CsgTransform {
+    /// Degrees about x, y, z.
+    pub rotate: Option<[i8; 3]>,
+    /// Scale factors as `k / 8` (0 is refused by the script's checks).
+    pub scale: Option<[i8; 3]>,
+    /// Translation as `k / 16`.
+    pub translate: Option<[i8; 3]>,
+}
+
+impl CsgTransform {
+    fn json(&self) -> String {
+        let mut s = String::new();
+        if let Some(r) = self.rotate {
+            s += &format!(", \"rotate\": [{}, {}, {}]", r[0], r[1], r[2]);
+        }
+        if let Some(k) = self.scale {
+            let f = |v: i8| f64::from(v) / 8.0;
+            s += &format!(", \"scale\": [{}, {}, {}]", f(k[0]), f(k[1]), f(k[2]));
+        }
+        if let Some(t) = self.translate {
+            let f = |v: i8| f64::from(v) / 16.0;
+            s += &format!(", \"translate\": [{}, {}, {}]", f(t[0]), f(t[1]), f(t[2]));
+        }
+        s
+    }
+}
+
+impl CsgInput {
+    /// The script, with at most `depth` levels of operations and two or
+    /// three children each (extra children dropped, missing ones a box).
+    pub fn json(&self, depth: u32) -> String {
+        match self {
+            CsgInput::Op(op, children, t) if depth > 0 => {
+                let name = ["union", "intersection", "difference", "xor"][usize::from(op % 4)];
+                let mut parts: Vec<String> =
+                    children.iter().take(3).map(|c| c.json(depth - 1)).collect();
+                while parts.len() < 2 {
+                    parts.push("{\"box\": {\"size\": 1, \"center\": true}}".to_string());
+                }
+                format!(
+                    "{{\"op\": \"{name}\", \"children\": [{}]{}}}",
+                    parts.join(", "),
+                    t.json()
+                )
+            }
+            CsgInput::Op(_, _, t) => format!("{{\"box\": {{\"size\": 1}}{}}}", t.json()),
+            CsgInput::Leaf(kind, size, seg, t) => {
+                let s = |i: usize| 0.25 + f64::from(size[i]) / 64.0;
+                let n = 3 + u32::from(seg % 14);
+                let shape = match kind % 4 {
+                    0 => format!(
+                        "\"box\": {{\"size\": [{}, {}, {}], \"center\": {}}}",
+                        s(0),
+                        s(1),
+                        s(2),
+                        seg % 2 == 0
+                    ),
+                    1 => format!("\"sphere\": {{\"radius\": {}, \"segments\": {}}}", s(0), n.max(4)),
+                    2 => format!(
+                        "\"cylinder\": {{\"radius\": {}, \"height\": {}, \"segments\": {}, \"center\": true}}",
+                        s(0),
+                        s(1),
+                        n
+                    ),
+                    _ => format!(
+                        "\"torus\": {{\"radius\": {}, \"tube\": {}, \"segments\": [{}, {}]}}",
+                        s(0) + s(1),
+                        s(1) / 2.0,
+                        n,
+                        3 + u32::from(size[2] % 6)
+                    ),
+                };
+                format!("{{{shape}{}}}", t.json())
+            }
+        }
+    }
+}
+
+impl fmt::Debug for CsgInput {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        write!(f, "{}", self.json(3))
+    }
+}
