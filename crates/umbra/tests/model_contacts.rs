@@ -1,7 +1,8 @@
 //! Contacts gathered by a CSG evaluation ([`CsgOptions::contacts`]) and
 //! smoothing near them: on the shipped examples, the demo scene, trees
-//! under rotated, non-uniformly scaled and translated nodes, and random
-//! trees of primitives, smoothing the result near the gathered contacts
+//! under rotated, non-uniformly scaled and translated nodes, a chain over
+//! PyVista's nut and sphere as file leaves, and random trees of
+//! primitives, smoothing the result near the gathered contacts
 //! (what `umbra csg` and `umbra demo` run) gives the same mesh (up to the
 //! order of facets and vertices) and the same counts as smoothing it
 //! whole, at the default tolerance and at a coarse one that makes
@@ -130,6 +131,27 @@ fn contacts_travel_through_transforms() {
     near_equals_whole(&tree, None, "transformed");
     let coarse = 5e-3 * extent(&tree);
     let moved = near_equals_whole(&tree, Some(coarse), "transformed, coarse");
+    assert!(moved > 0, "the coarse tolerance should make smoothing work");
+}
+
+/// Real meshes nobody here made as file leaves (PyVista's threaded nut
+/// and sphere): a chain of Booleans under transforms, near against whole.
+#[test]
+fn file_leaves_of_real_meshes_smooth_near_contacts_as_whole() {
+    let nut = test_support::data_path("pyvista/nut.ply");
+    let sphere = test_support::data_path("pyvista/sphere.ply");
+    let text = format!(
+        r#"{{"op": "difference", "rotate": [5, 10, 15], "children": [
+          {{"op": "union", "children": [
+            {{"file": {nut:?}}},
+            {{"file": {nut:?}, "rotate": [0, 0, 17], "translate": [0.05, -0.03, 0.1]}}]}},
+          {{"file": {sphere:?}, "scale": [0.4, 0.4, 2.0]}},
+          {{"box": {{"size": [0.3, 0.3, 0.3], "center": true}}, "translate": [0.35, 0, 0]}}]}}"#
+    );
+    let tree = parse_csg(&text).unwrap();
+    near_equals_whole(&tree, None, "nut chain");
+    let coarse = 2e-3 * extent(&tree);
+    let moved = near_equals_whole(&tree, Some(coarse), "nut chain, coarse");
     assert!(moved > 0, "the coarse tolerance should make smoothing work");
 }
 
