@@ -6,7 +6,7 @@
 //! keeps facet and shape boundary closure (section 4.2).
 
 use crate::mesh::geom::{dot, lerp, point_segment};
-use crate::mesh::index::{grown_box, BoxIndex, IdBox};
+use crate::mesh::index::{grown_box, opposed_pairs_where, IdBox};
 use crate::mesh::plane::{best_fit_plane, facet_normal, Plane};
 use crate::mesh::structure::Work;
 use crate::SmoothCounts;
@@ -389,7 +389,9 @@ pub(crate) fn facet_cancellation_pass(
         .collect();
     let pos = &w.pos;
     let facets = &w.facets;
-    let mut pairs: Vec<(usize, usize, bool)> = BoxIndex::new(boxes).pairs_where(|i, j| {
+    // Only facets facing opposite ways can cancel: the pairs come by
+    // normal direction, not from every pair of meeting boxes.
+    let filter = |i: u32, j: u32| {
         let (i, j) = (i as usize, j as usize);
         match (normals[i], normals[j]) {
             (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => {
@@ -406,7 +408,8 @@ pub(crate) fn facet_cancellation_pass(
             }
             _ => None,
         }
-    });
+    };
+    let mut pairs: Vec<(usize, usize, bool)> = opposed_pairs_where(&boxes, &normals, filter);
     pairs.sort_unstable();
     let mut touched = vec![false; w.facets.len()];
     let mut changed = 0;

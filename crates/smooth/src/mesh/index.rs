@@ -5,7 +5,10 @@
 //! edge-near-edge and facet-pair candidates are found without testing all
 //! pairs. A grid would not do: one long edge would cover many cells. (An
 //! R*-tree crate was measured here first: its bulk loading alone took
-//! longer than the Boolean the smoothing follows.)
+//! longer than the Boolean the smoothing follows.) Long edges are joined
+//! by pieces ([`near_segment_pairs_where`]) and facets by opposed normal
+//! directions ([`opposed_pairs_where`]), so that long triangles side by
+//! side in a plane, whose boxes overlap in bulk, do not pair up.
 
 use rayon::prelude::*;
 use topology::Point3;
@@ -14,6 +17,7 @@ use topology::Point3;
 const TASKS: usize = 64;
 
 /// A box with an id.
+#[derive(Clone, Copy)]
 pub(crate) struct IdBox {
     pub lo: Point3,
     pub hi: Point3,
@@ -330,6 +334,165 @@ impl BoxIndex {
     }
 }
 
+/// `f(i, j)` for pairs of ids `i < j` of segments `ends[i]` and `ends[j]`
+/// whose boxes grown by `margin` meet, each pair once, keeping the `Some`
+/// answers in no particular order (the callers sort): every pair of
+/// segments within `margin` of each other is among them, and only pairs
+/// whose grown whole-segment boxes meet (as [`BoxIndex::pairs_where`]
+/// would give them, up to a bound of rounding). A segment longer than
+/// twice the median is covered by pieces about that long (longer when
+/// there would be more than four pieces per segment), each boxed and grown
+/// (with a bound of the rounding of the split points), so that long
+/// segments side by side in one plane (a slab's long triangles) pair only
+/// where they come close instead of wherever their boxes overlap. Pairs
+/// of unsplit segments are answered in the join; the others, which
+/// several piece pairs may meet, once each after sorting.
+pub(crate) fn near_segment_pairs_where<T: Send>(
+    ends: &[(Point3, Point3)],
+    margin: f64,
+    f: impl Fn(u32, u32) -> Option<T> + Sync,
+) -> Vec<T> {
+    let len = |&(a, b): &(Point3, Point3)| {
+        (0..3)
+            .map(|k| (b[k] - a[k]) * (b[k] - a[k]))
+            .sum::<f64>()
+            .sqrt()
+    };
+    let mut lengths: Vec<f64> = ends.iter().map(len).filter(|l| l.is_finite()).collect();
+    let mut piece = if lengths.is_empty() {
+        0.0
+    } else {
+        let mid = lengths.len() / 2;
+        2.0 * *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
+    };
+    if piece > 0.0 {
+        let count =
+            |piece: f64| -> f64 { lengths.iter().map(|l| (l / piece).ceil().max(1.0)).sum() };
+        let most = 4.0 * ends.len() as f64;
+        while count(piece) > most {
+            piece *= 2.0;
+        }
+    }
+    let mut boxes = Vec::with_capacity(ends.len());
+    let mut owner: Vec<u32> = Vec::with_capacity(ends.len());
+    let mut whole: Vec<bool> = Vec::with_capacity(ends.len());
+    for (i, e) in ends.iter().enumerate() {
+        let l = len(e);
+        let k = if piece > 0.0 && l > piece && l.is_finite() {
+            ((l / piece).ceil() as usize).clamp(1, 256)
+        } else {
+            1
+        };
+        whole.push(k == 1);
+        let (a, b) = *e;
+        if k == 1 {
+            let (lo, hi) = grown_box([a, b], margin);
+            let id = boxes.len() as u32;
+            boxes.push(IdBox { lo, hi, id });
+            owner.push(i as u32);
+            continue;
+        }
+        // `a + (b - a) t` is within a few ulps of the true point; the
+        // slack covers it, so the pieces' boxes cover the segment.
+        let mag = (0..3)
+            .map(|c| a[c].abs().max(b[c].abs()))
+            .fold(0.0, f64::max);
+        let slack = margin + 1e-12 * mag;
+        let at = |t: f64| -> Point3 { std::array::from_fn(|c| a[c] + (b[c] - a[c]) * t) };
+        for m in 0..k {
+            let p = if m == 0 { a } else { at(m as f64 / k as f64) };
+            let q = if m + 1 == k {
+                b
+            } else {
+                at((m + 1) as f64 / k as f64)
+            };
+            let (lo, hi) = grown_box([p, q], slack);
+            let id = boxes.len() as u32;
+            boxes.push(IdBox { lo, hi, id });
+            owner.push(i as u32);
+        }
+    }
+    // Answers are few (the pairs that do come close); boxed, they keep
+    // the join's output small, as the split pairs are many.
+    enum Found<T> {
+        Answer(Box<T>),
+        Split(u32, u32),
+    }
+    let found = BoxIndex::new(boxes).pairs_where(|p, q| {
+        let (i, j) = (owner[p as usize], owner[q as usize]);
+        if i == j {
+            return None;
+        }
+        let (i, j) = (i.min(j), i.max(j));
+        if whole[i as usize] && whole[j as usize] {
+            f(i, j).map(|t| Found::Answer(Box::new(t)))
+        } else {
+            Some(Found::Split(i, j))
+        }
+    });
+    let mut out = Vec::with_capacity(found.len());
+    let mut split = Vec::new();
+    for x in found {
+        match x {
+            Found::Answer(t) => out.push(*t),
+            Found::Split(i, j) => split.push((i, j)),
+        }
+    }
+    split.par_sort_unstable();
+    split.dedup();
+    out.par_extend(split.par_iter().filter_map(|&(i, j)| f(i, j)));
+    out
+}
+
+/// `f(i, j)` for the pairs of ids `i < j` of boxes that meet and whose
+/// `normals` have opposite signs on some axis, each pair once, keeping
+/// the `Some` answers in no particular order (the callers sort): every
+/// meeting pair whose normals' dot product is negative (one of its terms
+/// is then negative) among them. Per axis, the boxes of normals pointing
+/// one way are queried in an index of those pointing the other way (a
+/// pair opposed on an earlier axis is left to that axis), so that the
+/// many meeting pairs of facets facing the same way (a plane of long
+/// triangles) are never met.
+pub(crate) fn opposed_pairs_where<T: Send>(
+    boxes: &[IdBox],
+    normals: &[Option<Point3>],
+    f: impl Fn(u32, u32) -> Option<T> + Sync,
+) -> Vec<T> {
+    let sign = |id: u32, k: usize| {
+        normals[id as usize].map_or(0, |n| (n[k] > 0.0) as i8 - (n[k] < 0.0) as i8)
+    };
+    let opposed = |i: u32, j: u32, k: usize| sign(i, k) * sign(j, k) < 0;
+    let mut out = Vec::new();
+    for k in 0..3 {
+        let up: Vec<IdBox> = boxes
+            .iter()
+            .filter(|b| sign(b.id, k) > 0)
+            .copied()
+            .collect();
+        let down: Vec<&IdBox> = boxes.iter().filter(|b| sign(b.id, k) < 0).collect();
+        if up.is_empty() || down.is_empty() {
+            continue;
+        }
+        let index = BoxIndex::new(up);
+        let found: Vec<T> = down
+            .par_iter()
+            .flat_map_iter(|b| {
+                let mut hits = Vec::new();
+                index.visit(&b.lo, &b.hi, |id| {
+                    let (i, j) = (id.min(b.id), id.max(b.id));
+                    if (0..k).any(|e| opposed(i, j, e)) {
+                        return; // met on an earlier axis
+                    }
+                    hits.extend(f(i, j));
+                });
+                hits
+            })
+            .collect();
+        out.extend(found);
+    }
+    out
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -386,5 +549,104 @@ mod tests {
             got.sort_unstable();
             assert_eq!(got, want);
         }
+    }
+
+    /// Segments of a slab-like scene: long ones across a plane (fans from
+    /// corners, near-parallel strips) and short ones, some off the plane.
+    fn segments(rng: &mut SplitMix64, n: usize) -> Vec<(Point3, Point3)> {
+        (0..n)
+            .map(|i| {
+                let p: Point3 = [
+                    40.0 * rng.unit(),
+                    25.0 * rng.unit(),
+                    f64::from(i.is_multiple_of(3)),
+                ];
+                // Three in five short: the long ones are split in pieces.
+                let q: Point3 = match i % 5 {
+                    0 => [0.0, 0.0, p[2]],
+                    1 => [40.0 * rng.unit(), 25.0 * rng.unit(), p[2]],
+                    2 => [p[0] + 30.0, p[1] + 1e-3 * rng.unit(), p[2]],
+                    _ => [
+                        p[0] + 0.3 * rng.unit(),
+                        p[1] + 0.3 * rng.unit(),
+                        p[2] + 0.1 * rng.unit(),
+                    ],
+                };
+                (p, q)
+            })
+            .collect()
+    }
+
+    /// Near-segment pairs: every pair whose segments come within the
+    /// margin (brute force over all pairs, by the closest points) is
+    /// answered, once, and only pairs whose grown whole boxes meet.
+    #[test]
+    fn near_segment_pairs_hold_every_close_pair_once() {
+        use crate::mesh::geom::{dist2, segment_segment};
+        let mut rng = SplitMix64::new(11);
+        for (n, margin) in [(0usize, 0.1), (2, 0.1), (60, 0.05), (400, 0.02), (400, 0.5)] {
+            let segs = segments(&mut rng, n);
+            let mut got = near_segment_pairs_where(&segs, margin, |i, j| Some((i, j)));
+            got.sort_unstable();
+            let mut unique = got.clone();
+            unique.dedup();
+            assert_eq!(got, unique, "a pair answered twice");
+            for i in 0..n {
+                for j in i + 1..n {
+                    let (a, b) = segs[i];
+                    let (c, d) = segs[j];
+                    let close = {
+                        let (_, _, p, q) = segment_segment(a, b, c, d);
+                        dist2(p, q) <= margin * margin
+                    };
+                    let (alo, ahi) = grown_box([a, b], margin);
+                    let (blo, bhi) = grown_box([c, d], margin);
+                    let boxes_meet = meets(&alo, &ahi, &blo, &bhi);
+                    let found = got.binary_search(&(i as u32, j as u32)).is_ok();
+                    assert!(!close || found, "close pair {i} {j} missed");
+                    assert!(!found || boxes_meet, "pair {i} {j} beyond the boxes");
+                }
+            }
+        }
+    }
+
+    /// Opposed pairs: exactly the meeting pairs with normals of opposite
+    /// signs on some axis, each once.
+    #[test]
+    fn opposed_pairs_are_the_meeting_opposed_pairs() {
+        let mut rng = SplitMix64::new(13);
+        let n = 300;
+        let mut normals = Vec::new();
+        let mut boxes = Vec::new();
+        for i in 0..n {
+            let lo: Point3 = std::array::from_fn(|_| rng.unit());
+            let hi: Point3 = std::array::from_fn(|k| lo[k] + 0.3 * rng.unit());
+            boxes.push(IdBox {
+                lo,
+                hi,
+                id: i as u32,
+            });
+            // Axis-aligned normals (zeros on two axes), general ones, none.
+            normals.push(match i % 5 {
+                0 => None,
+                1 => Some([0.0, 0.0, if rng.unit() < 0.5 { 1.0 } else { -1.0 }]),
+                _ => Some(std::array::from_fn(|_| rng.unit() - 0.5)),
+            });
+        }
+        let mut got = opposed_pairs_where(&boxes, &normals, |i, j| Some((i, j)));
+        got.sort_unstable();
+        let mut want = Vec::new();
+        for i in 0..n {
+            for j in i + 1..n {
+                let opposed = match (normals[i], normals[j]) {
+                    (Some(a), Some(b)) => (0..3).any(|k| a[k] * b[k] < 0.0),
+                    _ => false,
+                };
+                if opposed && meets(&boxes[i].lo, &boxes[i].hi, &boxes[j].lo, &boxes[j].hi) {
+                    want.push((i as u32, j as u32));
+                }
+            }
+        }
+        assert_eq!(got, want);
     }
 }
