@@ -297,19 +297,7 @@ fn features3(case: &CaseM) -> Outcome {
 }
 
 fn area3(m: &PolygonMesh) -> f64 {
-    let t = topology::triangulate_mesh(m);
-    t.triangles
-        .iter()
-        .map(|tr| {
-            let [a, b, c] = tr.map(|i| t.vertices[i as usize]);
-            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-            0.5 * ((u[1] * v[2] - u[2] * v[1]).powi(2)
-                + (u[2] * v[0] - u[0] * v[2]).powi(2)
-                + (u[0] * v[1] - u[1] * v[0]).powi(2))
-            .sqrt()
-        })
-        .sum()
+    test_support::measure::triangle_mesh_area(&topology::triangulate_mesh(m))
 }
 
 /// How far smoothing may have moved the boundary, as the algorithm notes

@@ -1,6 +1,6 @@
 //! Floating-point measures of shapes for test oracles: the signed volume of
-//! a polygon mesh, the generalized winding number of a triangle soup and
-//! point-to-mesh distances. They are independent of the Boolean's own
+//! a polygon mesh, the area of a triangle mesh, the generalized winding
+//! number of a triangle soup and point-to-mesh distances. They are independent of the Boolean's own
 //! predicates; the exact oracles are in [`crate::exact`].
 
 use topology::{PolygonMesh, TriangleMesh};
@@ -22,6 +22,26 @@ pub fn polygon_mesh_volume(m: &PolygonMesh) -> f64 {
         }
     }
     six / 6.0
+}
+
+/// The surface area of a triangle mesh: half the length of each
+/// triangle's cross product, summed (of a polygon mesh: triangulate it
+/// first, by internal edges).
+pub fn triangle_mesh_area(m: &TriangleMesh) -> f64 {
+    m.triangles
+        .iter()
+        .map(|tr| {
+            let [a, b, c] = tr.map(|i| m.vertices[i as usize]);
+            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
+            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
+            let n = [
+                u[1] * v[2] - u[2] * v[1],
+                u[2] * v[0] - u[0] * v[2],
+                u[0] * v[1] - u[1] * v[0],
+            ];
+            0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
+        })
+        .sum()
 }
 
 /// The generalized winding number of a closed triangle soup at `q`: the sum

@@ -14,31 +14,11 @@ use std::path::{Path, PathBuf};
 use std::time::Instant;
 use umbra::{
     check_mesh, default_mesh_tolerance, demo_plant, evaluate_csg, read_csg_file, smooth_solid,
-    triangulate_mesh, CsgNode, CsgOptions, DemoDetail, MeshVariant, PolygonMesh, SmoothOptions,
+    triangulate_mesh, CsgNode, CsgOptions, DemoDetail, MeshVariant, SmoothOptions,
 };
 
 fn examples() -> PathBuf {
     Path::new(env!("CARGO_MANIFEST_DIR")).join("../../examples")
-}
-
-/// The surface area of a closed mesh (its facets triangulated by
-/// internal edges).
-fn surface_area(m: &PolygonMesh) -> f64 {
-    let t = triangulate_mesh(m);
-    t.triangles
-        .iter()
-        .map(|tr| {
-            let [a, b, c] = tr.map(|i| t.vertices[i as usize]);
-            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-            let n = [
-                u[1] * v[2] - u[2] * v[1],
-                u[2] * v[0] - u[0] * v[2],
-                u[0] * v[1] - u[1] * v[0],
-            ];
-            0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
-        })
-        .sum()
 }
 
 /// Evaluates `tree` in both variants, smooths each at the default
@@ -101,7 +81,7 @@ fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
         }
         // The volume moves by at most (surface area x tolerance).
         let (v0, v) = (raw.signed_volume.unwrap(), r.signed_volume.unwrap());
-        let bound = surface_area(&out.mesh) * tol;
+        let bound = test_support::measure::triangle_mesh_area(&triangulate_mesh(&out.mesh)) * tol;
         assert!(
             (v - v0).abs() <= bound,
             "{what} ({triangulate}): volume {v0} -> {v}, bound {bound}"

@@ -257,25 +257,6 @@ fn random_tree(rng: &mut Xorshift64Star, depth: u32) -> String {
     )
 }
 
-/// The surface area of a mesh (its facets triangulated by internal edges).
-fn surface_area(m: &umbra::PolygonMesh) -> f64 {
-    let t = umbra::triangulate_mesh(m);
-    t.triangles
-        .iter()
-        .map(|tr| {
-            let [a, b, c] = tr.map(|i| t.vertices[i as usize]);
-            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-            let n = [
-                u[1] * v[2] - u[2] * v[1],
-                u[2] * v[0] - u[0] * v[2],
-                u[0] * v[1] - u[1] * v[0],
-            ];
-            0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
-        })
-        .sum()
-}
-
 /// Random trees (fixed seeds; `UMBRA_PROPTEST_SCALE` runs more): at the
 /// default tolerance, near equals whole in both variants; at a coarse
 /// tolerance it does in the polygon variant, while in the triangle
@@ -331,7 +312,9 @@ fn random_trees_smooth_near_contacts_as_whole() {
                 assert!(same, "{what}");
             } else if !same {
                 let bound = (near.report.distortion_bound + whole.report.distortion_bound)
-                    * surface_area(&out.mesh);
+                    * test_support::measure::triangle_mesh_area(&umbra::triangulate_mesh(
+                        &out.mesh,
+                    ));
                 let gap = (umbra::mesh_signed_volume(&near.shape)
                     - umbra::mesh_signed_volume(&whole.shape))
                 .abs();

@@ -46,31 +46,6 @@ fn moved(m: &PolygonMesh, deg: f64, shift: [f64; 3]) -> PolygonMesh {
     PolygonMesh::new(vertices, m.facets.clone())
 }
 
-fn surface_area(m: &PolygonMesh) -> f64 {
-    let tri = topology_free_triangles(m);
-    tri.iter()
-        .map(|[a, b, c]| {
-            let u = [b[0] - a[0], b[1] - a[1], b[2] - a[2]];
-            let v = [c[0] - a[0], c[1] - a[1], c[2] - a[2]];
-            let n = [
-                u[1] * v[2] - u[2] * v[1],
-                u[2] * v[0] - u[0] * v[2],
-                u[0] * v[1] - u[1] * v[0],
-            ];
-            0.5 * (n[0] * n[0] + n[1] * n[1] + n[2] * n[2]).sqrt()
-        })
-        .sum()
-}
-
-/// The triangles of a triangulation by internal edges, as positions.
-fn topology_free_triangles(m: &PolygonMesh) -> Vec<[[f64; 3]; 3]> {
-    let t = umbra::triangulate_mesh(m);
-    t.triangles
-        .iter()
-        .map(|tr| tr.map(|i| t.vertices[i as usize]))
-        .collect()
-}
-
 /// The intersecting facet pairs of `m` that do NOT share two vertices.
 ///
 /// In the polygon variant a pair sharing two vertices can remain after
@@ -128,7 +103,10 @@ fn combine_and_smooth(
     }
     let check = check_mesh(s);
     let dv = (check.signed_volume.unwrap() - raw_check.signed_volume.unwrap()).abs();
-    let bound = surface_area(&raw) * out.report.distortion_bound.max(tol) * 1.0001 + 1e-9;
+    let bound = test_support::measure::triangle_mesh_area(&umbra::triangulate_mesh(&raw))
+        * out.report.distortion_bound.max(tol)
+        * 1.0001
+        + 1e-9;
     assert!(dv <= bound, "volume moved {dv} > {bound}");
     assert!(out.report.max_displacement <= out.report.distortion_bound);
     // Smoothing the smoothed result again (`umbra smooth` of a smoothed
