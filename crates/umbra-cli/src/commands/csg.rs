@@ -84,10 +84,18 @@ impl CsgArgs {
         self.out.write(&bytes, &result.report)?;
         if !self.quiet {
             let r = &result.report;
-            let smoothing = r
-                .smoothing
-                .as_ref()
-                .map_or(String::new(), |s| format!("; {}", super::smooth::summary(s)));
+            let near = if r.smoothed_near_contacts == Some(true) {
+                " near the contacts"
+            } else {
+                ""
+            };
+            let smoothing = r.smoothing.as_ref().map_or(String::new(), |s| {
+                format!("; {}", super::smooth::summary(s)).replacen(
+                    "smoothed at",
+                    &format!("smoothed{near} at"),
+                    1,
+                )
+            });
             outln!(
                 "{file}: {} Booleans ({} variant) in {:.1} ms{smoothing}; {} vertices, {} facets; {}; volume {}",
                 r.booleans,
