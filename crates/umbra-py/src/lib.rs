@@ -38,16 +38,35 @@ pub(crate) fn error(message: impl Into<String>) -> PyErr {
     UmbraError::new_err(message.into())
 }
 
-/// Runs `work` with the GIL released and any panic caught: the result, or
-/// an `UmbraError` (the work's own error as its one-line message, a panic
-/// as an internal error).
+thread_local! {
+    /// This Python thread's own rayon pool, as many threads as the global
+    /// one (`RAYON_NUM_THREADS` or the cores), made at its first call: the
+    /// calls of different Python threads never queue for one pool, so with
+    /// `RAYON_NUM_THREADS=1` two threads run two Booleans on two cores (on
+    /// the shared global pool of one worker they ran one after the other).
+    static POOL: Option<rayon::ThreadPool> = rayon::ThreadPoolBuilder::new()
+        .num_threads(rayon::current_num_threads())
+        .build()
+        .ok();
+}
+
+/// Runs `work` with the GIL released, on the calling thread's pool
+/// ([`POOL`]), and any panic caught: the result, or an `UmbraError` (the
+/// work's own error as its one-line message, a panic as an internal error).
 pub(crate) fn run<T, E, F>(py: Python<'_>, work: F) -> PyResult<T>
 where
     F: FnOnce() -> Result<T, E> + Send,
     T: Send,
     E: std::fmt::Display + Send,
 {
-    let outcome = py.detach(move || match catch_unwind(AssertUnwindSafe(work)) {
+    let caught = move || catch_unwind(AssertUnwindSafe(work));
+    let on_pool = move || {
+        POOL.with(|pool| match pool {
+            Some(pool) => pool.install(caught),
+            None => caught(),
+        })
+    };
+    let outcome = py.detach(move || match on_pool() {
         Ok(Ok(value)) => Ok(value),
         Ok(Err(e)) => Err(e.to_string()),
         Err(panic) => {
