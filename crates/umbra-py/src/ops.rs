@@ -8,8 +8,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyDict;
 use umbra::{
     as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, default_mesh_tolerance,
-    evaluate_csg, parse_csg, smooth_solid, smooth_solid_near, union_all_solids, BooleanOp,
-    CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError, UmbraError,
+    evaluate_csg, parse_csg, smooth_csg_result, smooth_solid, smooth_solid_near, union_all_solids,
+    BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError, UmbraError,
 };
 
 /// The operation named `op`: every name of the facade (`union`,
@@ -218,17 +218,9 @@ pub fn csg<'py>(
         };
         // As the command line does: near the gathered contacts when they
         // reach the tolerance, else the whole mesh.
-        let variant = variant(triangulate);
-        match result
-            .contacts
-            .as_ref()
-            .filter(|c| c.proximity >= opts.tolerance)
-        {
-            Some(c) => smooth_solid_near(&result.mesh, variant, &opts, c),
-            None => smooth_solid(&result.mesh, variant, &opts),
-        }
-        .map(|out| out.shape)
-        .map_err(smooth_error)
+        smooth_csg_result(&result, variant(triangulate), &opts)
+            .map(|(out, _)| out.shape)
+            .map_err(smooth_error)
     })?;
     Mesh::wrap(py, out)
 }

@@ -5,6 +5,7 @@
 //! no Boolean of this crate smooths on its own.
 
 use crate::ops::{as_triangle_mesh, MeshVariant};
+use crate::CsgResult;
 use boolean_3d::Contacts;
 use smooth::{
     smooth_mesh, smooth_mesh_near, smooth_triangles, smooth_triangles_near, SmoothError,
@@ -27,7 +28,7 @@ pub const DEFAULT_RELATIVE_TOLERANCE: f64 = 1e-9;
 
 /// The largest side of a bounding box, 0 when there is none or it is not
 /// finite.
-fn extent<const N: usize>(bb: Option<[[f64; N]; 2]>) -> f64 {
+pub(crate) fn extent<const N: usize>(bb: Option<[[f64; N]; 2]>) -> f64 {
     let e = bb.map_or(0.0, |[lo, hi]| {
         (0..N).map(|k| hi[k] - lo[k]).fold(0.0, f64::max)
     });
@@ -111,5 +112,25 @@ pub fn smooth_solid_near(
         }
         (MeshVariant::PolygonMesh, _) => smooth_mesh_near(mesh, options, &contacts.boxes),
         (MeshVariant::TriangleMesh, None) => smooth_solid(mesh, variant, options),
+    }
+}
+
+/// Smooths a CSG result ([`crate::evaluate_csg`] with
+/// [`crate::CsgOptions::contacts`]) in its variant, as `umbra csg` does:
+/// near the gathered contacts ([`smooth_solid_near`]) when their proximity
+/// reaches the tolerance, else the whole mesh ([`smooth_solid`]). Returns
+/// the smoothed mesh and whether it looked near the contacts only.
+pub fn smooth_csg_result(
+    result: &CsgResult,
+    variant: MeshVariant,
+    options: &SmoothOptions,
+) -> Result<(Smoothed<PolygonMesh>, bool), SmoothError> {
+    let near = result
+        .contacts
+        .as_ref()
+        .filter(|c| c.proximity >= options.tolerance);
+    match near {
+        Some(c) => smooth_solid_near(&result.mesh, variant, options, c).map(|s| (s, true)),
+        None => smooth_solid(&result.mesh, variant, options).map(|s| (s, false)),
     }
 }

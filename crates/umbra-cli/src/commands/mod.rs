@@ -88,18 +88,14 @@ pub fn smooth_result(
     };
     let start = std::time::Instant::now();
     let options = umbra::SmoothOptions::new(tol);
-    let near = result.contacts.as_ref().filter(|c| c.proximity >= tol);
-    let smoothed = match near {
-        Some(c) => umbra::smooth_solid_near(&result.mesh, variant, &options, c),
-        None => umbra::smooth_solid(&result.mesh, variant, &options),
-    }
-    .map_err(|source| umbra::UmbraError::Smooth {
-        file: String::new(),
-        source,
-    })?;
-    let report = result
-        .report
-        .smoothed(&smoothed, millis_since(start), near.is_some());
+    let (smoothed, near) =
+        umbra::smooth_csg_result(&result, variant, &options).map_err(|source| {
+            umbra::UmbraError::Smooth {
+                file: String::new(),
+                source,
+            }
+        })?;
+    let report = result.report.smoothed(&smoothed, millis_since(start), near);
     Ok(umbra::CsgResult {
         mesh: smoothed.shape,
         report,

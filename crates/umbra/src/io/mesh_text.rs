@@ -128,9 +128,9 @@ pub(crate) fn parse_obj_with_origins(
         let line_no = i + 1;
         let line = raw.split('#').next().unwrap_or("");
         let mut tokens = line.split_whitespace();
-        let first = tokens.clone().next();
+        let first = tokens.next();
         saw_obj |= raw.trim_start().starts_with('#') || first.is_some_and(is_obj_statement);
-        match tokens.next() {
+        match first {
             Some("v") => {
                 let mut p = [0.0; 3];
                 for slot in &mut p {

@@ -225,19 +225,10 @@ impl Part {
 
     /// The largest extent of the solid's bounding box (0 when empty).
     fn extent(&self) -> f64 {
-        let v = match &self.solid {
-            Solid::Poly(m) => &m.vertices,
-            Solid::Tri(m) => &m.vertices,
-        };
-        let mut lo = [f64::INFINITY; 3];
-        let mut hi = [f64::NEG_INFINITY; 3];
-        for p in v {
-            for c in 0..3 {
-                lo[c] = lo[c].min(p[c]);
-                hi[c] = hi[c].max(p[c]);
-            }
-        }
-        (0..3).map(|c| hi[c] - lo[c]).fold(0.0, f64::max)
+        crate::smoothing::extent(match &self.solid {
+            Solid::Poly(m) => m.bounding_box(),
+            Solid::Tri(m) => m.bounding_box(),
+        })
     }
 }
 
