@@ -43,7 +43,7 @@ def test_boolean_results_round_trip(tmp_path, ext):
     assert back.check()["two_manifold"]
 
 
-@pytest.mark.parametrize("ext", MESH_EXACT + ["stl"])
+@pytest.mark.parametrize("ext", MESH_EXACT + ["stl", "glb"])
 @pytest.mark.parametrize("ascii", [False, True])
 def test_an_empty_result_round_trips(tmp_path, ext, ascii):
     # Disjoint cubes intersect in the empty solid, which every readable
@@ -56,7 +56,35 @@ def test_an_empty_result_round_trips(tmp_path, ext, ascii):
     assert back.is_valid() and back.volume() == 0.0 and len(back.faces) == 0
 
 
-@pytest.mark.parametrize("ext", ["3mf", "glb"])
+def test_glb_round_trips_and_reads_trimesh_scenes(tmp_path):
+    # Umbra's own file: the cube's f32 coordinates come back exactly.
+    path = tmp_path / "cube.glb"
+    umbra.write(cube(), path)
+    back = umbra.read(path)
+    assert back.is_valid() and back.volume() == cube().volume()
+    # trimesh's exporter: a scene of two translated boxes and a mirrored
+    # icosphere (determinant -1), vertices split per triangle.
+    trimesh = pytest.importorskip("trimesh")
+    import numpy as np
+
+    scene = trimesh.Scene()
+    box = trimesh.creation.box(extents=(1.0, 2.0, 3.0))
+    sphere = trimesh.creation.icosphere(subdivisions=2, radius=0.75)
+    sphere.unmerge_vertices()
+    scene.add_geometry(box, node_name="a", transform=trimesh.transformations.translation_matrix([4.0, 0, 0]))
+    scene.add_geometry(box, node_name="b", transform=trimesh.transformations.translation_matrix([-4.0, 0, 0]))
+    mirror = trimesh.transformations.rotation_matrix(0.3, [1, 1, 0]) @ np.diag([1.0, -1.0, 1.0, 1.0])
+    scene.add_geometry(sphere, node_name="s", transform=mirror)
+    path = tmp_path / "scene.glb"
+    scene.export(path)
+    m = umbra.read(path)
+    want = scene.to_geometry()
+    assert m.is_valid() and len(m.faces) == len(want.faces)
+    assert abs(m.volume() - want.volume) < 1e-5 * want.volume
+    assert m.volume() > 2 * 6.0
+
+
+@pytest.mark.parametrize("ext", ["3mf"])
 def test_write_only_mesh_formats(tmp_path, ext):
     path = tmp_path / f"cube.{ext}"
     umbra.write(cube(), path)

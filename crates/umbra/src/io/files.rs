@@ -2,10 +2,11 @@
 //! points (the command-line tool goes through these). The extension decides
 //! the format and the dimension: `.wkt` and `.geojson` are 2D polygon sets
 //! (read and written), `.svg` is a 2D picture (written only); `.obj`,
-//! `.off`, `.stl` and `.ply` are 3D meshes (read and written), `.3mf` and
-//! `.glb` are 3D meshes written only.
+//! `.off`, `.stl`, `.ply` and `.glb` are 3D meshes (read and written),
+//! `.3mf` is a 3D mesh written only.
 
 use super::geojson::read_geojson_file;
+use super::glb_read::read_glb_bytes;
 use super::mesh_text::{read_mesh_text, MeshReadOptions};
 use super::ply::read_ply_bytes;
 use super::stl::read_stl_bytes;
@@ -36,11 +37,12 @@ pub enum FileKind {
     Ply,
     /// 3D Manufacturing Format (`.3mf`): 3D triangle meshes, written only.
     ThreeMf,
-    /// Binary glTF 2.0 (`.glb`): 3D triangle meshes, written only.
+    /// Binary glTF 2.0 (`.glb`): 3D triangle meshes, read (the scene's
+    /// mesh instances, welded) and written.
     Glb,
 }
 
-const SUPPORTED: &str = "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply (3D), .3mf .glb (3D, write only)";
+const SUPPORTED: &str = "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .glb (3D), .3mf (3D, write only)";
 
 impl FileKind {
     /// Every kind, in the order of the list of supported extensions.
@@ -65,7 +67,8 @@ impl FileKind {
     /// use umbra::FileKind;
     /// assert_eq!(FileKind::from_path(Path::new("shape.WKT")).unwrap(), FileKind::Wkt);
     /// assert!(FileKind::from_path(Path::new("part.stl")).unwrap().is_mesh());
-    /// assert!(!FileKind::from_path(Path::new("part.glb")).unwrap().can_read());
+    /// assert!(FileKind::from_path(Path::new("part.glb")).unwrap().can_read());
+    /// assert!(!FileKind::from_path(Path::new("part.3mf")).unwrap().can_read());
     /// let e = FileKind::from_path(Path::new("shape.txt")).unwrap_err().to_string();
     /// assert!(e.contains(".3mf"), "{e}");
     /// let e = FileKind::from_path(Path::new("shape.png")).unwrap_err().to_string();
@@ -136,10 +139,10 @@ impl FileKind {
         )
     }
 
-    /// `true` if files of this kind can be read (all but `.svg`, `.3mf`
-    /// and `.glb`).
+    /// `true` if files of this kind can be read (all but `.svg` and
+    /// `.3mf`).
     pub fn can_read(self) -> bool {
-        !matches!(self, FileKind::Svg | FileKind::ThreeMf | FileKind::Glb)
+        !matches!(self, FileKind::Svg | FileKind::ThreeMf)
     }
 }
 
@@ -202,13 +205,13 @@ pub fn write_polygon_set(
     Ok(encoded.orphan_holes)
 }
 
-/// Reads a 3D polygon mesh from an OBJ, OFF, STL or PLY file (by
-/// extension): coordinates validated if `options` asks, and the closure
+/// Reads a 3D polygon mesh from an OBJ, OFF, STL, PLY or binary glTF file
+/// (by extension): coordinates validated if `options` asks, and the closure
 /// constraints of section 4.2 checked when `check` is `true` (the first
 /// violation is returned as [`UmbraError::InvalidMesh`] naming the file,
 /// the face or vertex with its line or record, and for an open edge the
-/// positions of its two vertices). STL triangles are welded by exact
-/// position (see [`crate::parse_stl`]).
+/// positions of its two vertices). STL and glTF triangles are welded by
+/// exact position (see [`crate::parse_stl`] and [`crate::parse_glb`]).
 pub fn read_mesh(
     path: &Path,
     options: MeshReadOptions,
@@ -226,6 +229,7 @@ pub fn read_mesh(
     match kind {
         FileKind::Stl => read_stl_bytes(&bytes, &file, options, check),
         FileKind::Ply => read_ply_bytes(&bytes, &file, options, check),
+        FileKind::Glb => read_glb_bytes(&bytes, &file, options, check),
         _ => {
             let text = decode(&bytes, &file, kind.name())?;
             read_mesh_text(text, &file, kind == FileKind::Off, options, check)

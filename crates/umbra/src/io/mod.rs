@@ -1,6 +1,6 @@
 //! File input and output (feature `io`): 2D polygon sets as WKT and
-//! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL and
-//! PLY (read and write), 3MF and binary glTF (write); `geo-types`
+//! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL, PLY
+//! and binary glTF (read and write), 3MF (write); `geo-types`
 //! conversions; and the dispatch by file extension ([`FileKind`]). Every
 //! reader names the file, the line or record, and the problem in its
 //! error; a reader never panics, and no count in a file makes it reserve
@@ -10,6 +10,7 @@ mod files;
 mod geo;
 mod geojson;
 mod glb;
+mod glb_read;
 mod mesh_text;
 mod origin;
 mod ply;
@@ -18,6 +19,7 @@ mod stl;
 mod svg;
 mod text;
 mod threemf;
+mod weld;
 mod wkt;
 mod wkt_diagnose;
 
@@ -32,6 +34,7 @@ pub use geojson::{
     write_geojson_file, write_geojson_string,
 };
 pub use glb::mesh_to_glb;
+pub use glb_read::parse_glb;
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
 pub use ply::{mesh_to_ply, parse_ply};
 pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};

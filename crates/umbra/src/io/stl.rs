@@ -32,9 +32,9 @@
 use super::mesh_text::MeshReadOptions;
 use super::origin::{finish, Origins};
 use super::text::{parse_number, push_f64, shorten, strip_bom};
+use super::weld::Welder;
 use crate::UmbraError;
 use robust_arith::Point3;
-use std::collections::HashMap;
 use topology::{PolygonMesh, TriangleMesh};
 
 const FORMAT: &str = "STL";
@@ -48,48 +48,6 @@ fn malformed(file: &str, message: impl Into<String>) -> UmbraError {
         file: file.to_string(),
         format: FORMAT,
         message: message.into(),
-    }
-}
-
-/// Welds triangle corners by exact position (see the module docs).
-struct Welder {
-    index: HashMap<[u64; 3], u32>,
-    vertices: Vec<Point3>,
-    triangles: Vec<[u32; 3]>,
-    origins: Origins,
-}
-
-impl Welder {
-    fn new(capacity: usize, place_word: &'static str) -> Self {
-        Welder {
-            index: HashMap::with_capacity(capacity),
-            vertices: Vec::with_capacity(capacity),
-            triangles: Vec::with_capacity(capacity),
-            origins: Origins::new(0, "triangle", place_word),
-        }
-    }
-
-    fn vertex(&mut self, p: Point3, place: u32) -> u32 {
-        // Adding 0.0 turns -0.0 into 0.0 and leaves every other value
-        // (NaN payloads included) as it is.
-        let key = [
-            (p[0] + 0.0).to_bits(),
-            (p[1] + 0.0).to_bits(),
-            (p[2] + 0.0).to_bits(),
-        ];
-        let next = self.vertices.len() as u32;
-        let v = *self.index.entry(key).or_insert(next);
-        if v == next {
-            self.vertices.push(p);
-            self.origins.vertex_places.push(place);
-        }
-        v
-    }
-
-    fn triangle(&mut self, corners: [Point3; 3], place: u32) {
-        let t = corners.map(|p| self.vertex(p, place));
-        self.triangles.push(t);
-        self.origins.face_places.push(place);
     }
 }
 

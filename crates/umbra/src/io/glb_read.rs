@@ -1,0 +1,1059 @@
+//! Binary glTF 2.0 (`.glb`) reading: the triangles of every mesh that the
+//! scene places, through the node hierarchy's transforms, welded by exact
+//! position into one triangle mesh.
+//!
+//! The `gltf` crate splits the binary container and deserializes the JSON
+//! document into its typed structures. Everything after that is done here
+//! on those structures, every index looked up with `get` and every offset
+//! and length checked against the binary chunk with checked arithmetic:
+//! the crate's validation and its `Document` API index the arrays
+//! directly (a POSITION accessor index out of range panics in its
+//! validation hook), and its accessor readers assert on mismatched strides
+//! and types and trust the counts, which a hostile file sets at will.
+//!
+//! - **Which meshes.** The nodes of the default scene (the first scene when
+//!   none is named), depth first; without scenes, every node that is no
+//!   node's child; without nodes, every mesh once, untransformed. A node
+//!   reached twice (the hierarchy must be a forest) is an error, so a cycle
+//!   or a shared child cannot expand the file exponentially; the mesh
+//!   instances together may give at most [`MAX_TRIANGLES`] triangles.
+//! - **Transforms.** Each node's matrix (or translation, rotation and
+//!   scale), composed from the root in `f64`; the identity is not applied,
+//!   so untransformed positions keep their `f32` values exactly. The
+//!   specification makes a negative determinant turn the winding order
+//!   around (section 3.7.2.1 of glTF 2.0: "If the determinant is a positive
+//!   value, the winding order triangle faces is counterclockwise; in the
+//!   opposite case, the winding order is clockwise"), so such an
+//!   instance's triangles are reversed to keep them facing out.
+//! - **Primitives.** Triangle lists, strips and fans (the orders of section
+//!   3.7.2.1), with or without an index accessor; points and lines bound
+//!   no volume and are passed over. Positions must be `VEC3` of `FLOAT`
+//!   (the core specification's only choice); indices `SCALAR` of unsigned
+//!   bytes, shorts or ints, each below the position count. Sparse
+//!   accessors, accessors without a buffer view and buffers outside the
+//!   file (a `uri`) are refused with a message saying so. An extension the
+//!   file *requires* (mesh compression such as Draco or meshopt) is
+//!   refused by name.
+//! - **Welding.** Exporters split vertices at normal and texture seams, so
+//!   the corners are welded by exact position (`weld.rs`), across every
+//!   primitive and instance, as STL corners are. Errors of closure name a
+//!   triangle by its number in reading order and the glTF mesh it belongs
+//!   to.
+//!
+//! A well-formed file that places no triangle is the empty mesh.
+
+use super::mesh_text::MeshReadOptions;
+use super::origin::{finish, Origins};
+use super::weld::Welder;
+use crate::UmbraError;
+use gltf::json::accessor::{ComponentType, Type};
+use gltf::json::mesh::{Mode, Semantic};
+use gltf::json::validation::Checked;
+use gltf::json::Root;
+use robust_arith::Point3;
+use topology::{PolygonMesh, TriangleMesh};
+
+const FORMAT: &str = "glTF";
+
+/// The most triangles the placed mesh instances may give together (about
+/// 33 million): instancing lets a small file place one mesh many times,
+/// and this bounds the memory such a file can claim.
+pub(crate) const MAX_TRIANGLES: usize = 1 << 25;
+
+/// A column-major 4 x 4 matrix, as glTF stores it.
+type Matrix = [[f64; 4]; 4];
+
+const IDENTITY: Matrix = [
+    [1.0, 0.0, 0.0, 0.0],
+    [0.0, 1.0, 0.0, 0.0],
+    [0.0, 0.0, 1.0, 0.0],
+    [0.0, 0.0, 0.0, 1.0],
+];
+
+fn malformed(file: &str, message: impl Into<String>) -> UmbraError {
+    UmbraError::Malformed {
+        file: file.to_string(),
+        format: FORMAT,
+        message: message.into(),
+    }
+}
+
+/// Parses binary glTF bytes into a welded triangle mesh, unchecked (see
+/// the module docs); `file` names the source in errors.
+///
+/// ```
+/// use umbra::{mesh_to_glb, parse_glb, TriangleMesh};
+/// // Coordinates that are `f32` values read back exactly.
+/// let tet = TriangleMesh::new(
+///     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.5]],
+///     vec![[0, 1, 2], [0, 3, 1], [1, 3, 2], [0, 2, 3]],
+/// );
+/// let bytes = mesh_to_glb(&tet.to_polygon_mesh()).unwrap();
+/// let back = parse_glb(&bytes, "tet.glb").unwrap();
+/// assert_eq!(back, tet);
+/// ```
+pub fn parse_glb(bytes: &[u8], file: &str) -> Result<TriangleMesh, UmbraError> {
+    parse_glb_with_origins(bytes, file).map(|(mesh, _)| mesh)
+}
+
+/// Reads binary glTF bytes into a polygon mesh of triangles: welded,
+/// coordinates validated if asked, closure checked if `check` (see
+/// [`crate::read_mesh`]).
+pub(crate) fn read_glb_bytes(
+    bytes: &[u8],
+    file: &str,
+    options: MeshReadOptions,
+    check: bool,
+) -> Result<PolygonMesh, UmbraError> {
+    let (mesh, origins) = parse_glb_with_origins(bytes, file)?;
+    finish(mesh.to_polygon_mesh(), &origins, file, options, check)
+}
+
+/// [`parse_glb`] with the glTF mesh of every triangle.
+fn parse_glb_with_origins(bytes: &[u8], file: &str) -> Result<(TriangleMesh, Origins), UmbraError> {
+    if bytes.iter().all(u8::is_ascii_whitespace) {
+        return Err(UmbraError::Empty {
+            file: file.to_string(),
+        });
+    }
+    let (json, blob) = split_container(bytes, file)?;
+    let root: Root = gltf::json::deserialize::from_slice(json)
+        .map_err(|e| malformed(file, format!("invalid glTF JSON: {e}")))?;
+    if let Some(ext) = root.extensions_required.first() {
+        return Err(malformed(
+            file,
+            format!("the file requires the extension {ext}, which Umbra does not read"),
+        ));
+    }
+    let mut reader = Reader {
+        file,
+        root: &root,
+        blob,
+        welder: Welder::new(0, "mesh"),
+    };
+    let scene = match root.scene {
+        Some(i) => Some(root.scenes.get(i.value()).ok_or_else(|| {
+            malformed(
+                file,
+                format!("the default scene {} does not exist", i.value()),
+            )
+        })?),
+        None => root.scenes.first(),
+    };
+    if let Some(scene) = scene {
+        let roots: Vec<usize> = scene.nodes.iter().map(|n| n.value()).collect();
+        reader.place_nodes(&roots)?;
+    } else if !root.nodes.is_empty() {
+        let mut child = vec![false; root.nodes.len()];
+        for n in &root.nodes {
+            for c in n.children.iter().flatten() {
+                if let Some(flag) = child.get_mut(c.value()) {
+                    *flag = true;
+                }
+            }
+        }
+        let roots: Vec<usize> = (0..child.len()).filter(|&i| !child[i]).collect();
+        reader.place_nodes(&roots)?;
+    } else {
+        for m in 0..root.meshes.len() {
+            reader.place_mesh(m, &IDENTITY)?;
+        }
+    }
+    let Welder {
+        vertices,
+        triangles,
+        origins,
+        ..
+    } = reader.welder;
+    Ok((TriangleMesh::new(vertices, triangles), origins))
+}
+
+/// The JSON document and the binary chunk of the bytes. The container's
+/// header is checked here before the `gltf` crate splits the chunks (its
+/// splitter subtracts the header size from the stated length without a
+/// check): the magic, version 2, and a length that the bytes hold. Bytes
+/// without the magic are a glTF JSON document without a binary chunk.
+fn split_container<'b>(
+    bytes: &'b [u8],
+    file: &str,
+) -> Result<(&'b [u8], Option<&'b [u8]>), UmbraError> {
+    if !bytes.starts_with(b"glTF") {
+        return Ok((bytes, None));
+    }
+    let word = |at: usize| {
+        bytes
+            .get(at..at + 4)
+            .and_then(|w| w.try_into().ok())
+            .map(u32::from_le_bytes)
+    };
+    let (Some(version), Some(length)) = (word(4), word(8)) else {
+        return Err(malformed(file, "truncated binary glTF header"));
+    };
+    if version != 2 {
+        return Err(malformed(
+            file,
+            format!("binary glTF version {version} (only version 2 is read)"),
+        ));
+    }
+    // The 12-byte header and at least one 8-byte chunk header.
+    if (length as usize) < 20 || length as usize > bytes.len() {
+        return Err(malformed(
+            file,
+            format!(
+                "the header gives a length of {length} bytes, but the file holds {}",
+                bytes.len()
+            ),
+        ));
+    }
+    let glb = gltf::binary::Glb::from_slice(bytes)
+        .map_err(|e| malformed(file, format!("invalid binary glTF container: {e}")))?;
+    // Both chunks borrow from `bytes` (the container is parsed in place).
+    let (json, bin) = (glb.json, glb.bin);
+    let in_place = |chunk: &[u8]| -> Option<&'b [u8]> {
+        let start = (chunk.as_ptr() as usize).checked_sub(bytes.as_ptr() as usize)?;
+        bytes.get(start..start.checked_add(chunk.len())?)
+    };
+    let json = in_place(&json).ok_or_else(|| malformed(file, "JSON chunk outside the file"))?;
+    let bin = match bin {
+        Some(b) => {
+            Some(in_place(&b).ok_or_else(|| malformed(file, "binary chunk outside the file"))?)
+        }
+        None => None,
+    };
+    Ok((json, bin))
+}
+
+/// The reading state: the document, the binary chunk and the welded
+/// triangles so far.
+struct Reader<'a> {
+    file: &'a str,
+    root: &'a Root,
+    blob: Option<&'a [u8]>,
+    welder: Welder,
+}
+
+impl Reader<'_> {
+    /// Places the meshes of the trees rooted at `roots`, depth first.
+    fn place_nodes(&mut self, roots: &[usize]) -> Result<(), UmbraError> {
+        let mut seen = vec![false; self.root.nodes.len()];
+        let mut stack: Vec<(usize, Matrix)> = roots.iter().rev().map(|&r| (r, IDENTITY)).collect();
+        while let Some((index, parent)) = stack.pop() {
+            let Some(node) = self.root.nodes.get(index) else {
+                return Err(malformed(self.file, format!("node {index} does not exist")));
+            };
+            match seen.get_mut(index) {
+                Some(s) if !*s => *s = true,
+                _ => {
+                    return Err(malformed(
+                        self.file,
+                        format!(
+                            "node {index} is reached twice: the node hierarchy is not a forest (a cycle or a shared child)"
+                        ),
+                    ))
+                }
+            }
+            let world = compose(&parent, &local_matrix(node));
+            if let Some(mesh) = node.mesh {
+                self.place_mesh(mesh.value(), &world)?;
+            }
+            let children = node.children.iter().flatten().rev();
+            stack.extend(children.map(|c| (c.value(), world)));
+        }
+        Ok(())
+    }
+
+    /// Adds the triangles of every triangle primitive of mesh `index`
+    /// under the transform `m`.
+    fn place_mesh(&mut self, index: usize, m: &Matrix) -> Result<(), UmbraError> {
+        let root = self.root;
+        let Some(mesh) = root.meshes.get(index) else {
+            return Err(malformed(self.file, format!("mesh {index} does not exist")));
+        };
+        let flip = determinant(m) < 0.0;
+        let transform = *m != IDENTITY;
+        for (p, prim) in mesh.primitives.iter().enumerate() {
+            let what = format!("mesh {index} primitive {p}");
+            let mode = match prim.mode {
+                Checked::Valid(mode) => mode,
+                Checked::Invalid => {
+                    return Err(malformed(self.file, format!("{what}: invalid mode")))
+                }
+            };
+            if !matches!(
+                mode,
+                Mode::Triangles | Mode::TriangleStrip | Mode::TriangleFan
+            ) {
+                continue;
+            }
+            let Some(position) = prim.attributes.get(&Checked::Valid(Semantic::Positions)) else {
+                return Err(malformed(
+                    self.file,
+                    format!("{what}: no POSITION attribute"),
+                ));
+            };
+            let positions = self.positions(position.value(), &what)?;
+            let indices = match prim.indices {
+                Some(acc) => self.indices(acc.value(), &what, positions.len())?,
+                None => (0..positions.len() as u32).collect(),
+            };
+            let corners = triangle_corners(mode, &indices);
+            let total = self.welder.triangles.len().saturating_add(corners.len());
+            if total > MAX_TRIANGLES {
+                return Err(malformed(
+                    self.file,
+                    format!(
+                        "the scene places more than {MAX_TRIANGLES} triangles (mesh instances expand the file beyond what is read)"
+                    ),
+                ));
+            }
+            let placed: Vec<Point3> = if transform {
+                positions.iter().map(|p| apply(m, p)).collect()
+            } else {
+                positions
+            };
+            let place = index as u32;
+            for t in corners {
+                let [a, b, c] = t.map(|i| placed.get(i as usize).copied().unwrap_or([0.0; 3]));
+                let corners = if flip { [a, c, b] } else { [a, b, c] };
+                self.welder.triangle(corners, place);
+            }
+        }
+        Ok(())
+    }
+
+    /// The accessor `index`, or an error.
+    fn accessor(&self, index: usize, what: &str) -> Result<&gltf::json::Accessor, UmbraError> {
+        self.root.accessors.get(index).ok_or_else(|| {
+            malformed(
+                self.file,
+                format!("{what}: accessor {index} does not exist"),
+            )
+        })
+    }
+
+    /// The bytes of buffer view `index` of the binary chunk.
+    fn view_bytes(&self, index: usize, what: &str) -> Result<(&[u8], Option<usize>), UmbraError> {
+        let file = self.file;
+        let view = self.root.buffer_views.get(index).ok_or_else(|| {
+            malformed(file, format!("{what}: buffer view {index} does not exist"))
+        })?;
+        let b = view.buffer.value();
+        let buffer = self
+            .root
+            .buffers
+            .get(b)
+            .ok_or_else(|| malformed(file, format!("{what}: buffer {b} does not exist")))?;
+        if let Some(uri) = &buffer.uri {
+            let shown: String = uri.chars().take(40).collect();
+            return Err(malformed(
+                file,
+                format!(
+                    "{what}: buffer {b} is stored outside the binary chunk (uri \"{shown}\"), which Umbra does not read"
+                ),
+            ));
+        }
+        let blob = self
+            .blob
+            .ok_or_else(|| malformed(file, format!("{what}: the file has no binary chunk")))?;
+        let offset = view.byte_offset.map_or(0, |o| o.0);
+        let length = view.byte_length.0;
+        let range = usize::try_from(offset)
+            .ok()
+            .zip(usize::try_from(length).ok())
+            .and_then(|(o, l)| Some(o..o.checked_add(l)?));
+        let bytes = range.and_then(|r| blob.get(r)).ok_or_else(|| {
+            malformed(
+                file,
+                format!(
+                    "{what}: buffer view {index} (bytes {offset}..+{length}) lies beyond the binary chunk of {} bytes",
+                    blob.len()
+                ),
+            )
+        })?;
+        Ok((bytes, view.byte_stride.map(|s| s.0)))
+    }
+
+    /// The `count` elements of `size` bytes of accessor `acc` (number
+    /// `index`), as slices, every bound checked.
+    fn elements(
+        &self,
+        acc: &gltf::json::Accessor,
+        index: usize,
+        size: usize,
+        what: &str,
+    ) -> Result<Vec<&[u8]>, UmbraError> {
+        if acc.sparse.is_some() {
+            return Err(malformed(
+                self.file,
+                format!("{what}: accessor {index} is sparse, which Umbra does not read"),
+            ));
+        }
+        // Without a buffer view the accessor is zeros (meant for sparse
+        // accessors, which are not read): no exporter writes positions or
+        // indices that way, and its count would be the file's word alone.
+        let Some(view) = acc.buffer_view else {
+            return Err(malformed(
+                self.file,
+                format!("{what}: accessor {index} has no buffer view"),
+            ));
+        };
+        let (bytes, stride) = self.view_bytes(view.value(), what)?;
+        let stride = stride.unwrap_or(size).max(size);
+        let count = acc.count.0;
+        let offset = acc.byte_offset.map_or(0, |o| o.0);
+        let span = usize::try_from(count)
+            .ok()
+            .zip(usize::try_from(offset).ok())
+            .and_then(|(count, offset)| {
+                let end = match count.checked_sub(1) {
+                    None => offset,
+                    Some(last) => last
+                        .checked_mul(stride)?
+                        .checked_add(size)?
+                        .checked_add(offset)?,
+                };
+                Some((count, bytes.get(offset..end)?))
+            });
+        let Some((count, data)) = span else {
+            return Err(malformed(
+                self.file,
+                format!(
+                    "{what}: accessor {index} ({count} elements of {size} bytes, stride {stride}, offset {offset}) runs past its buffer view of {} bytes",
+                    bytes.len()
+                ),
+            ));
+        };
+        Ok((0..count)
+            .filter_map(|i| data.get(i * stride..i * stride + size))
+            .collect())
+    }
+
+    /// The positions of accessor `index` (`VEC3` of `FLOAT`), as `f64`.
+    fn positions(&self, index: usize, what: &str) -> Result<Vec<Point3>, UmbraError> {
+        let acc = self.accessor(index, what)?;
+        let kind = (&acc.type_, &acc.component_type);
+        if !matches!(kind, (Checked::Valid(Type::Vec3), Checked::Valid(c)) if c.0 == ComponentType::F32)
+        {
+            return Err(malformed(
+                self.file,
+                format!(
+                    "{what}: POSITION accessor {index} is {}, not VEC3 of FLOAT",
+                    kind_name(&acc.type_, &acc.component_type)
+                ),
+            ));
+        }
+        let f = |b: &[u8], at: usize| {
+            b.get(at..at + 4)
+                .and_then(|w| w.try_into().ok())
+                .map_or(0.0, |w| f64::from(f32::from_le_bytes(w)))
+        };
+        Ok(self
+            .elements(acc, index, 12, what)?
+            .iter()
+            .map(|b| [f(b, 0), f(b, 4), f(b, 8)])
+            .collect())
+    }
+
+    /// The indices of accessor `index` (`SCALAR` of unsigned integers),
+    /// each checked against the `n` positions.
+    fn indices(&self, index: usize, what: &str, n: usize) -> Result<Vec<u32>, UmbraError> {
+        let acc = self.accessor(index, what)?;
+        let size = match (&acc.type_, &acc.component_type) {
+            (Checked::Valid(Type::Scalar), Checked::Valid(c)) => match c.0 {
+                ComponentType::U8 => Some(1),
+                ComponentType::U16 => Some(2),
+                ComponentType::U32 => Some(4),
+                _ => None,
+            },
+            _ => None,
+        };
+        let Some(size) = size else {
+            return Err(malformed(
+                self.file,
+                format!(
+                    "{what}: index accessor {index} is {}, not SCALAR of an unsigned integer",
+                    kind_name(&acc.type_, &acc.component_type)
+                ),
+            ));
+        };
+        let elements = self.elements(acc, index, size, what)?;
+        let mut out = Vec::with_capacity(elements.len());
+        for (k, b) in elements.iter().enumerate() {
+            let i = b
+                .iter()
+                .rev()
+                .fold(0u32, |acc, &byte| (acc << 8) | u32::from(byte));
+            if i as usize >= n {
+                return Err(malformed(
+                    self.file,
+                    format!("{what}: index {k} is {i}, but there are only {n} positions"),
+                ));
+            }
+            out.push(i);
+        }
+        Ok(out)
+    }
+}
+
+/// An accessor's element type for messages (`VEC3 of U16`).
+fn kind_name(t: &Checked<Type>, c: &Checked<gltf::json::accessor::GenericComponentType>) -> String {
+    let t = match t {
+        Checked::Valid(t) => format!("{t:?}").to_ascii_uppercase(),
+        Checked::Invalid => "an invalid type".to_string(),
+    };
+    let c = match c {
+        Checked::Valid(c) => format!("{:?}", c.0),
+        Checked::Invalid => "an invalid component type".to_string(),
+    };
+    format!("{t} of {c}")
+}
+
+/// The triangles of a primitive of mode `mode` over `indices` (section
+/// 3.7.2.1 of glTF 2.0: strips alternate their orientation, fans turn
+/// around the first vertex).
+fn triangle_corners(mode: Mode, indices: &[u32]) -> Vec<[u32; 3]> {
+    match mode {
+        Mode::Triangles => indices
+            .chunks_exact(3)
+            .map(|t| [t[0], t[1], t[2]])
+            .collect(),
+        Mode::TriangleStrip => indices
+            .windows(3)
+            .enumerate()
+            .map(|(i, w)| {
+                if i % 2 == 0 {
+                    [w[0], w[1], w[2]]
+                } else {
+                    [w[1], w[0], w[2]]
+                }
+            })
+            .collect(),
+        Mode::TriangleFan => match indices.split_first() {
+            Some((&first, rest)) => rest.windows(2).map(|w| [w[0], w[1], first]).collect(),
+            None => Vec::new(),
+        },
+        _ => Vec::new(),
+    }
+}
+
+/// The local matrix of `node` in `f64`: its `matrix`, or `T * R * S` of
+/// its translation, rotation (a unit quaternion `x, y, z, w`) and scale
+/// (section 3.5.3 of glTF 2.0).
+fn local_matrix(node: &gltf::json::Node) -> Matrix {
+    if let Some(m) = node.matrix {
+        let mut out = [[0.0; 4]; 4];
+        for (col, out) in out.iter_mut().enumerate() {
+            for (row, v) in out.iter_mut().enumerate() {
+                *v = f64::from(m[4 * col + row]);
+            }
+        }
+        return out;
+    }
+    let [tx, ty, tz] = node.translation.unwrap_or([0.0; 3]).map(f64::from);
+    let [x, y, z, w] = node
+        .rotation
+        .map_or([0.0, 0.0, 0.0, 1.0], |q| q.0)
+        .map(f64::from);
+    let [sx, sy, sz] = node.scale.unwrap_or([1.0; 3]).map(f64::from);
+    // The rotation matrix of the unit quaternion, by columns.
+    let r = [
+        [
+            1.0 - 2.0 * (y * y + z * z),
+            2.0 * (x * y + z * w),
+            2.0 * (x * z - y * w),
+        ],
+        [
+            2.0 * (x * y - z * w),
+            1.0 - 2.0 * (x * x + z * z),
+            2.0 * (y * z + x * w),
+        ],
+        [
+            2.0 * (x * z + y * w),
+            2.0 * (y * z - x * w),
+            1.0 - 2.0 * (x * x + y * y),
+        ],
+    ];
+    let s = [sx, sy, sz];
+    let mut out = IDENTITY;
+    for col in 0..3 {
+        for row in 0..3 {
+            out[col][row] = r[col][row] * s[col];
+        }
+    }
+    out[3] = [tx, ty, tz, 1.0];
+    out
+}
+
+/// `a * b` (column-major).
+fn compose(a: &Matrix, b: &Matrix) -> Matrix {
+    if *a == IDENTITY {
+        return *b;
+    }
+    if *b == IDENTITY {
+        return *a;
+    }
+    let mut m = [[0.0; 4]; 4];
+    for (col, out) in m.iter_mut().enumerate() {
+        for (row, v) in out.iter_mut().enumerate() {
+            *v = a[0][row] * b[col][0]
+                + a[1][row] * b[col][1]
+                + a[2][row] * b[col][2]
+                + a[3][row] * b[col][3];
+        }
+    }
+    m
+}
+
+/// The affine map of `m` applied to `p`.
+fn apply(m: &Matrix, p: &Point3) -> Point3 {
+    let row = |r: usize| m[0][r] * p[0] + m[1][r] * p[1] + m[2][r] * p[2] + m[3][r];
+    [row(0), row(1), row(2)]
+}
+
+/// The determinant of the linear part of `m`.
+fn determinant(m: &Matrix) -> f64 {
+    m[0][0] * (m[1][1] * m[2][2] - m[2][1] * m[1][2])
+        - m[1][0] * (m[0][1] * m[2][2] - m[2][1] * m[0][2])
+        + m[2][0] * (m[0][1] * m[1][2] - m[1][1] * m[0][2])
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::mesh_to_glb;
+    use proptest::prelude::*;
+    use serde_json::json;
+    use test_support::measure::polygon_mesh_volume;
+    use test_support::shapes::{box_triangles, icosphere};
+
+    /// A binary glTF file of `doc` and the binary chunk `bin` (padded).
+    fn glb(doc: &serde_json::Value, bin: &[u8]) -> Vec<u8> {
+        let mut text = doc.to_string().into_bytes();
+        while !text.len().is_multiple_of(4) {
+            text.push(b' ');
+        }
+        let mut bin = bin.to_vec();
+        while !bin.len().is_multiple_of(4) {
+            bin.push(0);
+        }
+        let total = 12 + 8 + text.len() + if bin.is_empty() { 0 } else { 8 + bin.len() };
+        let mut out = Vec::new();
+        out.extend_from_slice(b"glTF");
+        out.extend_from_slice(&2u32.to_le_bytes());
+        out.extend_from_slice(&(total as u32).to_le_bytes());
+        out.extend_from_slice(&(text.len() as u32).to_le_bytes());
+        out.extend_from_slice(b"JSON");
+        out.extend_from_slice(&text);
+        if !bin.is_empty() {
+            out.extend_from_slice(&(bin.len() as u32).to_le_bytes());
+            out.extend_from_slice(b"BIN\0");
+            out.extend_from_slice(&bin);
+        }
+        out
+    }
+
+    /// The unit cube's 8 corners as `f32` bytes and its 12 outward
+    /// triangles as `u16` indices, and the byte length of the positions.
+    fn cube_bin() -> (Vec<u8>, usize) {
+        let cube = box_triangles([0.0; 3], [1.0; 3]);
+        let mut bin = Vec::new();
+        for p in &cube.vertices {
+            for &x in p {
+                bin.extend_from_slice(&(x as f32).to_le_bytes());
+            }
+        }
+        let positions = bin.len();
+        for t in &cube.triangles {
+            for &i in t {
+                bin.extend_from_slice(&(i as u16).to_le_bytes());
+            }
+        }
+        (bin, positions)
+    }
+
+    /// A document of one cube mesh placed by `nodes` (with `scenes`).
+    fn cube_doc(nodes: serde_json::Value, scenes: serde_json::Value) -> Vec<u8> {
+        let (bin, positions) = cube_bin();
+        let doc = json!({
+            "asset": {"version": "2.0"},
+            "scenes": scenes,
+            "nodes": nodes,
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "buffers": [{"byteLength": bin.len()}],
+            "bufferViews": [
+                {"buffer": 0, "byteOffset": 0, "byteLength": positions},
+                {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
+            ],
+            "accessors": [
+                {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                 "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
+                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
+            ]
+        });
+        glb(&doc, &bin)
+    }
+
+    fn volume(m: &TriangleMesh) -> f64 {
+        polygon_mesh_volume(&m.to_polygon_mesh())
+    }
+
+    fn message(r: Result<TriangleMesh, UmbraError>) -> String {
+        match r {
+            Ok(m) => panic!("read {} triangles", m.triangles.len()),
+            Err(e) => e.to_string(),
+        }
+    }
+
+    #[test]
+    fn the_writers_files_read_back_to_the_same_triangles() {
+        // `f32` coordinates (the format's) read back bit for bit; the
+        // writer's vertices are welded already, so the reader's first-seen
+        // order is a renumbering that the triangle positions pin down.
+        for mesh in [
+            box_triangles([-1.5, 0.25, 2.0], [3.0, 4.5, 8.0]),
+            icosphere([0.0; 3], 1.0, 2),
+        ] {
+            let mesh = TriangleMesh::new(
+                mesh.vertices
+                    .iter()
+                    .map(|p| p.map(|x| f64::from(x as f32)))
+                    .collect(),
+                mesh.triangles,
+            );
+            let bytes = mesh_to_glb(&mesh.to_polygon_mesh()).unwrap();
+            let back = parse_glb(&bytes, "m.glb").unwrap();
+            let corners = |m: &TriangleMesh| -> Vec<[[u64; 3]; 3]> {
+                m.triangles
+                    .iter()
+                    .map(|t| t.map(|i| m.vertices[i as usize].map(f64::to_bits)))
+                    .collect()
+            };
+            assert_eq!(corners(&back), corners(&mesh));
+            assert_eq!(back.vertices.len(), mesh.vertices.len());
+            read_glb_bytes(&bytes, "m.glb", MeshReadOptions::default(), true).unwrap();
+        }
+    }
+
+    #[test]
+    fn nodes_place_mesh_instances_through_their_transforms() {
+        // The cube at the origin, translated by (5, 0, 0) in a child of a
+        // node scaled by 2, and mirrored in x by a matrix.
+        let bytes = cube_doc(
+            json!([
+                {"mesh": 0},
+                {"scale": [2.0, 2.0, 2.0], "children": [2]},
+                {"mesh": 0, "translation": [5.0, 0.0, 0.0]},
+                {"mesh": 0, "matrix": [-1.0, 0.0, 0.0, 0.0, 0.0, 1.0, 0.0, 0.0,
+                                        0.0, 0.0, 1.0, 0.0, -3.0, 0.0, 0.0, 1.0]}
+            ]),
+            json!([{"nodes": [0, 1, 3]}]),
+        );
+        let mesh = parse_glb(&bytes, "cubes.glb").unwrap();
+        assert_eq!(mesh.triangles.len(), 36);
+        assert_eq!(mesh.vertices.len(), 24);
+        // 1 + 8 + 1: the mirrored instance was turned around, so every
+        // shell faces out.
+        assert_eq!(volume(&mesh), 10.0);
+        let xs: Vec<f64> = mesh.vertices.iter().map(|p| p[0]).collect();
+        let (lo, hi) = xs
+            .iter()
+            .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
+        assert_eq!((lo, hi), (-4.0, 12.0));
+        read_glb_bytes(&bytes, "cubes.glb", MeshReadOptions::default(), true).unwrap();
+    }
+
+    #[test]
+    fn rotations_are_unit_quaternions_applied_after_scaling() {
+        // A quarter turn about z (x -> y) of the cube scaled by 3 in x.
+        let h = std::f32::consts::FRAC_1_SQRT_2;
+        let bytes = cube_doc(
+            json!([{"mesh": 0, "rotation": [0.0, 0.0, h, h], "scale": [3.0, 1.0, 1.0]}]),
+            json!([{"nodes": [0]}]),
+        );
+        let mesh = parse_glb(&bytes, "turned.glb").unwrap();
+        let lo = mesh.vertices.iter().fold([f64::MAX; 3], |a, p| {
+            [a[0].min(p[0]), a[1].min(p[1]), a[2].min(p[2])]
+        });
+        let hi = mesh.vertices.iter().fold([f64::MIN; 3], |a, p| {
+            [a[0].max(p[0]), a[1].max(p[1]), a[2].max(p[2])]
+        });
+        let near = |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-6);
+        assert!(
+            near(lo, [-1.0, 0.0, 0.0]) && near(hi, [0.0, 3.0, 1.0]),
+            "{lo:?} {hi:?}"
+        );
+        assert!((volume(&mesh) - 3.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn without_scenes_the_root_nodes_are_placed_and_without_nodes_every_mesh() {
+        let bytes = cube_doc(
+            json!([{"children": [1]}, {"mesh": 0, "translation": [0.0, 0.0, 7.0]}]),
+            json!([]),
+        );
+        let mesh = parse_glb(&bytes, "roots.glb").unwrap();
+        assert_eq!(mesh.triangles.len(), 12);
+        assert!(mesh.vertices.iter().all(|p| p[2] >= 7.0));
+        let bytes = cube_doc(json!([]), json!([]));
+        assert_eq!(parse_glb(&bytes, "meshes.glb").unwrap().triangles.len(), 12);
+    }
+
+    #[test]
+    fn strips_and_fans_follow_the_specification() {
+        // Six positions on a square's corners and centre, no index buffer.
+        let idx = [0u32, 1, 2, 3];
+        let strip = triangle_corners(Mode::TriangleStrip, &idx);
+        assert_eq!(strip, vec![[0, 1, 2], [2, 1, 3]]);
+        let fan = triangle_corners(Mode::TriangleFan, &idx);
+        assert_eq!(fan, vec![[1, 2, 0], [2, 3, 0]]);
+        assert!(triangle_corners(Mode::Lines, &idx).is_empty());
+        assert!(triangle_corners(Mode::TriangleFan, &[]).is_empty());
+        assert_eq!(
+            triangle_corners(Mode::Triangles, &[0, 1, 2, 3]),
+            vec![[0, 1, 2]]
+        );
+    }
+
+    #[test]
+    fn a_document_without_triangles_is_the_empty_mesh() {
+        let doc = json!({"asset": {"version": "2.0"}, "scenes": [{"nodes": []}]});
+        let mesh = parse_glb(&glb(&doc, &[]), "empty.glb").unwrap();
+        assert!(mesh.triangles.is_empty());
+        assert!(matches!(
+            parse_glb(b" \n", "blank.glb"),
+            Err(UmbraError::Empty { .. })
+        ));
+    }
+
+    #[test]
+    fn bad_files_are_named_errors() {
+        let good = cube_doc(json!([{"mesh": 0}]), json!([{"nodes": [0]}]));
+        // Every truncation is an error, never a panic.
+        for cut in 0..good.len() {
+            assert!(parse_glb(&good[..cut], "cut.glb").is_err(), "cut at {cut}");
+        }
+        let mut version = good.clone();
+        version[4] = 1;
+        assert!(message(parse_glb(&version, "v.glb")).contains("version 1"));
+        let mut short = good.clone();
+        short[8..12].copy_from_slice(&3u32.to_le_bytes());
+        assert!(message(parse_glb(&short, "s.glb")).contains("length of 3"));
+
+        let (bin, positions) = cube_bin();
+        let with = |edit: &dyn Fn(&mut serde_json::Value)| {
+            let mut doc = json!({
+                "asset": {"version": "2.0"},
+                "scenes": [{"nodes": [0]}],
+                "nodes": [{"mesh": 0}],
+                "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+                "buffers": [{"byteLength": bin.len()}],
+                "bufferViews": [
+                    {"buffer": 0, "byteOffset": 0, "byteLength": positions},
+                    {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
+                ],
+                "accessors": [
+                    {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                     "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
+                    {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
+                ]
+            });
+            edit(&mut doc);
+            message(parse_glb(&glb(&doc, &bin), "bad.glb"))
+        };
+        type Edit<'e> = &'e dyn Fn(&mut serde_json::Value);
+        let cases: Vec<(Edit<'_>, &str)> = vec![
+            (
+                &|d| d["accessors"][0]["count"] = json!(9),
+                "runs past its buffer view",
+            ),
+            (
+                &|d| d["accessors"][0]["count"] = json!(usize::MAX / 2),
+                "runs past",
+            ),
+            (
+                &|d| d["accessors"][1]["byteOffset"] = json!(4000),
+                "runs past",
+            ),
+            (
+                &|d| d["bufferViews"][1]["byteLength"] = json!(1u64 << 40),
+                "beyond the binary chunk",
+            ),
+            (
+                &|d| d["accessors"][0]["componentType"] = json!(5123),
+                "not VEC3 of FLOAT",
+            ),
+            (&|d| d["accessors"][1]["type"] = json!("VEC2"), "not SCALAR"),
+            (
+                &|d| {
+                    d["accessors"][0]["sparse"] = json!({"count": 1,
+                "indices": {"bufferView": 1, "componentType": 5123},
+                "values": {"bufferView": 0}})
+                },
+                "sparse",
+            ),
+            (
+                &|d| {
+                    d["accessors"][0]
+                        .as_object_mut()
+                        .unwrap()
+                        .remove("bufferView");
+                },
+                "no buffer view",
+            ),
+            (
+                &|d| d["buffers"][0]["uri"] = json!("cube.bin"),
+                "outside the binary chunk",
+            ),
+            (
+                &|d| d["meshes"][0]["primitives"][0]["attributes"] = json!({"NORMAL": 0}),
+                "no POSITION",
+            ),
+            (
+                &|d| d["nodes"] = json!([{"mesh": 0, "children": [0]}]),
+                "reached twice",
+            ),
+            (
+                &|d| d["nodes"] = json!([{"children": [1, 2]}, {"children": [2]}, {"mesh": 0}]),
+                "reached twice",
+            ),
+            (
+                &|d| d["extensionsRequired"] = json!(["KHR_draco_mesh_compression"]),
+                "KHR_draco_mesh_compression",
+            ),
+            (
+                &|d| d["nodes"][0]["mesh"] = json!(5),
+                "mesh 5 does not exist",
+            ),
+            (&|d| d["scene"] = json!(3), "scene 3 does not exist"),
+            (
+                &|d| d["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = json!(9),
+                "accessor 9 does not exist",
+            ),
+            (
+                &|d| d["bufferViews"][0]["buffer"] = json!(2),
+                "buffer 2 does not exist",
+            ),
+            (
+                &|d| d["meshes"][0]["primitives"][0]["mode"] = json!(9),
+                "primitive 0: invalid mode",
+            ),
+            (&|d| d["asset"] = json!(7), "invalid glTF JSON"),
+        ];
+        for (edit, want) in cases {
+            let got = with(edit);
+            assert!(got.contains(want), "{got} (wanted {want})");
+            assert!(got.contains("bad.glb"), "{got}");
+        }
+        // An index beyond the positions names the primitive and the index.
+        let mut bad = bin.clone();
+        bad[positions..positions + 2].copy_from_slice(&8u16.to_le_bytes());
+        let doc = json!({
+            "asset": {"version": "2.0"},
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "buffers": [{"byteLength": bad.len()}],
+            "bufferViews": [
+                {"buffer": 0, "byteOffset": 0, "byteLength": positions},
+                {"buffer": 0, "byteOffset": positions, "byteLength": bad.len() - positions}
+            ],
+            "accessors": [
+                {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                 "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
+                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
+            ]
+        });
+        let got = message(parse_glb(&glb(&doc, &bad), "idx.glb"));
+        assert!(
+            got.contains("mesh 0 primitive 0: index 0 is 8, but there are only 8 positions"),
+            "{got}"
+        );
+    }
+
+    #[test]
+    fn an_open_instance_is_reported_by_triangle_and_mesh() {
+        // The cube without its last triangle.
+        let (bin, positions) = cube_bin();
+        let doc = json!({
+            "asset": {"version": "2.0"},
+            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
+            "buffers": [{"byteLength": bin.len()}],
+            "bufferViews": [
+                {"buffer": 0, "byteOffset": 0, "byteLength": positions},
+                {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
+            ],
+            "accessors": [
+                {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
+                 "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
+                {"bufferView": 1, "componentType": 5123, "count": 33, "type": "SCALAR"}
+            ]
+        });
+        let e = read_glb_bytes(
+            &glb(&doc, &bin),
+            "open.glb",
+            MeshReadOptions::default(),
+            true,
+        )
+        .unwrap_err()
+        .to_string();
+        assert!(e.contains("open.glb") && e.contains("(mesh 0)"), "{e}");
+    }
+
+    /// The meshes trimesh wrote (see `test-support/data/gltf/README.md`).
+    #[test]
+    fn trimesh_files_read_closed_with_trimesh_volumes() {
+        let read = |name: &str| {
+            let path = test_support::data_path(&format!("gltf/{name}"));
+            let bytes = std::fs::read(&path).unwrap();
+            read_glb_bytes(&bytes, name, MeshReadOptions::default(), true).unwrap()
+        };
+        let nut = read("nut_unmerged.glb");
+        assert_eq!(nut.facets.len(), 1046);
+        // Welded from 3138 positions to the nut's 523 vertices.
+        assert_eq!(nut.vertices.len(), 523);
+        let v = polygon_mesh_volume(&nut);
+        assert!((v - 32171.322236985983).abs() < 1e-9 * v, "{v}");
+        let scene = read("scene_instances.glb");
+        assert_eq!(scene.facets.len(), 2726);
+        let v = polygon_mesh_volume(&scene);
+        // The mirrored nut's `f32` rotation moves its volume by ~1e-7.
+        assert!((v - 16882519.322236985).abs() < 1e-6 * v, "{v}");
+        let lo = scene.vertices.iter().fold([f64::MAX; 3], |a, p| {
+            [a[0].min(p[0]), a[1].min(p[1]), a[2].min(p[2])]
+        });
+        let hi = scene.vertices.iter().fold([f64::MIN; 3], |a, p| {
+            [a[0].max(p[0]), a[1].max(p[1]), a[2].max(p[2])]
+        });
+        for (got, want) in lo.iter().zip([-426.0, -139.97146456596238, -127.0]) {
+            assert!((got - want).abs() < 1e-4, "{lo:?}");
+        }
+        for (got, want) in hi.iter().zip([425.0, 126.0, 127.0]) {
+            assert!((got - want).abs() < 1e-4, "{hi:?}");
+        }
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(64)))]
+
+        /// Random bytes and random edits of a valid file never panic.
+        #[test]
+        fn garbage_never_panics(
+            bytes in proptest::collection::vec(any::<u8>(), 0..300),
+            edits in proptest::collection::vec((any::<usize>(), any::<u8>()), 1..8),
+        ) {
+            let _ = parse_glb(&bytes, "g.glb");
+            let mut prefixed = b"glTF\x02\0\0\0".to_vec();
+            prefixed.extend_from_slice(&bytes);
+            let _ = parse_glb(&prefixed, "g.glb");
+            let mut good = cube_doc(
+                json!([{"mesh": 0, "children": [1]}, {"mesh": 0, "scale": [1.0, -1.0, 1.0]}]),
+                json!([{"nodes": [0]}]),
+            );
+            let n = good.len();
+            for (at, byte) in edits {
+                good[at % n] = byte;
+            }
+            if let Ok(m) = parse_glb(&good, "e.glb") {
+                prop_assert!(m.triangles.len() <= 24);
+            }
+        }
+    }
+}

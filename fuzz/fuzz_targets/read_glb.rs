@@ -1,0 +1,47 @@
+//! Fuzz target: the binary glTF reader on any bytes never panics and never
+//! places more than its triangle budget; a mesh that reads is checked for
+//! closure (the linear `check_topology`), written in every mesh format to
+//! a sink, and (when every coordinate is an `f32` value, as untransformed
+//! positions are) written as `.glb` and read back to the same triangles
+//! by position (without the triangles with a repeated corner, which
+//! writing drops).
+#![no_main]
+
+use libfuzzer_sys::fuzz_target;
+use umbra::{mesh_to_glb, parse_glb, TriangleMesh};
+#[path = "common/io.rs"]
+mod io;
+use io::write_mesh_everywhere;
+use test_support::canonical;
+
+fuzz_target!(|data: &[u8]| {
+    let Ok(tris) = parse_glb(data, "fuzz.glb") else {
+        return;
+    };
+    assert!(tris.triangles.len() <= 1 << 25, "triangle budget");
+    let mesh = tris.to_polygon_mesh();
+    let _ = mesh.check_topology();
+    write_mesh_everywhere(&mesh);
+    let exact = tris
+        .vertices
+        .iter()
+        .flatten()
+        .all(|&x| x.is_finite() && f64::from(x as f32) == x);
+    let proper: Vec<[u32; 3]> = tris
+        .triangles
+        .iter()
+        .copied()
+        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+        .collect();
+    if !exact || proper.is_empty() {
+        return;
+    }
+    let bytes = mesh_to_glb(&mesh).expect("f32 coordinates are written");
+    let back = parse_glb(&bytes, "back.glb").expect("written glTF reads back");
+    let kept = TriangleMesh::new(tris.vertices.clone(), proper);
+    assert_eq!(
+        canonical::triangles(&back),
+        canonical::triangles(&kept),
+        "glTF round trip"
+    );
+});
