@@ -14,9 +14,10 @@
 //! Boolean of chapter 4 by default and through simplification (chapter 6,
 //! which also resolves self-intersecting input and offers `xor`) with
 //! `--via simplify`; 3D Booleans run the polygon-mesh variant, or the
-//! triangle-mesh variant with `--triangulate` (section 4.8; operands that
-//! are not triangle meshes are triangulated by internal edges first). The
-//! report's `variant` names the variant that ran.
+//! triangle-mesh variant with `--triangulate` or when the output format
+//! holds triangles only (`.stl`, `.3mf`, `.glb`; section 4.8: operands
+//! that are not triangle meshes are triangulated by internal edges first).
+//! The report's `variant` names the variant that ran.
 //!
 //! Every command computes everything and serializes every output to memory
 //! before it writes anything, then writes all its files or none (see

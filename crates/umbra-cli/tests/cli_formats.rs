@@ -281,3 +281,100 @@ fn ascii_stl_and_ply_keep_every_f64() {
         assert!((got - want).abs() <= 1e-12 * want, "{ext}: {got} vs {want}");
     }
 }
+
+/// A UV sphere of `s` slices and `s / 2` stacks as OFF text (every `f64`
+/// in its shortest round-trip form).
+fn uv_sphere_off(c: [f64; 3], s: usize) -> String {
+    let t = s / 2;
+    let mut v = vec![[c[0], c[1], c[2] + 1.0]];
+    for i in 1..t {
+        let th = std::f64::consts::PI * i as f64 / t as f64;
+        for j in 0..s {
+            let ph = 2.0 * std::f64::consts::PI * j as f64 / s as f64;
+            v.push([
+                c[0] + th.sin() * ph.cos(),
+                c[1] + th.sin() * ph.sin(),
+                c[2] + th.cos(),
+            ]);
+        }
+    }
+    v.push([c[0], c[1], c[2] - 1.0]);
+    let south = v.len() - 1;
+    let mut f = Vec::new();
+    for j in 0..s {
+        f.push([0, 1 + j, 1 + (j + 1) % s]);
+    }
+    for i in 0..t - 2 {
+        for j in 0..s {
+            let (a, b) = (1 + i * s + j, 1 + i * s + (j + 1) % s);
+            f.push([a, a + s, b + s]);
+            f.push([a, b + s, b]);
+        }
+    }
+    let base = 1 + (t - 2) * s;
+    for j in 0..s {
+        f.push([base + j, south, base + (j + 1) % s]);
+    }
+    let mut text = format!("OFF\n{} {} 0\n", v.len(), f.len());
+    for p in &v {
+        text.push_str(&format!("{:?} {:?} {:?}\n", p[0], p[1], p[2]));
+    }
+    for t in &f {
+        text.push_str(&format!("3 {} {} {}\n", t[0], t[1], t[2]));
+    }
+    text
+}
+
+#[test]
+fn a_triangle_format_output_runs_the_triangle_variant() {
+    // A sphere minus a shifted copy: the polygon variant's result,
+    // triangulated on writing, folds where the pieces of the two surfaces
+    // meet (11 intersecting facet pairs at this resolution when written as
+    // STL); the triangle variant's smoothing leaves none, so STL, 3MF and
+    // glTF outputs run it without `--triangulate`.
+    let dir = temp_dir("tri-variant");
+    let d = 0.5 / 3f64.sqrt();
+    let a = dir.join("a.off");
+    let b = dir.join("b.off");
+    std::fs::write(&a, uv_sphere_off([0.0; 3], 40)).unwrap();
+    std::fs::write(&b, uv_sphere_off([d, d * 1.1, d * 0.9], 40)).unwrap();
+    let run = |out: &Path, extra: &[&str]| -> serde_json::Value {
+        let report = dir.join("r.json");
+        let mut args: Vec<&std::ffi::OsStr> = vec![
+            "boolean".as_ref(),
+            "difference".as_ref(),
+            a.as_os_str(),
+            b.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+            "--report".as_ref(),
+            report.as_os_str(),
+        ];
+        args.extend(extra.iter().map(|s| std::ffi::OsStr::new(*s)));
+        let o = umbra(args);
+        assert!(o.status.success(), "{}", stderr(&o));
+        serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap()
+    };
+    let implied = dir.join("implied.stl");
+    let asked = dir.join("asked.stl");
+    let r = run(&implied, &["--ascii"]);
+    assert_eq!(r["variant"], "triangle mesh", "{r}");
+    run(&asked, &["--ascii", "--triangulate"]);
+    assert_eq!(
+        std::fs::read(&implied).unwrap(),
+        std::fs::read(&asked).unwrap()
+    );
+    let c = umbra(["check".as_ref(), implied.as_os_str(), "--json".as_ref()]);
+    let j: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
+    assert_eq!(j["self_intersecting_facet_pairs"], 0, "{j}");
+    assert_eq!(j["two_manifold"], true, "{j}");
+    for ext in ["3mf", "glb"] {
+        let r = run(&dir.join(format!("out.{ext}")), &[]);
+        assert_eq!(r["variant"], "triangle mesh", "{ext}: {r}");
+    }
+    // Formats of polygons keep the polygon variant unless asked.
+    let r = run(&dir.join("out.obj"), &[]);
+    assert_eq!(r["variant"], "polygon mesh", "{r}");
+    let r = run(&dir.join("out_t.obj"), &["--triangulate"]);
+    assert_eq!(r["variant"], "triangle mesh", "{r}");
+}

@@ -1,7 +1,7 @@
 //! `umbra boolean OP A B -o OUT`: the 2D Boolean (basic, or through
 //! simplification with `--via simplify`) or the 3D Boolean (polygon-mesh
-//! variant, or triangle-mesh variant with `--triangulate`), by the files'
-//! extensions.
+//! variant, or triangle-mesh variant with `--triangulate` or an output
+//! format of triangles only), by the files' extensions.
 
 use super::smooth::summary;
 use super::{invalid_result, millis_since, orientation, tolerance_arg, warn_orphans};
@@ -44,7 +44,11 @@ pub struct BooleanArgs {
     via: ViaArg,
     /// 3D: run the triangle-mesh variant (section 4.8) instead of the
     /// polygon-mesh one: operands with other facets are triangulated by
-    /// internal edges first, and the output is triangles.
+    /// internal edges first, and the output is triangles. Implied when
+    /// the output is .stl, .3mf or .glb (formats of triangles only: the
+    /// polygon result triangulated on writing can fold where facets meet
+    /// at the intersection curves, which the triangle variant's smoothing
+    /// removes).
     #[arg(long)]
     triangulate: bool,
     /// Smooth the result at this tolerance (Appendix A: merges what lies
@@ -217,7 +221,7 @@ impl BooleanArgs {
         let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
         let a = read_mesh(a_path, MeshReadOptions::default(), true)?;
         let b = read_mesh(b_path, MeshReadOptions::default(), true)?;
-        let variant = if self.triangulate {
+        let variant = if self.triangulate || out_kind.holds_triangles_only() {
             MeshVariant::TriangleMesh
         } else {
             MeshVariant::PolygonMesh

@@ -45,6 +45,8 @@ pub struct CsgArgs {
     out: OutputArgs,
     /// Run the triangle-mesh variant of the 3D Boolean (every leaf and
     /// every result triangulated, section 4.8); the output is triangles.
+    /// Implied when the output is .stl, .3mf or .glb (formats of
+    /// triangles only).
     #[arg(long)]
     triangulate: bool,
     /// No progress bar and no summary on standard output.
@@ -71,14 +73,15 @@ impl CsgArgs {
             tree.files().into_iter().map(|p| ("a file of the script", p)).collect();
         self.out.refuse_overlaps(&leaves)?;
         let start = Instant::now();
+        let triangulate = self.triangulate || kind.holds_triangles_only();
         let bar = Progress::new(tree.boolean_count(), self.quiet);
         let result = evaluate_csg_with_progress(
             &tree,
-            csg_options(self.triangulate, self.smooth),
+            csg_options(triangulate, self.smooth),
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();
-        let result = smooth_result(result?, self.triangulate, self.smooth)?;
+        let result = smooth_result(result?, triangulate, self.smooth)?;
         let file = self.out.output.display().to_string();
         let bytes = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
         self.out.write(&bytes, &result.report)?;

@@ -139,6 +139,22 @@ impl FileKind {
         )
     }
 
+    /// `true` for the formats that hold triangles only (`.stl`, `.3mf`,
+    /// `.glb`): a polygon mesh written there is triangulated by internal
+    /// edges (section 4.8), so a command that computes a mesh for such a
+    /// file runs the triangle-mesh variant, whose smoothing cleans the
+    /// triangles themselves.
+    ///
+    /// ```
+    /// use std::path::Path;
+    /// use umbra::FileKind;
+    /// assert!(FileKind::from_path(Path::new("part.stl")).unwrap().holds_triangles_only());
+    /// assert!(!FileKind::from_path(Path::new("part.obj")).unwrap().holds_triangles_only());
+    /// ```
+    pub fn holds_triangles_only(self) -> bool {
+        matches!(self, FileKind::Stl | FileKind::ThreeMf | FileKind::Glb)
+    }
+
     /// `true` if files of this kind can be read (all but `.svg` and
     /// `.3mf`).
     pub fn can_read(self) -> bool {
