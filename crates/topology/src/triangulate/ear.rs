@@ -53,22 +53,30 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
     let mut cur = 0;
     while remaining > 3 {
         if remaining == 4 {
-            // Figure 4.10: of the two diagonals take the one whose
-            // triangles cover less area (no more than the quadrilateral
-            // when it is valid, else the smaller overlap).
+            // Figure 4.10: of the two diagonals take the valid one; when
+            // neither is, the one whose triangles cover less area (the
+            // smaller overlap). When both are, their triangles cover the
+            // quadrilateral alike (the totals differ by rounding only), so
+            // the diagonal is taken whose smaller triangle is larger:
+            // section 4.8's ideal internal edge touches no other edge but
+            // at its ends, and at a corner that is straight to rounding
+            // (a vertex the Boolean put on a facet's side) the other
+            // diagonal would pass through that corner, leaving a triangle
+            // of no area that folds against the neighbouring facets.
             let a = cur;
             let b = next[a];
             let c = next[b];
             let d = next[c];
             let (pa, pb, pc, pd) = (pos(a), pos(b), pos(c), pos(d));
-            let ac_valid = orient(pa, pb, pc) > 0.0 && orient(pa, pc, pd) > 0.0;
-            let bd_valid = orient(pb, pc, pd) > 0.0 && orient(pb, pd, pa) > 0.0;
-            let ac = orient(pa, pb, pc).abs() + orient(pa, pc, pd).abs();
-            let bd = orient(pb, pc, pd).abs() + orient(pb, pd, pa).abs();
-            let use_ac = if ac_valid != bd_valid {
-                ac_valid
-            } else {
-                ac <= bd
+            let (ac1, ac2) = (orient(pa, pb, pc), orient(pa, pc, pd));
+            let (bd1, bd2) = (orient(pb, pc, pd), orient(pb, pd, pa));
+            let ac_valid = ac1 > 0.0 && ac2 > 0.0;
+            let bd_valid = bd1 > 0.0 && bd2 > 0.0;
+            let use_ac = match (ac_valid, bd_valid) {
+                (true, true) => ac1.min(ac2) >= bd1.min(bd2),
+                (true, false) => true,
+                (false, true) => false,
+                (false, false) => ac1.abs() + ac2.abs() <= bd1.abs() + bd2.abs(),
             };
             let (p, q, r, s) = if use_ac { (a, b, c, d) } else { (b, c, d, a) };
             out.push([p, q, r]);

@@ -30,9 +30,13 @@
 //!    polygon. A valid ear (anticlockwise, no other vertex in it) is taken
 //!    first, then a degenerate (zero-area) one. When neither exists the
 //!    polygon is geometrically invalid, and the ear of smallest absolute
-//!    area is clipped; for a quadrilateral both diagonals are compared and
-//!    the one whose two triangles cover the smaller total area is taken
-//!    (figure 4.10). Every triangulation of a loop has the loop's winding
+//!    area is clipped. For a quadrilateral both diagonals are compared: a
+//!    valid one (two anticlockwise triangles) is taken; of two valid ones,
+//!    the one whose smaller triangle is larger (the other would pass
+//!    through a corner that is straight to rounding, such as a vertex the
+//!    Boolean put on a facet's side: section 4.8's ideal internal edge
+//!    touches nothing but at its ends); of two invalid ones, the one whose
+//!    two triangles cover the smaller total area (figure 4.10). Every triangulation of a loop has the loop's winding
 //!    number everywhere (the internal edges cancel), so the covered area
 //!    beyond `|winding|` is exactly the overlap the figure minimises. An
 //!    ear over a vertex the polygon visits twice (a spike along a bridge,
@@ -391,6 +395,51 @@ mod tests {
         let area = ccw_area(&pts, &t);
         assert_eq!(area, 16.0 - 6.0);
         assert!(balance(&t, &hes));
+    }
+
+    #[test]
+    fn a_quadrilateral_with_a_corner_straight_to_rounding_is_split_at_that_corner() {
+        // Corner 1 lies on the segment 0-2 up to 1e-15: of the two valid
+        // diagonals, 0-2 would pass through it (a triangle of no area);
+        // 1-3 gives two proper triangles. Both orders of the loop.
+        let pts: Vec<Point3> = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [2.0, 1e-15, 0.0],
+            [1.0, 3.0, 0.0],
+        ];
+        for start in 0..4u32 {
+            let hes: Vec<(u32, u32)> = (0..4)
+                .map(|i| ((start + i) % 4, (start + i + 1) % 4))
+                .collect();
+            let mut t = Vec::new();
+            triangulate_facet(&pts, &hes, &mut t);
+            assert_eq!(t.len(), 2);
+            assert!(balance(&t, &hes));
+            for tri in &t {
+                assert!(tri.contains(&1) && tri.contains(&3), "{t:?}");
+            }
+            assert!((ccw_area(&pts, &t) - 3.0).abs() < 1e-12);
+        }
+        // The real case: a piece of a sphere's facet inside another
+        // sphere (a UV sphere of 40 slices minus its copy moved by
+        // (0.289, 0.318, 0.260)), where the intersection curve crosses the
+        // other sphere's edge at 511 on the straight chain 603-511-604;
+        // the diagonal 603-604 made the mesh check count an intersection
+        // with the facets meeting at 511.
+        let pts: Vec<Point3> = vec![
+            [-0.6023313895935549, 0.31754264805429433, 0.7137981208748785],
+            [-0.5910664301889025, 0.3330475345136997, 0.73018957886674],
+            [-0.5891029463565811, 0.32750303938550945, 0.7341057700806499],
+            [-0.5855756518256511, 0.31754264805429433, 0.7411409998205201],
+        ];
+        let hes = ring(4);
+        let mut t = Vec::new();
+        triangulate_facet(&pts, &hes, &mut t);
+        assert_eq!(t.len(), 2);
+        for tri in &t {
+            assert!(tri.contains(&0) && tri.contains(&2), "{t:?}");
+        }
     }
 
     #[test]
