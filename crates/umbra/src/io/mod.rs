@@ -18,6 +18,7 @@ mod stl;
 mod svg;
 mod text;
 mod threemf;
+mod threemf_read;
 mod wkt;
 mod wkt_diagnose;
 
@@ -38,6 +39,7 @@ pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};
 pub use stl::{mesh_to_stl, parse_stl};
 pub use svg::polygon_set_to_svg;
 pub use threemf::mesh_to_3mf;
+pub use threemf_read::parse_3mf;
 pub use wkt::{
     parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
     write_wkt_string, ReadOptions,
