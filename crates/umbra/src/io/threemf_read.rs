@@ -768,19 +768,30 @@ impl Size {
     }
 }
 
-/// The size object `id` expands to (memoized in `sizes`), referenced on
-/// `line`; refuses unknown objects, cycles (`stack` holds the objects
-/// being expanded) and nesting deeper than [`MAX_DEPTH`].
+/// The size object `id` expands to and its height (1 for a mesh, one
+/// more than its highest component otherwise), memoized in `sizes`;
+/// `line` references it. Refuses unknown objects, cycles (`stack` holds
+/// the objects being expanded) and nesting deeper than [`MAX_DEPTH`],
+/// also where a memoized object is reached again lower down.
 fn expanded_size(
     id: u32,
     line: u32,
     model: &Model,
-    sizes: &mut HashMap<u32, Size>,
+    sizes: &mut HashMap<u32, (Size, usize)>,
     stack: &mut Vec<u32>,
     place: &Place<'_, '_>,
-) -> Result<Size, UmbraError> {
-    if let Some(&size) = sizes.get(&id) {
-        return Ok(size);
+) -> Result<(Size, usize), UmbraError> {
+    let too_deep = || {
+        place.error_at(
+            line,
+            format!("components nest deeper than {MAX_DEPTH} levels"),
+        )
+    };
+    if let Some(&(size, height)) = sizes.get(&id) {
+        if stack.len() + height > MAX_DEPTH {
+            return Err(too_deep());
+        }
+        return Ok((size, height));
     }
     let Some(object) = model.objects.get(&id) else {
         return Err(place.error_at(line, format!("objectid {id} names no object of the model")));
@@ -798,26 +809,26 @@ fn expanded_size(
         ));
     }
     if stack.len() >= MAX_DEPTH {
-        return Err(place.error_at(
-            line,
-            format!("components nest deeper than {MAX_DEPTH} levels"),
-        ));
+        return Err(too_deep());
     }
-    let size = match &object.shape {
-        Shape::Mesh(part, true) => Size::of(part),
-        Shape::Mesh(_, false) => Size::default(),
+    let expanded = match &object.shape {
+        Shape::Mesh(part, true) => (Size::of(part), 1),
+        Shape::Mesh(_, false) => (Size::default(), 1),
         Shape::Components(components) => {
             stack.push(id);
             let mut size = Size::default();
+            let mut height = 1;
             for c in components {
-                size.add(expanded_size(c.object, c.line, model, sizes, stack, place)?);
+                let (s, h) = expanded_size(c.object, c.line, model, sizes, stack, place)?;
+                size.add(s);
+                height = height.max(h + 1);
             }
             stack.pop();
-            size
+            (size, height)
         }
     };
-    sizes.insert(id, size);
-    Ok(size)
+    sizes.insert(id, expanded);
+    Ok(expanded)
 }
 
 /// The size of the whole build, refused past the instancing budget.
@@ -826,14 +837,9 @@ fn build_size(model: &Model, place: &Place<'_, '_>) -> Result<Size, UmbraError> 
     let mut total = Size::default();
     for item in &model.items {
         let mut stack = Vec::new();
-        total.add(expanded_size(
-            item.object,
-            item.line,
-            model,
-            &mut sizes,
-            &mut stack,
-            place,
-        )?);
+        let (size, _) =
+            expanded_size(item.object, item.line, model, &mut sizes, &mut stack, place)?;
+        total.add(size);
     }
     let max_vertices = INSTANCE_BUDGET.max(model.literal.vertices);
     let max_triangles = INSTANCE_BUDGET.max(model.literal.triangles);
@@ -1334,6 +1340,15 @@ mod tests {
             resources += &components_object(k, &[(k - 1, IDENTITY_TEXT)]);
         }
         let e = error_of(&simple(&model(&resources, &item(41, IDENTITY_TEXT))));
+        assert!(
+            e.contains(&format!("components nest deeper than {MAX_DEPTH} levels")),
+            "{e}"
+        );
+        // Nor when the lower 20 levels were expanded (and memoized) first.
+        let e = error_of(&simple(&model(
+            &resources,
+            &(item(20, IDENTITY_TEXT) + &item(40, IDENTITY_TEXT)),
+        )));
         assert!(
             e.contains(&format!("components nest deeper than {MAX_DEPTH} levels")),
             "{e}"
