@@ -9,8 +9,8 @@
 //! ```
 //!
 //! The file extension decides the dimension: `.wkt` and `.geojson` are 2D
-//! polygon sets (`.svg` written), `.obj`, `.off`, `.stl` and `.ply` are 3D
-//! meshes (`.3mf` and `.glb` written). 2D Booleans run the basic
+//! polygon sets (`.svg` written), `.obj`, `.off`, `.stl`, `.ply`, `.3mf`
+//! and `.glb` are 3D meshes. 2D Booleans run the basic
 //! Boolean of chapter 4 by default and through simplification (chapter 6,
 //! which also resolves self-intersecting input and offers `xor`) with
 //! `--via simplify`; 3D Booleans run the polygon-mesh variant, or the

@@ -86,7 +86,7 @@ fn a_boolean_from_stl_to_every_mesh_format() {
             serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap();
         assert_eq!(r["topologically_valid"], true, "{ext}");
         assert!(std::fs::metadata(&out).unwrap().len() > 0);
-        if matches!(ext, "stl" | "ply" | "obj" | "off" | "glb") {
+        if matches!(ext, "stl" | "ply" | "obj" | "off" | "3mf" | "glb") {
             // Readable formats read back, valid, with the exact volume 7.
             let c = umbra(["check".as_ref(), out.as_os_str(), "--json".as_ref()]);
             assert!(c.status.success(), "{ext}: {}", stderr(&c));

@@ -1,6 +1,6 @@
 //! Files: every format of the command-line tool, decided by the extension
-//! (`.obj .off .stl .ply` meshes read and written, `.3mf .glb` meshes
-//! written; `.wkt .geojson` polygons read and written, `.svg` written),
+//! (`.obj .off .stl .ply .3mf .glb` meshes read and written; `.wkt
+//! .geojson` polygons read and written, `.svg` written),
 //! through the facade's readers and writers, so messages are the tool's.
 
 use crate::mesh::Mesh;

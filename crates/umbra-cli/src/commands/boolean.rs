@@ -20,7 +20,7 @@ use umbra::{
 };
 
 /// Union, intersection, difference or (2D only) xor of two files
-/// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply).
+/// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply/.3mf/.glb).
 #[derive(clap::Args, Debug)]
 pub struct BooleanArgs {
     /// The operation.
@@ -105,7 +105,7 @@ impl BooleanArgs {
         let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
         if meshes != 0 && meshes != 3 {
             return Err(usage(
-                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply; .3mf, .glb output)",
+                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply, .3mf, .glb)",
             ));
         }
         self.out

@@ -42,7 +42,7 @@ impl SmoothArgs {
         let out_kind = FileKind::from_path(&self.out.output)?;
         if in_kind.is_mesh() != out_kind.is_mesh() {
             return Err(crate::errors::usage(
-                "the input and the output must both be 2D files (.wkt, .geojson; .svg output) or both 3D files (.obj, .off, .stl, .ply; .3mf, .glb output)",
+                "the input and the output must both be 2D files (.wkt, .geojson; .svg output) or both 3D files (.obj, .off, .stl, .ply, .3mf, .glb)",
             ));
         }
         self.out.refuse_overlaps(&[("the input", &self.input)])?;

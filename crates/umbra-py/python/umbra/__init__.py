@@ -16,8 +16,8 @@ list of rings (exterior first, then holes), each ring an (k, 2) float64
 array.
 
 Files: ``read`` and ``write`` for every format of the command-line tool
-(.obj .off .stl .ply meshes; .3mf .glb meshes written only; .wkt .geojson
-polygons; .svg polygons written only).
+(.obj .off .stl .ply .3mf .glb meshes; .wkt .geojson polygons; .svg
+polygons written only).
 
 Every error is an ``UmbraError`` (a ``ValueError``) with the command-line
 tool's one-line message. The GIL is released while umbra computes, so

@@ -2,8 +2,8 @@
 //! points (the command-line tool goes through these). The extension decides
 //! the format and the dimension: `.wkt` and `.geojson` are 2D polygon sets
 //! (read and written), `.svg` is a 2D picture (written only); `.obj`,
-//! `.off`, `.stl`, `.ply` and `.glb` are 3D meshes (read and written),
-//! `.3mf` is a 3D mesh written only.
+//! `.off`, `.stl`, `.ply`, `.3mf` and `.glb` are 3D meshes (read and
+//! written).
 
 use super::geojson::read_geojson_file;
 use super::glb_read::read_glb_bytes;
@@ -11,6 +11,7 @@ use super::mesh_text::{read_mesh_text, MeshReadOptions};
 use super::ply::read_ply_bytes;
 use super::stl::read_stl_bytes;
 use super::text::{decode, read_bytes, write_bytes};
+use super::threemf_read::read_3mf_bytes;
 use crate::{read_wkt_file, ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
@@ -35,14 +36,16 @@ pub enum FileKind {
     /// Polygon file format (`.ply`), ASCII or binary: 3D polygon meshes,
     /// read and written.
     Ply,
-    /// 3D Manufacturing Format (`.3mf`): 3D triangle meshes, written only.
+    /// 3D Manufacturing Format (`.3mf`): 3D triangle meshes, read (the
+    /// build items through their components) and written.
     ThreeMf,
     /// Binary glTF 2.0 (`.glb`): 3D triangle meshes, read (the scene's
     /// mesh instances, welded) and written.
     Glb,
 }
 
-const SUPPORTED: &str = "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .glb (3D), .3mf (3D, write only)";
+const SUPPORTED: &str =
+    "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .3mf .glb (3D)";
 
 impl FileKind {
     /// Every kind, in the order of the list of supported extensions.
@@ -68,7 +71,7 @@ impl FileKind {
     /// assert_eq!(FileKind::from_path(Path::new("shape.WKT")).unwrap(), FileKind::Wkt);
     /// assert!(FileKind::from_path(Path::new("part.stl")).unwrap().is_mesh());
     /// assert!(FileKind::from_path(Path::new("part.glb")).unwrap().can_read());
-    /// assert!(!FileKind::from_path(Path::new("part.3mf")).unwrap().can_read());
+    /// assert!(!FileKind::from_path(Path::new("shape.svg")).unwrap().can_read());
     /// let e = FileKind::from_path(Path::new("shape.txt")).unwrap_err().to_string();
     /// assert!(e.contains(".3mf"), "{e}");
     /// let e = FileKind::from_path(Path::new("shape.png")).unwrap_err().to_string();
@@ -155,10 +158,9 @@ impl FileKind {
         matches!(self, FileKind::Stl | FileKind::ThreeMf | FileKind::Glb)
     }
 
-    /// `true` if files of this kind can be read (all but `.svg` and
-    /// `.3mf`).
+    /// `true` if files of this kind can be read (all but `.svg`).
     pub fn can_read(self) -> bool {
-        !matches!(self, FileKind::Svg | FileKind::ThreeMf)
+        !matches!(self, FileKind::Svg)
     }
 }
 
@@ -221,8 +223,8 @@ pub fn write_polygon_set(
     Ok(encoded.orphan_holes)
 }
 
-/// Reads a 3D polygon mesh from an OBJ, OFF, STL, PLY or binary glTF file
-/// (by extension): coordinates validated if `options` asks, and the closure
+/// Reads a 3D polygon mesh from an OBJ, OFF, STL, PLY, 3MF or binary
+/// glTF file (by extension): coordinates validated if `options` asks, and the closure
 /// constraints of section 4.2 checked when `check` is `true` (the first
 /// violation is returned as [`UmbraError::InvalidMesh`] naming the file,
 /// the face or vertex with its line or record, and for an open edge the
@@ -235,7 +237,10 @@ pub fn read_mesh(
 ) -> Result<PolygonMesh, UmbraError> {
     let kind = FileKind::from_path(path)?;
     if !kind.is_mesh() {
-        return Err(wrong_dimension(path, "3D (.obj, .off, .stl, .ply)"));
+        return Err(wrong_dimension(
+            path,
+            "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+        ));
     }
     if !kind.can_read() {
         return Err(write_only(path, kind));
@@ -246,6 +251,7 @@ pub fn read_mesh(
         FileKind::Stl => read_stl_bytes(&bytes, &file, options, check),
         FileKind::Ply => read_ply_bytes(&bytes, &file, options, check),
         FileKind::Glb => read_glb_bytes(&bytes, &file, options, check),
+        FileKind::ThreeMf => read_3mf_bytes(&bytes, &file, options, check),
         _ => {
             let text = decode(&bytes, &file, kind.name())?;
             read_mesh_text(text, &file, kind == FileKind::Off, options, check)

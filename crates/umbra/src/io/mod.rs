@@ -1,6 +1,6 @@
 //! File input and output (feature `io`): 2D polygon sets as WKT and
-//! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL, PLY
-//! and binary glTF (read and write), 3MF (write); `geo-types`
+//! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL, PLY,
+//! 3MF and binary glTF (read and write); `geo-types`
 //! conversions; and the dispatch by file extension ([`FileKind`]). Every
 //! reader names the file, the line or record, and the problem in its
 //! error; a reader never panics, and no count in a file makes it reserve
@@ -19,6 +19,7 @@ mod stl;
 mod svg;
 mod text;
 mod threemf;
+mod threemf_read;
 mod weld;
 mod wkt;
 mod wkt_diagnose;
@@ -41,6 +42,7 @@ pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};
 pub use stl::{mesh_to_stl, parse_stl};
 pub use svg::polygon_set_to_svg;
 pub use threemf::mesh_to_3mf;
+pub use threemf_read::parse_3mf;
 pub use wkt::{
     parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
     write_wkt_string, ReadOptions,
