@@ -89,10 +89,11 @@ def test_3mf_round_trips_and_reads_trimesh_scenes(tmp_path):
     umbra.write(cube(), path)
     back = umbra.read(path)
     assert back.is_valid() and back.volume() == cube().volume()
-    # trimesh's exporter (its 3MF writer needs networkx): two translated
-    # boxes and a mirrored icosphere.
+    # trimesh's exporter (its 3MF writer needs networkx and lxml): two
+    # translated boxes and a mirrored icosphere.
     trimesh = pytest.importorskip("trimesh")
     pytest.importorskip("networkx")
+    pytest.importorskip("lxml")
     import numpy as np
 
     scene = trimesh.Scene()

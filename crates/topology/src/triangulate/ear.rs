@@ -2,8 +2,9 @@
 //! repeated vertices from bridges, possibly self-overlapping.
 //!
 //! The scan for an ear is the plain one (from the vertex after the last
-//! ear, the first valid ear, else the first degenerate one, else the one
-//! of smallest absolute area) on every polygon. What makes it fast on big
+//! ear, the first valid ear whose chord passes through no vertex, else
+//! the first valid one, else the first degenerate one, else the one of smallest absolute
+//! area) on every polygon. What makes it fast on big
 //! polygons is the test of a valid ear's emptiness: only vertices in the
 //! ear's box can lie in the ear, so on polygons of [`INDEXED`] vertices or
 //! more (with finite coordinates) they are looked up in a [`Grid`] instead
@@ -24,6 +25,35 @@ use super::{in_box_and_triangle, orient, Search, P2};
 
 /// Polygons of at least this many vertices have their ear tests indexed.
 pub(super) const INDEXED: usize = 48;
+
+/// The sine of the turn at an ear's tip below which the tip counts as
+/// flat (about 1e-9): far above the rounding of a vertex computed on a
+/// facet's side (the turns seen there are 1e-16 to 1e-14), far below a
+/// corner anyone models.
+const FLAT_SINE: f64 = 1.0 / (1u64 << 30) as f64;
+
+/// Whether `p` lies on the chord `a c` to rounding: strictly between its
+/// ends, with a turn at `p` (the sine of the angle between `a -> p` and
+/// `p -> c`) of at most [`FLAT_SINE`]. An ear whose chord passes through
+/// a vertex that way (its own tip, or a vertex of a straight side the
+/// chord runs along) leaves a triangle of no area, now or when that
+/// vertex is clipped, which folds against the facets meeting there;
+/// section 4.8's ideal internal edge touches nothing but at its ends, so
+/// such an ear is clipped only when no other valid ear is left.
+fn on_chord(a: P2, c: P2, p: P2) -> bool {
+    let (u, v) = ([p[0] - a[0], p[1] - a[1]], [c[0] - p[0], c[1] - p[1]]);
+    let cross = u[0] * v[1] - u[1] * v[0];
+    let dot = u[0] * v[0] + u[1] * v[1];
+    let (lu, lv) = (u[0] * u[0] + u[1] * u[1], v[0] * v[0] + v[1] * v[1]);
+    dot > 0.0 && cross * cross <= FLAT_SINE * FLAT_SINE * lu * lv
+}
+
+/// How far a point on the chord `a c` to rounding ([`on_chord`]) can lie
+/// outside the chord's box: a turn of [`FLAT_SINE`] over the chord's
+/// length.
+fn chord_margin(a: P2, c: P2) -> f64 {
+    FLAT_SINE * ((c[0] - a[0]).abs() + (c[1] - a[1]).abs())
+}
 
 /// Ear clipping of `poly`, appending triangles of positions in `poly`.
 pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize; 3]>) {
@@ -83,9 +113,11 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
             out.push([p, r, s]);
             return;
         }
-        // Pass 1: a valid ear; pass 2: a degenerate one; pass 3: the
-        // smallest absolute area.
+        // Pass 1: a valid ear, one whose chord passes through no vertex
+        // first; pass 2: a degenerate one; pass 3: the smallest absolute
+        // area.
         let mut chosen = None;
+        let mut flat_ear = None;
         let mut degenerate = None;
         let mut smallest: Option<(f64, usize)> = None;
         let mut i = cur;
@@ -121,8 +153,41 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
                     }
                 };
                 if !blocked {
-                    chosen = Some(i);
-                    break;
+                    // The chord `c -> a` passing through a vertex (the
+                    // tip or another, to rounding) makes a flat triangle
+                    // now or later: clip another ear first if there is one.
+                    let touches = |j: usize| {
+                        let p = pos(j);
+                        p != pa && p != pc && on_chord(pa, pc, p)
+                    };
+                    let touched = touches(i)
+                        || match &grid {
+                            Some(g) => {
+                                let (lo, hi) = bounds([pa, pc]).unwrap_or((pa, pa));
+                                let m = chord_margin(pa, pc);
+                                g.any_in([lo[0] - m, lo[1] - m], [hi[0] + m, hi[1] + m], |j| {
+                                    let j = j as usize;
+                                    alive[j] && j != a && j != i && j != c && touches(j)
+                                })
+                            }
+                            None => {
+                                let mut j = next[c];
+                                let mut hit = false;
+                                while j != a {
+                                    if touches(j) {
+                                        hit = true;
+                                        break;
+                                    }
+                                    j = next[j];
+                                }
+                                hit
+                            }
+                        };
+                    if !touched {
+                        chosen = Some(i);
+                        break;
+                    }
+                    flat_ear.get_or_insert(i);
                 }
             } else if area == 0.0 && degenerate.is_none() {
                 degenerate = Some(i);
@@ -133,6 +198,7 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
             i = next[i];
         }
         let ear = chosen
+            .or(flat_ear)
             .or(degenerate)
             .or(smallest.map(|s| s.1))
             .unwrap_or(cur);

@@ -28,7 +28,11 @@
 //! 4. Each outer polygon is ear-clipped: an ear `(a, b, c)` adds the
 //!    internal edge `c -> a` to the triangle and `a -> c` to the remaining
 //!    polygon. A valid ear (anticlockwise, no other vertex in it) is taken
-//!    first, then a degenerate (zero-area) one. When neither exists the
+//!    first, one whose chord passes through no vertex before one that
+//!    does (through its tip or a vertex of a straight side, to a turn of
+//!    about 1e-9, as where the Boolean put vertices on a facet's side:
+//!    the flat triangle it leaves folds against the neighbouring facets);
+//!    then a degenerate (zero-area) one. When neither exists the
 //!    polygon is geometrically invalid, and the ear of smallest absolute
 //!    area is clipped. For a quadrilateral both diagonals are compared: a
 //!    valid one (two anticlockwise triangles) is taken; of two valid ones,
@@ -439,6 +443,37 @@ mod tests {
         assert_eq!(t.len(), 2);
         for tri in &t {
             assert!(tri.contains(&0) && tri.contains(&2), "{t:?}");
+        }
+    }
+
+    #[test]
+    fn no_chord_runs_along_a_side_straight_to_rounding() {
+        // A rectangle whose bottom side carries two vertices straight to
+        // rounding (as the Boolean leaves them where a facet is cut along
+        // a side): every triangle must have a proper area, whichever
+        // vertex the loop starts at; a chord through 2 or 3 (such as 1-4,
+        // or 2-4 over 3) would leave a flat one.
+        let pts: Vec<Point3> = vec![
+            [0.0, 3.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 1e-16, 0.0],
+            [2.0, -1e-16, 0.0],
+            [3.0, 0.0, 0.0],
+            [3.0, 3.0, 0.0],
+        ];
+        for start in 0..6u32 {
+            let hes: Vec<(u32, u32)> = (0..6)
+                .map(|i| ((start + i) % 6, (start + i + 1) % 6))
+                .collect();
+            let mut t = Vec::new();
+            triangulate_facet(&pts, &hes, &mut t);
+            assert_eq!(t.len(), 4);
+            assert!(balance(&t, &hes));
+            for tri in &t {
+                let [a, b, c] = tri.map(|v| pts[v as usize]);
+                let area = (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+                assert!(area > 0.5, "start {start}: {t:?}");
+            }
         }
     }
 
