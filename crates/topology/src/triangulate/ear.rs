@@ -48,13 +48,13 @@ fn on_chord(a: P2, c: P2, p: P2) -> bool {
     dot > 0.0 && cross * cross <= FLAT_SINE * FLAT_SINE * lu * lv
 }
 
-/// How far a point on the chord `a c` to rounding ([`on_chord`]) can lie
-/// outside the chord's box: a turn of [`FLAT_SINE`] over the chord's
-/// length.
-fn chord_margin(a: P2, c: P2) -> f64 {
-    FLAT_SINE * ((c[0] - a[0]).abs() + (c[1] - a[1]).abs())
+/// Whether `p` lies in the box of the triangle `a b c` (closed).
+fn in_box(a: P2, b: P2, c: P2, p: P2) -> bool {
+    p[0] >= a[0].min(b[0]).min(c[0])
+        && p[0] <= a[0].max(b[0]).max(c[0])
+        && p[1] >= a[1].min(b[1]).min(c[1])
+        && p[1] <= a[1].max(b[1]).max(c[1])
 }
-
 /// Ear clipping of `poly`, appending triangles of positions in `poly`.
 pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize; 3]>) {
     let n = poly.len();
@@ -126,10 +126,25 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
             let (pa, pb, pc) = (pos(a), pos(i), pos(c));
             let area = orient(pa, pb, pc);
             if area > 0.0 {
-                // Another remaining vertex, not at a corner, in the ear.
+                // Another remaining vertex, not at a corner, in the ear
+                // blocks it. One met in the ear's box on its chord (to
+                // rounding) does not, but the chord `c -> a` would pass
+                // through it, as through a flat tip: such an ear is
+                // clipped only when no other valid ear is left. Both
+                // searches test the same vertices, those in the ear's box.
+                let touched = std::cell::Cell::new(on_chord(pa, pc, pb));
                 let blocks = |j: usize| {
                     let p = pos(j);
-                    p != pa && p != pb && p != pc && in_box_and_triangle(pa, pb, pc, p)
+                    if p == pa || p == pb || p == pc {
+                        return false;
+                    }
+                    if in_box_and_triangle(pa, pb, pc, p) {
+                        return true;
+                    }
+                    if !touched.get() && in_box(pa, pb, pc, p) && on_chord(pa, pc, p) {
+                        touched.set(true);
+                    }
+                    false
                 };
                 let blocked = match &grid {
                     Some(g) => {
@@ -153,37 +168,7 @@ pub(super) fn ear_clip(poly: &[(u32, P2)], search: Search, out: &mut Vec<[usize;
                     }
                 };
                 if !blocked {
-                    // The chord `c -> a` passing through a vertex (the
-                    // tip or another, to rounding) makes a flat triangle
-                    // now or later: clip another ear first if there is one.
-                    let touches = |j: usize| {
-                        let p = pos(j);
-                        p != pa && p != pc && on_chord(pa, pc, p)
-                    };
-                    let touched = touches(i)
-                        || match &grid {
-                            Some(g) => {
-                                let (lo, hi) = bounds([pa, pc]).unwrap_or((pa, pa));
-                                let m = chord_margin(pa, pc);
-                                g.any_in([lo[0] - m, lo[1] - m], [hi[0] + m, hi[1] + m], |j| {
-                                    let j = j as usize;
-                                    alive[j] && j != a && j != i && j != c && touches(j)
-                                })
-                            }
-                            None => {
-                                let mut j = next[c];
-                                let mut hit = false;
-                                while j != a {
-                                    if touches(j) {
-                                        hit = true;
-                                        break;
-                                    }
-                                    j = next[j];
-                                }
-                                hit
-                            }
-                        };
-                    if !touched {
+                    if !touched.get() {
                         chosen = Some(i);
                         break;
                     }
