@@ -27,12 +27,7 @@ fuzz_target!(|data: &[u8]| {
         .iter()
         .flatten()
         .all(|&x| x.is_finite() && f64::from(x as f32) == x);
-    let proper: Vec<[u32; 3]> = tris
-        .triangles
-        .iter()
-        .copied()
-        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
-        .collect();
+    let proper = io::proper_triangles(&tris);
     if !exact || proper.is_empty() {
         return;
     }

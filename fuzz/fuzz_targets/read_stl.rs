@@ -27,12 +27,7 @@ fuzz_target!(|data: &[u8]| {
         // vertex) balances itself and triangulates to nothing (section
         // 4.8), so writing drops it: the proper triangles come back, the
         // same bit for bit (and numbered alike when none was dropped).
-        let proper: Vec<[u32; 3]> = tris
-            .triangles
-            .iter()
-            .copied()
-            .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
-            .collect();
+        let proper = io::proper_triangles(&tris);
         if proper.len() == tris.triangles.len() {
             assert_eq!(
                 format!("{:?}", back.triangles),

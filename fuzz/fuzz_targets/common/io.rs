@@ -38,3 +38,15 @@ pub fn write_mesh_everywhere(mesh: &PolygonMesh) -> bool {
     });
     finite && simple
 }
+
+/// The triangles of `mesh` without a repeated corner: what every mesh
+/// writer keeps (such a triangle balances itself and triangulates to
+/// nothing, section 4.8), so what a written file reads back as.
+#[allow(dead_code)] // Not every target that includes this module calls it.
+pub fn proper_triangles(mesh: &umbra::TriangleMesh) -> Vec<[u32; 3]> {
+    mesh.triangles
+        .iter()
+        .copied()
+        .filter(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0])
+        .collect()
+}

@@ -51,6 +51,7 @@ use gltf::json::mesh::{Mode, Semantic};
 use gltf::json::validation::Checked;
 use gltf::json::Root;
 use robust_arith::Point3;
+use std::borrow::Cow;
 use topology::{PolygonMesh, TriangleMesh};
 
 const FORMAT: &str = "glTF";
@@ -207,19 +208,14 @@ fn split_container<'b>(
     }
     let glb = gltf::binary::Glb::from_slice(bytes)
         .map_err(|e| malformed(file, format!("invalid binary glTF container: {e}")))?;
-    // Both chunks borrow from `bytes` (the container is parsed in place).
-    let (json, bin) = (glb.json, glb.bin);
-    let in_place = |chunk: &[u8]| -> Option<&'b [u8]> {
-        let start = (chunk.as_ptr() as usize).checked_sub(bytes.as_ptr() as usize)?;
-        bytes.get(start..start.checked_add(chunk.len())?)
+    // `Glb::from_slice` splits the slice in place: both chunks borrow
+    // from `bytes`.
+    let borrowed = |chunk: Cow<'b, [u8]>, what: &str| match chunk {
+        Cow::Borrowed(b) => Ok(b),
+        Cow::Owned(_) => Err(malformed(file, format!("the {what} chunk was copied"))),
     };
-    let json = in_place(&json).ok_or_else(|| malformed(file, "JSON chunk outside the file"))?;
-    let bin = match bin {
-        Some(b) => {
-            Some(in_place(&b).ok_or_else(|| malformed(file, "binary chunk outside the file"))?)
-        }
-        None => None,
-    };
+    let json = borrowed(glb.json, "JSON")?;
+    let bin = glb.bin.map(|b| borrowed(b, "binary")).transpose()?;
     Ok((json, bin))
 }
 
@@ -671,25 +667,32 @@ mod tests {
         (bin, positions)
     }
 
-    /// A document of one cube mesh placed by `nodes` (with `scenes`).
-    fn cube_doc(nodes: serde_json::Value, scenes: serde_json::Value) -> Vec<u8> {
-        let (bin, positions) = cube_bin();
-        let doc = json!({
+    /// The JSON document of one cube mesh over [`cube_bin`] (`bin_len`
+    /// bytes, positions first) whose index accessor holds `indices`
+    /// indices, without scenes or nodes.
+    fn cube_json(bin_len: usize, positions: usize, indices: usize) -> serde_json::Value {
+        json!({
             "asset": {"version": "2.0"},
-            "scenes": scenes,
-            "nodes": nodes,
             "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-            "buffers": [{"byteLength": bin.len()}],
+            "buffers": [{"byteLength": bin_len}],
             "bufferViews": [
                 {"buffer": 0, "byteOffset": 0, "byteLength": positions},
-                {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
+                {"buffer": 0, "byteOffset": positions, "byteLength": bin_len - positions}
             ],
             "accessors": [
                 {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
                  "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
-                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
+                {"bufferView": 1, "componentType": 5123, "count": indices, "type": "SCALAR"}
             ]
-        });
+        })
+    }
+
+    /// A file of one cube mesh placed by `nodes` (with `scenes`).
+    fn cube_doc(nodes: serde_json::Value, scenes: serde_json::Value) -> Vec<u8> {
+        let (bin, positions) = cube_bin();
+        let mut doc = cube_json(bin.len(), positions, 36);
+        doc["scenes"] = scenes;
+        doc["nodes"] = nodes;
         glb(&doc, &bin)
     }
 
@@ -841,22 +844,9 @@ mod tests {
 
         let (bin, positions) = cube_bin();
         let with = |edit: &dyn Fn(&mut serde_json::Value)| {
-            let mut doc = json!({
-                "asset": {"version": "2.0"},
-                "scenes": [{"nodes": [0]}],
-                "nodes": [{"mesh": 0}],
-                "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-                "buffers": [{"byteLength": bin.len()}],
-                "bufferViews": [
-                    {"buffer": 0, "byteOffset": 0, "byteLength": positions},
-                    {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
-                ],
-                "accessors": [
-                    {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
-                     "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
-                    {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
-                ]
-            });
+            let mut doc = cube_json(bin.len(), positions, 36);
+            doc["scenes"] = json!([{"nodes": [0]}]);
+            doc["nodes"] = json!([{"mesh": 0}]);
             edit(&mut doc);
             message(parse_glb(&glb(&doc, &bin), "bad.glb"))
         };
@@ -947,20 +937,7 @@ mod tests {
         // An index beyond the positions names the primitive and the index.
         let mut bad = bin.clone();
         bad[positions..positions + 2].copy_from_slice(&8u16.to_le_bytes());
-        let doc = json!({
-            "asset": {"version": "2.0"},
-            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-            "buffers": [{"byteLength": bad.len()}],
-            "bufferViews": [
-                {"buffer": 0, "byteOffset": 0, "byteLength": positions},
-                {"buffer": 0, "byteOffset": positions, "byteLength": bad.len() - positions}
-            ],
-            "accessors": [
-                {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
-                 "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
-                {"bufferView": 1, "componentType": 5123, "count": 36, "type": "SCALAR"}
-            ]
-        });
+        let doc = cube_json(bad.len(), positions, 36);
         let got = message(parse_glb(&glb(&doc, &bad), "idx.glb"));
         assert!(
             got.contains("mesh 0 primitive 0: index 0 is 8, but there are only 8 positions"),
@@ -972,20 +949,7 @@ mod tests {
     fn an_open_instance_is_reported_by_triangle_and_mesh() {
         // The cube without its last triangle.
         let (bin, positions) = cube_bin();
-        let doc = json!({
-            "asset": {"version": "2.0"},
-            "meshes": [{"primitives": [{"attributes": {"POSITION": 0}, "indices": 1}]}],
-            "buffers": [{"byteLength": bin.len()}],
-            "bufferViews": [
-                {"buffer": 0, "byteOffset": 0, "byteLength": positions},
-                {"buffer": 0, "byteOffset": positions, "byteLength": bin.len() - positions}
-            ],
-            "accessors": [
-                {"bufferView": 0, "componentType": 5126, "count": 8, "type": "VEC3",
-                 "min": [0.0, 0.0, 0.0], "max": [1.0, 1.0, 1.0]},
-                {"bufferView": 1, "componentType": 5123, "count": 33, "type": "SCALAR"}
-            ]
-        });
+        let doc = cube_json(bin.len(), positions, 33);
         let e = read_glb_bytes(
             &glb(&doc, &bin),
             "open.glb",
