@@ -1,14 +1,15 @@
-//! Fuzz target: the binary glTF reader on any bytes never panics and never
+//! Fuzz target: the glTF reader (binary or JSON, buffers in the binary
+//! chunk or in base64 data URIs) on any bytes never panics and never
 //! places more than its triangle budget; a mesh that reads is checked for
 //! closure (the linear `check_topology`), written in every mesh format to
 //! a sink, and (when every coordinate is an `f32` value, as untransformed
-//! positions are) written as `.glb` and read back to the same triangles
-//! by position (without the triangles with a repeated corner, which
-//! writing drops).
+//! positions are) written as `.glb` and as `.gltf` and each read back to
+//! the same triangles by position (without the triangles with a repeated
+//! corner, which writing drops).
 #![no_main]
 
 use libfuzzer_sys::fuzz_target;
-use umbra::{mesh_to_glb, parse_glb, TriangleMesh};
+use umbra::{mesh_to_glb, mesh_to_gltf, parse_glb, TriangleMesh};
 #[path = "common/io.rs"]
 mod io;
 use io::write_mesh_everywhere;
@@ -31,12 +32,15 @@ fuzz_target!(|data: &[u8]| {
     if !exact || proper.is_empty() {
         return;
     }
-    let bytes = mesh_to_glb(&mesh).expect("f32 coordinates are written");
-    let back = parse_glb(&bytes, "back.glb").expect("written glTF reads back");
     let kept = TriangleMesh::new(tris.vertices.clone(), proper);
-    assert_eq!(
-        canonical::triangles(&back),
-        canonical::triangles(&kept),
-        "glTF round trip"
-    );
+    let glb = mesh_to_glb(&mesh).expect("f32 coordinates are written");
+    let gltf = mesh_to_gltf(&mesh).expect("f32 coordinates are written");
+    for bytes in [glb, gltf] {
+        let back = parse_glb(&bytes, "back.gltf").expect("written glTF reads back");
+        assert_eq!(
+            canonical::triangles(&back),
+            canonical::triangles(&kept),
+            "glTF round trip"
+        );
+    }
 });

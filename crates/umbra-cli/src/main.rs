@@ -9,13 +9,13 @@
 //! ```
 //!
 //! The file extension decides the dimension: `.wkt` and `.geojson` are 2D
-//! polygon sets (`.svg` written), `.obj`, `.off`, `.stl`, `.ply`, `.3mf`
-//! and `.glb` are 3D meshes. 2D Booleans run the basic
+//! polygon sets (`.svg` written), `.obj`, `.off`, `.stl`, `.ply`, `.3mf`,
+//! `.glb` and `.gltf` are 3D meshes. 2D Booleans run the basic
 //! Boolean of chapter 4 by default and through simplification (chapter 6,
 //! which also resolves self-intersecting input and offers `xor`) with
 //! `--via simplify`; 3D Booleans run the polygon-mesh variant, or the
 //! triangle-mesh variant with `--triangulate` or when the output format
-//! holds triangles only (`.stl`, `.3mf`, `.glb`; section 4.8: operands
+//! holds triangles only (`.stl`, `.3mf`, `.glb`, `.gltf`; section 4.8: operands
 //! that are not triangle meshes are triangulated by internal edges first).
 //! The report's `variant` names the variant that ran.
 //!

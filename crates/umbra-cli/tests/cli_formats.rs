@@ -368,7 +368,7 @@ fn a_triangle_format_output_runs_the_triangle_variant() {
     let j: serde_json::Value = serde_json::from_slice(&c.stdout).unwrap();
     assert_eq!(j["self_intersecting_facet_pairs"], 0, "{j}");
     assert_eq!(j["two_manifold"], true, "{j}");
-    for ext in ["3mf", "glb"] {
+    for ext in ["3mf", "glb", "gltf"] {
         let r = run(&dir.join(format!("out.{ext}")), &[]);
         assert_eq!(r["variant"], "triangle mesh", "{ext}: {r}");
     }

@@ -1,5 +1,5 @@
 //! Files: every format of the command-line tool, decided by the extension
-//! (`.obj .off .stl .ply .3mf .glb` meshes read and written; `.wkt
+//! (`.obj .off .stl .ply .3mf .glb .gltf` meshes read and written; `.wkt
 //! .geojson` polygons read and written, `.svg` written),
 //! through the facade's readers and writers, so messages are the tool's.
 

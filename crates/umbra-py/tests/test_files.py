@@ -43,7 +43,7 @@ def test_boolean_results_round_trip(tmp_path, ext):
     assert back.check()["two_manifold"]
 
 
-@pytest.mark.parametrize("ext", MESH_EXACT + ["stl", "glb"])
+@pytest.mark.parametrize("ext", MESH_EXACT + ["stl", "glb", "gltf"])
 @pytest.mark.parametrize("ascii", [False, True])
 def test_an_empty_result_round_trips(tmp_path, ext, ascii):
     # Disjoint cubes intersect in the empty solid, which every readable
@@ -56,9 +56,10 @@ def test_an_empty_result_round_trips(tmp_path, ext, ascii):
     assert back.is_valid() and back.volume() == 0.0 and len(back.faces) == 0
 
 
-def test_glb_round_trips_and_reads_trimesh_scenes(tmp_path):
+@pytest.mark.parametrize("ext", ["glb", "gltf"])
+def test_gltf_round_trips_and_reads_trimesh_scenes(tmp_path, ext):
     # Umbra's own file: the cube's f32 coordinates come back exactly.
-    path = tmp_path / "cube.glb"
+    path = tmp_path / f"cube.{ext}"
     umbra.write(cube(), path)
     back = umbra.read(path)
     assert back.is_valid() and back.volume() == cube().volume()
@@ -75,8 +76,13 @@ def test_glb_round_trips_and_reads_trimesh_scenes(tmp_path):
     scene.add_geometry(box, node_name="b", transform=trimesh.transformations.translation_matrix([-4.0, 0, 0]))
     mirror = trimesh.transformations.rotation_matrix(0.3, [1, 1, 0]) @ np.diag([1.0, -1.0, 1.0, 1.0])
     scene.add_geometry(sphere, node_name="s", transform=mirror)
-    path = tmp_path / "scene.glb"
-    scene.export(path)
+    # .gltf: trimesh writes its buffers as files beside the document.
+    path = tmp_path / f"scene.{ext}"
+    if ext == "glb":
+        scene.export(path)
+    else:
+        for name, data in scene.export(file_type="gltf").items():
+            (tmp_path / (f"scene.{ext}" if name.endswith(".gltf") else name)).write_bytes(data)
     m = umbra.read(path)
     want = scene.to_geometry()
     assert m.is_valid() and len(m.faces) == len(want.faces)

@@ -8,9 +8,9 @@
 use crate::io::{rename_output, wrong_dimension_of as wrong_dimension};
 use crate::report::SetCounts;
 use crate::{
-    layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_obj, mesh_to_off, mesh_to_ply, mesh_to_stl,
-    polygon_set_to_svg, polygons_to_geojson, polygons_to_wkt, FileKind, MeshWriteOptions,
-    RingOrientation, UmbraError,
+    layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_gltf, mesh_to_obj, mesh_to_off, mesh_to_ply,
+    mesh_to_stl, polygon_set_to_svg, polygons_to_geojson, polygons_to_wkt, FileKind,
+    MeshWriteOptions, RingOrientation, UmbraError,
 };
 use topology::{PolygonMesh, PolygonSet2};
 
@@ -87,7 +87,8 @@ pub fn encode_polygon_set(
         | FileKind::Stl
         | FileKind::Ply
         | FileKind::ThreeMf
-        | FileKind::Glb => return Err(wrong_dimension(file, WANT)),
+        | FileKind::Glb
+        | FileKind::Gltf => return Err(wrong_dimension(file, WANT)),
     };
     let rings = layout.polygons.iter().map(Vec::len).sum();
     let points = layout.polygons.iter().flatten().map(Vec::len).sum();
@@ -106,7 +107,7 @@ pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec
     encode_mesh_with(kind, mesh, MeshWriteOptions::default(), file)
 }
 
-/// Encodes `mesh` as `kind` (OBJ, OFF, STL, PLY, 3MF or binary glTF)
+/// Encodes `mesh` as `kind` (OBJ, OFF, STL, PLY, 3MF or glTF)
 /// exactly as [`crate::write_mesh_with`] writes it; errors name `file`.
 pub fn encode_mesh_with(
     kind: FileKind,
@@ -121,10 +122,11 @@ pub fn encode_mesh_with(
         FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
         FileKind::ThreeMf => mesh_to_3mf(mesh),
         FileKind::Glb => mesh_to_glb(mesh),
+        FileKind::Gltf => mesh_to_gltf(mesh),
         FileKind::Wkt | FileKind::GeoJson | FileKind::Svg => {
             return Err(wrong_dimension(
                 file,
-                "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+                "3D (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
             ))
         }
     };

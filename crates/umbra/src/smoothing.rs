@@ -63,8 +63,11 @@ pub fn default_set_tolerance(set: &PolygonSet2) -> f64 {
 /// loop of three half-edges) by [`smooth_triangles`], which re-triangulates
 /// what it changes, so the result stays triangles; anything else by
 /// [`smooth_mesh`]. `variant` says which the caller expects: asking for
-/// [`MeshVariant::TriangleMesh`] on a mesh with other facets smooths it
-/// as a polygon mesh and then triangulates it by internal edges.
+/// [`MeshVariant::TriangleMesh`] on a mesh with other facets triangulates
+/// it by internal edges (section 4.8) and smooths those triangles, so the
+/// triangles returned are the ones smoothing cleaned (a polygon mesh
+/// smoothed first and triangulated afterwards can fold where a smoothed
+/// facet is no longer flat).
 pub fn smooth_solid(
     mesh: &PolygonMesh,
     variant: MeshVariant,
@@ -79,9 +82,9 @@ pub fn smooth_solid(
             })
         }
         (MeshVariant::TriangleMesh, None) => {
-            let out = smooth_mesh(mesh, options)?;
+            let out = smooth_triangles(&topology::triangulate_mesh(mesh), options)?;
             Ok(Smoothed {
-                shape: topology::triangulate_mesh(&out.shape).to_polygon_mesh(),
+                shape: out.shape.to_polygon_mesh(),
                 report: out.report,
             })
         }

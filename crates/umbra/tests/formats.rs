@@ -265,12 +265,10 @@ fn files_round_trip_through_the_dispatch() {
     assert!(std::fs::read(dir.join("d.ply"))
         .unwrap()
         .starts_with(b"ply\nformat binary_little_endian 1.0\n"));
-    // Binary glTF reads back as the cube's triangles, closed (the unit
-    // cube's coordinates are `f32` values, kept exactly).
-    // Binary glTF and 3MF read back as the cube's triangles, closed (the
+    // glTF (binary and JSON) and 3MF read back as the cube's triangles, closed (the
     // unit cube's coordinates are `f32` values, which glTF keeps exactly;
     // 3MF keeps every `f64`).
-    for name in ["c.glb", "c.3mf"] {
+    for name in ["c.glb", "c.gltf", "c.3mf"] {
         let path = dir.join(name);
         write_mesh(&path, &m).unwrap();
         let back = read_mesh(&path, MeshReadOptions::default(), true).unwrap();

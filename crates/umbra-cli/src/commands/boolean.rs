@@ -20,7 +20,7 @@ use umbra::{
 };
 
 /// Union, intersection, difference or (2D only) xor of two files
-/// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply/.3mf/.glb).
+/// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply/.3mf/.glb/.gltf).
 #[derive(clap::Args, Debug)]
 pub struct BooleanArgs {
     /// The operation.
@@ -45,7 +45,7 @@ pub struct BooleanArgs {
     /// 3D: run the triangle-mesh variant (section 4.8) instead of the
     /// polygon-mesh one: operands with other facets are triangulated by
     /// internal edges first, and the output is triangles. Implied when
-    /// the output is .stl, .3mf or .glb (formats of triangles only: the
+    /// the output is .stl, .3mf, .glb or .gltf (formats of triangles only: the
     /// polygon result triangulated on writing can fold where facets meet
     /// at the intersection curves, which the triangle variant's smoothing
     /// removes).
@@ -105,7 +105,7 @@ impl BooleanArgs {
         let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
         if meshes != 0 && meshes != 3 {
             return Err(usage(
-                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply, .3mf, .glb)",
+                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
             ));
         }
         self.out

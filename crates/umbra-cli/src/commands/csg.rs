@@ -45,7 +45,7 @@ pub struct CsgArgs {
     out: OutputArgs,
     /// Run the triangle-mesh variant of the 3D Boolean (every leaf and
     /// every result triangulated, section 4.8); the output is triangles.
-    /// Implied when the output is .stl, .3mf or .glb (formats of
+    /// Implied when the output is .stl, .3mf, .glb or .gltf (formats of
     /// triangles only).
     #[arg(long)]
     triangulate: bool,

@@ -16,9 +16,11 @@ use umbra::{
     SmoothOptions, SmoothReport, UmbraError,
 };
 
-/// Smooth a mesh (.obj, .off, .stl, .ply) or a 2D file (.wkt, .geojson):
-/// remove gaps, slivers, zero-length edges and coincident opposing facets
-/// below a tolerance (Appendix A). A triangle mesh stays a triangle mesh.
+/// Smooth a mesh (.obj, .off, .stl, .ply, .3mf, .glb, .gltf) or a 2D file
+/// (.wkt, .geojson): remove gaps, slivers, zero-length edges and
+/// coincident opposing facets below a tolerance (Appendix A). A triangle
+/// mesh stays a triangle mesh; a polygon mesh written to .stl, .3mf, .glb
+/// or .gltf is triangulated first and smoothed as triangles.
 #[derive(clap::Args, Debug)]
 pub struct SmoothArgs {
     /// The input file.
@@ -42,7 +44,7 @@ impl SmoothArgs {
         let out_kind = FileKind::from_path(&self.out.output)?;
         if in_kind.is_mesh() != out_kind.is_mesh() {
             return Err(crate::errors::usage(
-                "the input and the output must both be 2D files (.wkt, .geojson; .svg output) or both 3D files (.obj, .off, .stl, .ply, .3mf, .glb)",
+                "the input and the output must both be 2D files (.wkt, .geojson; .svg output) or both 3D files (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
             ));
         }
         self.out.refuse_overlaps(&[("the input", &self.input)])?;
@@ -56,7 +58,10 @@ impl SmoothArgs {
     fn run_3d(&self, out_kind: FileKind) -> anyhow::Result<ExitCode> {
         let mesh = read_mesh(&self.input, MeshReadOptions::default(), true)?;
         let tol = self.tol.unwrap_or_else(|| default_mesh_tolerance(&mesh));
-        let variant = if as_triangle_mesh(&mesh).is_some() {
+        // A triangle mesh stays one; a polygon mesh written to a format of
+        // triangles only is triangulated first and smoothed as triangles,
+        // so the triangles written are the ones smoothing cleaned.
+        let variant = if as_triangle_mesh(&mesh).is_some() || out_kind.holds_triangles_only() {
             MeshVariant::TriangleMesh
         } else {
             MeshVariant::PolygonMesh

@@ -16,7 +16,7 @@ list of rings (exterior first, then holes), each ring an (k, 2) float64
 array.
 
 Files: ``read`` and ``write`` for every format of the command-line tool
-(.obj .off .stl .ply .3mf .glb meshes; .wkt .geojson polygons; .svg
+(.obj .off .stl .ply .3mf .glb .gltf meshes; .wkt .geojson polygons; .svg
 polygons written only).
 
 Every error is an ``UmbraError`` (a ``ValueError``) with the command-line
@@ -145,8 +145,8 @@ def write(
     """Write a mesh or polygons to a file of the format of its extension.
 
     A ``Mesh`` (or a ``trimesh.Trimesh``) goes to .obj .off .stl .ply .3mf
-    .glb (STL and PLY binary unless ``ascii``; binary STL and glTF store
-    float32). Polygons (shapely or the plain form) go to .wkt .geojson
+    .glb .gltf (STL and PLY binary unless ``ascii``; binary STL and glTF
+    store float32; a .gltf carries its buffer in a data URI). Polygons (shapely or the plain form) go to .wkt .geojson
     .svg.
     """
     path = os.fspath(path)

@@ -6,7 +6,7 @@
 //! written).
 
 use super::geojson::read_geojson_file;
-use super::glb_read::read_glb_bytes;
+use super::gltf_read::read_gltf_bytes;
 use super::mesh_text::{read_mesh_text, MeshReadOptions};
 use super::ply::read_ply_bytes;
 use super::stl::read_stl_bytes;
@@ -42,14 +42,18 @@ pub enum FileKind {
     /// Binary glTF 2.0 (`.glb`): 3D triangle meshes, read (the scene's
     /// mesh instances, welded) and written.
     Glb,
+    /// glTF 2.0 as JSON (`.gltf`): 3D triangle meshes, read as `.glb` is
+    /// (buffers in `data:` URIs or in files beside the document) and
+    /// written (the buffer in a `data:` URI: one self-contained file).
+    Gltf,
 }
 
 const SUPPORTED: &str =
-    "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .3mf .glb (3D)";
+    "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .3mf .glb .gltf (3D)";
 
 impl FileKind {
     /// Every kind, in the order of the list of supported extensions.
-    pub const ALL: [FileKind; 9] = [
+    pub const ALL: [FileKind; 10] = [
         FileKind::Wkt,
         FileKind::GeoJson,
         FileKind::Svg,
@@ -59,6 +63,7 @@ impl FileKind {
         FileKind::Ply,
         FileKind::ThreeMf,
         FileKind::Glb,
+        FileKind::Gltf,
     ];
 
     /// The format of `path` by its extension (case-insensitive), or
@@ -111,6 +116,7 @@ impl FileKind {
             FileKind::Ply => "ply",
             FileKind::ThreeMf => "3mf",
             FileKind::Glb => "glb",
+            FileKind::Gltf => "gltf",
         }
     }
 
@@ -125,7 +131,7 @@ impl FileKind {
             FileKind::Stl => "STL",
             FileKind::Ply => "PLY",
             FileKind::ThreeMf => "3MF",
-            FileKind::Glb => "glTF",
+            FileKind::Glb | FileKind::Gltf => "glTF",
         }
     }
 
@@ -139,11 +145,12 @@ impl FileKind {
                 | FileKind::Ply
                 | FileKind::ThreeMf
                 | FileKind::Glb
+                | FileKind::Gltf
         )
     }
 
     /// `true` for the formats that hold triangles only (`.stl`, `.3mf`,
-    /// `.glb`): a polygon mesh written there is triangulated by internal
+    /// `.glb`, `.gltf`): a polygon mesh written there is triangulated by internal
     /// edges (section 4.8), so a command that computes a mesh for such a
     /// file runs the triangle-mesh variant, whose smoothing cleans the
     /// triangles themselves.
@@ -155,7 +162,10 @@ impl FileKind {
     /// assert!(!FileKind::from_path(Path::new("part.obj")).unwrap().holds_triangles_only());
     /// ```
     pub fn holds_triangles_only(self) -> bool {
-        matches!(self, FileKind::Stl | FileKind::ThreeMf | FileKind::Glb)
+        matches!(
+            self,
+            FileKind::Stl | FileKind::ThreeMf | FileKind::Glb | FileKind::Gltf
+        )
     }
 
     /// `true` if files of this kind can be read (all but `.svg`).
@@ -223,13 +233,14 @@ pub fn write_polygon_set(
     Ok(encoded.orphan_holes)
 }
 
-/// Reads a 3D polygon mesh from an OBJ, OFF, STL, PLY, 3MF or binary
-/// glTF file (by extension): coordinates validated if `options` asks, and the closure
+/// Reads a 3D polygon mesh from an OBJ, OFF, STL, PLY, 3MF or glTF
+/// (`.glb`, `.gltf`) file (by extension): coordinates validated if `options` asks, and the closure
 /// constraints of section 4.2 checked when `check` is `true` (the first
 /// violation is returned as [`UmbraError::InvalidMesh`] naming the file,
 /// the face or vertex with its line or record, and for an open edge the
 /// positions of its two vertices). STL and glTF triangles are welded by
-/// exact position (see [`crate::parse_stl`] and [`crate::parse_glb`]).
+/// exact position (see [`crate::parse_stl`] and [`crate::parse_glb`]); the
+/// buffers of a `.gltf` may be files beside it, named by relative paths.
 pub fn read_mesh(
     path: &Path,
     options: MeshReadOptions,
@@ -239,7 +250,7 @@ pub fn read_mesh(
     if !kind.is_mesh() {
         return Err(wrong_dimension(
             path,
-            "3D (.obj, .off, .stl, .ply, .3mf, .glb)",
+            "3D (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
         ));
     }
     if !kind.can_read() {
@@ -250,7 +261,9 @@ pub fn read_mesh(
     match kind {
         FileKind::Stl => read_stl_bytes(&bytes, &file, options, check),
         FileKind::Ply => read_ply_bytes(&bytes, &file, options, check),
-        FileKind::Glb => read_glb_bytes(&bytes, &file, options, check),
+        FileKind::Glb | FileKind::Gltf => {
+            read_gltf_bytes(&bytes, &file, path.parent(), options, check)
+        }
         FileKind::ThreeMf => read_3mf_bytes(&bytes, &file, options, check),
         _ => {
             let text = decode(&bytes, &file, kind.name())?;
@@ -273,8 +286,8 @@ pub fn write_mesh(path: &Path, mesh: &PolygonMesh) -> Result<(), UmbraError> {
     write_mesh_with(path, mesh, MeshWriteOptions::default())
 }
 
-/// Writes a 3D polygon mesh as OBJ, OFF, STL, PLY, 3MF or binary glTF (by
-/// extension). Facets with holes are written as their triangulation
+/// Writes a 3D polygon mesh as OBJ, OFF, STL, PLY, 3MF or glTF (`.glb`,
+/// or `.gltf` with the buffer embedded; by extension). Facets with holes are written as their triangulation
 /// (section 4.8); STL, 3MF and glTF hold triangles only, so every facet is
 /// triangulated there. STL (binary) and glTF store `f32` coordinates,
 /// rounded to nearest; the other formats keep every `f64` bit for bit.

@@ -1,6 +1,6 @@
 //! File input and output (feature `io`): 2D polygon sets as WKT and
 //! GeoJSON (read and write) and SVG (write); 3D meshes as OBJ, OFF, STL, PLY,
-//! 3MF and binary glTF (read and write); `geo-types`
+//! 3MF and glTF, binary and JSON (read and write); `geo-types`
 //! conversions; and the dispatch by file extension ([`FileKind`]). Every
 //! reader names the file, the line or record, and the problem in its
 //! error; a reader never panics, and no count in a file makes it reserve
@@ -9,8 +9,8 @@
 mod files;
 mod geo;
 mod geojson;
-mod glb;
-mod glb_read;
+mod gltf;
+mod gltf_read;
 mod mesh_text;
 mod origin;
 mod ply;
@@ -34,8 +34,8 @@ pub use geojson::{
     parse_geojson_polygons, polygons_to_geojson, read_geojson_file, read_geojson_str,
     write_geojson_file, write_geojson_string,
 };
-pub use glb::mesh_to_glb;
-pub use glb_read::parse_glb;
+pub use gltf::{mesh_to_glb, mesh_to_gltf};
+pub use gltf_read::parse_glb;
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
 pub use ply::{mesh_to_ply, parse_ply};
 pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};

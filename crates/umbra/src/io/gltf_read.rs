@@ -1,15 +1,15 @@
-//! Binary glTF 2.0 (`.glb`) reading: the triangles of every mesh that the
-//! scene places, through the node hierarchy's transforms, welded by exact
-//! position into one triangle mesh.
+//! glTF 2.0 reading, binary (`.glb`) and JSON (`.gltf`): the triangles of
+//! every mesh that the scene places, through the node hierarchy's
+//! transforms, welded by exact position into one triangle mesh.
 //!
 //! The `gltf` crate splits the binary container and deserializes the JSON
 //! document into its typed structures. Everything after that is done here
 //! on those structures, every index looked up with `get` and every offset
-//! and length checked against the binary chunk with checked arithmetic:
-//! the crate's validation and its `Document` API index the arrays
-//! directly (a POSITION accessor index out of range panics in its
-//! validation hook), and its accessor readers assert on mismatched strides
-//! and types and trust the counts, which a hostile file sets at will.
+//! and length checked against its buffer with checked arithmetic: the
+//! crate's validation and its `Document` API index the arrays directly (a
+//! POSITION accessor index out of range panics in its validation hook),
+//! and its accessor readers assert on mismatched strides and types and
+//! trust the counts, which a hostile file sets at will.
 //!
 //! - **Which meshes.** The nodes of the default scene (the first scene when
 //!   none is named), depth first; without scenes, every node that is no
@@ -30,10 +30,21 @@
 //!   no volume and are passed over. Positions must be `VEC3` of `FLOAT`
 //!   (the core specification's only choice); indices `SCALAR` of unsigned
 //!   bytes, shorts or ints, each below the position count. Sparse
-//!   accessors, accessors without a buffer view and buffers outside the
-//!   file (a `uri`) are refused with a message saying so. An extension the
-//!   file *requires* (mesh compression such as Draco or meshopt) is
-//!   refused by name.
+//!   accessors and accessors without a buffer view are refused with a
+//!   message saying so. An extension the file *requires* (mesh compression
+//!   such as Draco or meshopt) is refused by name.
+//! - **Buffers** (section 3.6.1). A buffer without a `uri` is the binary
+//!   chunk of a `.glb`. A `data:` URI carries its bytes in base64 (section
+//!   3.6.1.1; the padding may be left out). Any other URI is a file beside
+//!   the document, a relative reference with `%`-escapes (RFC 3986): read
+//!   from the document's directory when the document was read from a file
+//!   ([`Buffers::with_directory`]), refused otherwise. Only plain relative
+//!   paths are followed: a URI with a scheme (`http:`, `file:`), an
+//!   absolute path, a `..` segment or a backslash is refused, so a document
+//!   cannot make the reader open a file outside its own directory. At most
+//!   the buffer's `byteLength` is read from a file, and only a regular
+//!   file is read. A buffer is loaded the first time a primitive uses it,
+//!   so buffers of textures or animations are never touched.
 //! - **Welding.** Exporters split vertices at normal and texture seams, so
 //!   the corners are welded by exact position (`weld.rs`), across every
 //!   primitive and instance, as STL corners are. Errors of closure name a
@@ -46,12 +57,17 @@ use super::mesh_text::MeshReadOptions;
 use super::origin::{finish, Origins};
 use super::weld::Welder;
 use crate::UmbraError;
+use base64::engine::{DecodePaddingMode, GeneralPurpose, GeneralPurposeConfig};
+use base64::Engine;
 use gltf::json::accessor::{ComponentType, Type};
 use gltf::json::mesh::{Mode, Semantic};
 use gltf::json::validation::Checked;
 use gltf::json::Root;
 use robust_arith::Point3;
 use std::borrow::Cow;
+use std::cell::OnceCell;
+use std::io::Read;
+use std::path::Path;
 use topology::{PolygonMesh, TriangleMesh};
 
 const FORMAT: &str = "glTF";
@@ -79,39 +95,50 @@ fn malformed(file: &str, message: impl Into<String>) -> UmbraError {
     }
 }
 
-/// Parses binary glTF bytes into a welded triangle mesh, unchecked (see
-/// the module docs); `file` names the source in errors.
+/// Parses glTF bytes, binary (`.glb`) or JSON (`.gltf`), into a welded
+/// triangle mesh, unchecked (see the module docs); `file` names the source
+/// in errors. Buffers must be in the binary chunk or in `data:` URIs: bytes
+/// have no directory in which to find a buffer's file (read such a
+/// document with [`crate::read_mesh`]).
 ///
 /// ```
-/// use umbra::{mesh_to_glb, parse_glb, TriangleMesh};
+/// use umbra::{mesh_to_glb, mesh_to_gltf, parse_glb, TriangleMesh};
 /// // Coordinates that are `f32` values read back exactly.
 /// let tet = TriangleMesh::new(
 ///     vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 0.5]],
 ///     vec![[0, 1, 2], [0, 3, 1], [1, 3, 2], [0, 2, 3]],
 /// );
 /// let bytes = mesh_to_glb(&tet.to_polygon_mesh()).unwrap();
-/// let back = parse_glb(&bytes, "tet.glb").unwrap();
-/// assert_eq!(back, tet);
+/// assert_eq!(parse_glb(&bytes, "tet.glb").unwrap(), tet);
+/// let text = mesh_to_gltf(&tet.to_polygon_mesh()).unwrap();
+/// assert_eq!(parse_glb(&text, "tet.gltf").unwrap(), tet);
 /// ```
 pub fn parse_glb(bytes: &[u8], file: &str) -> Result<TriangleMesh, UmbraError> {
-    parse_glb_with_origins(bytes, file).map(|(mesh, _)| mesh)
+    parse_with_origins(bytes, file, None).map(|(mesh, _)| mesh)
 }
 
-/// Reads binary glTF bytes into a polygon mesh of triangles: welded,
+/// Reads glTF bytes (binary or JSON) into a polygon mesh of triangles:
+/// buffer files looked up in `directory` (the document's own), welded,
 /// coordinates validated if asked, closure checked if `check` (see
 /// [`crate::read_mesh`]).
-pub(crate) fn read_glb_bytes(
+pub(crate) fn read_gltf_bytes(
     bytes: &[u8],
     file: &str,
+    directory: Option<&Path>,
     options: MeshReadOptions,
     check: bool,
 ) -> Result<PolygonMesh, UmbraError> {
-    let (mesh, origins) = parse_glb_with_origins(bytes, file)?;
+    let (mesh, origins) = parse_with_origins(bytes, file, directory)?;
     finish(mesh.to_polygon_mesh(), &origins, file, options, check)
 }
 
-/// [`parse_glb`] with the glTF mesh of every triangle.
-fn parse_glb_with_origins(bytes: &[u8], file: &str) -> Result<(TriangleMesh, Origins), UmbraError> {
+/// [`parse_glb`] with the glTF mesh of every triangle, buffer files looked
+/// up in `directory`.
+fn parse_with_origins(
+    bytes: &[u8],
+    file: &str,
+    directory: Option<&Path>,
+) -> Result<(TriangleMesh, Origins), UmbraError> {
     if bytes.iter().all(u8::is_ascii_whitespace) {
         return Err(UmbraError::Empty {
             file: file.to_string(),
@@ -129,7 +156,7 @@ fn parse_glb_with_origins(bytes: &[u8], file: &str) -> Result<(TriangleMesh, Ori
     let mut reader = Reader {
         file,
         root: &root,
-        blob,
+        buffers: Buffers::new(&root, blob, directory),
         welder: Welder::new(0, "mesh"),
     };
     let scene = match root.scene {
@@ -219,13 +246,177 @@ fn split_container<'b>(
     Ok((json, bin))
 }
 
-/// The reading state: the document, the binary chunk and the welded
-/// triangles so far.
+/// The reading state: the document, its buffers and the welded triangles
+/// so far.
 struct Reader<'a> {
     file: &'a str,
     root: &'a Root,
-    blob: Option<&'a [u8]>,
+    buffers: Buffers<'a>,
     welder: Welder,
+}
+
+/// The buffers of a document (section 3.6.1), each loaded when first used:
+/// the binary chunk, a `data:` URI decoded, or a file of the document's
+/// directory read.
+struct Buffers<'a> {
+    root: &'a Root,
+    blob: Option<&'a [u8]>,
+    directory: Option<&'a Path>,
+    /// Buffer `i`'s bytes, or why it has none.
+    loaded: Vec<OnceCell<Result<Cow<'a, [u8]>, String>>>,
+}
+
+/// Base64 as in RFC 4648 with the standard alphabet, padding optional
+/// (encoders in the wild leave it out).
+const BASE64: GeneralPurpose = GeneralPurpose::new(
+    &base64::alphabet::STANDARD,
+    GeneralPurposeConfig::new().with_decode_padding_mode(DecodePaddingMode::Indifferent),
+);
+
+impl<'a> Buffers<'a> {
+    fn new(root: &'a Root, blob: Option<&'a [u8]>, directory: Option<&'a Path>) -> Self {
+        Buffers {
+            root,
+            blob,
+            directory,
+            loaded: (0..root.buffers.len()).map(|_| OnceCell::new()).collect(),
+        }
+    }
+
+    /// The bytes of buffer `index`, loaded once; `Err` says why there are
+    /// none (the caller adds where it was asked for).
+    fn get(&self, index: usize) -> Result<&[u8], String> {
+        let Some(cell) = self.loaded.get(index) else {
+            return Err(format!("buffer {index} does not exist"));
+        };
+        match cell.get_or_init(|| self.load(index)) {
+            Ok(bytes) => Ok(bytes),
+            Err(e) => Err(e.clone()),
+        }
+    }
+
+    fn load(&self, index: usize) -> Result<Cow<'a, [u8]>, String> {
+        let buffer = self
+            .root
+            .buffers
+            .get(index)
+            .ok_or_else(|| format!("buffer {index} does not exist"))?;
+        let Some(uri) = &buffer.uri else {
+            return self.blob.map(Cow::Borrowed).ok_or_else(|| {
+                format!("buffer {index} has no uri, and the file has no binary chunk")
+            });
+        };
+        if let Some(data) = strip_prefix_ignore_case(uri, "data:") {
+            return decode_data_uri(data)
+                .map(Cow::Owned)
+                .map_err(|e| format!("buffer {index}: {e}"));
+        }
+        let relative = relative_path(uri).map_err(|e| format!("buffer {index}: {e}"))?;
+        let Some(directory) = self.directory else {
+            return Err(format!(
+                "buffer {index} is the file '{}' beside the document, and bytes alone have no directory to find it in (read the document from its file)",
+                shown(uri)
+            ));
+        };
+        let path = directory.join(&relative);
+        read_buffer_file(&path, buffer.byte_length.0)
+            .map(Cow::Owned)
+            .map_err(|e| format!("buffer {index} ('{}'): {e}", path.display()))
+    }
+}
+
+/// `text` without `prefix`, compared ASCII case-insensitively (URI schemes
+/// are case-insensitive, RFC 3986 section 3.1).
+fn strip_prefix_ignore_case<'t>(text: &'t str, prefix: &str) -> Option<&'t str> {
+    let head = text.get(..prefix.len())?;
+    head.eq_ignore_ascii_case(prefix)
+        .then(|| &text[prefix.len()..])
+}
+
+/// At most 40 characters of a URI, for messages.
+fn shown(uri: &str) -> String {
+    let mut s: String = uri.chars().take(40).collect();
+    if s.len() < uri.len() {
+        s.push_str("...");
+    }
+    s
+}
+
+/// The bytes of a data URI's rest (after `data:`): `[<media type>];base64,`
+/// and the base64 text (RFC 2397; glTF requires base64).
+fn decode_data_uri(rest: &str) -> Result<Vec<u8>, String> {
+    let Some((header, data)) = rest.split_once(',') else {
+        return Err("a data URI without a comma".to_string());
+    };
+    if !header
+        .rsplit(';')
+        .next()
+        .is_some_and(|p| p.eq_ignore_ascii_case("base64"))
+    {
+        return Err(format!(
+            "the data URI 'data:{}' is not base64 (glTF data URIs are)",
+            shown(header)
+        ));
+    }
+    BASE64
+        .decode(data.trim_end())
+        .map_err(|e| format!("invalid base64 in a data URI: {e}"))
+}
+
+/// The relative file path a buffer URI names: `%`-escapes decoded (UTF-8),
+/// refused unless a plain relative path (no scheme, not absolute, no `..`
+/// segment, no backslash, no query or fragment).
+fn relative_path(uri: &str) -> Result<std::path::PathBuf, String> {
+    let refuse = |why: &str| Err(format!("the URI '{}' {why}", shown(uri)));
+    if uri.is_empty() {
+        return refuse("is empty");
+    }
+    let first = uri.split('/').next().unwrap_or("");
+    if first.contains(':') {
+        return refuse(
+            "has a scheme or a drive: only data URIs and files beside the document are read",
+        );
+    }
+    if uri.starts_with('/') {
+        return refuse("is an absolute path: only files beside the document are read");
+    }
+    if uri.contains(['?', '#']) {
+        return refuse("has a query or a fragment");
+    }
+    let decoded = percent_encoding::percent_decode_str(uri)
+        .decode_utf8()
+        .map_err(|_| format!("the URI '{}' does not decode to UTF-8", shown(uri)))?;
+    if decoded.contains('\\') || decoded.contains('\0') {
+        return refuse("holds a backslash or a NUL");
+    }
+    let mut path = std::path::PathBuf::new();
+    for segment in decoded.split('/') {
+        match segment {
+            "" | "." => {}
+            ".." => return refuse("leaves the document's directory ('..')"),
+            s if s.contains(':') => return refuse("has a ':' in a segment"),
+            s => path.push(s),
+        }
+    }
+    if path.as_os_str().is_empty() {
+        return refuse("names no file");
+    }
+    Ok(path)
+}
+
+/// At most `byte_length` bytes of the regular file `path`.
+fn read_buffer_file(path: &Path, byte_length: u64) -> Result<Vec<u8>, String> {
+    let file = std::fs::File::open(path).map_err(|e| e.to_string())?;
+    let meta = file.metadata().map_err(|e| e.to_string())?;
+    if !meta.is_file() {
+        return Err("not a regular file".to_string());
+    }
+    let want = byte_length.min(meta.len());
+    let mut bytes = Vec::with_capacity(usize::try_from(want).unwrap_or(0));
+    file.take(want)
+        .read_to_end(&mut bytes)
+        .map_err(|e| e.to_string())?;
+    Ok(bytes)
 }
 
 impl Reader<'_> {
@@ -334,23 +525,10 @@ impl Reader<'_> {
             malformed(file, format!("{what}: buffer view {index} does not exist"))
         })?;
         let b = view.buffer.value();
-        let buffer = self
-            .root
+        let blob = self
             .buffers
             .get(b)
-            .ok_or_else(|| malformed(file, format!("{what}: buffer {b} does not exist")))?;
-        if let Some(uri) = &buffer.uri {
-            let shown: String = uri.chars().take(40).collect();
-            return Err(malformed(
-                file,
-                format!(
-                    "{what}: buffer {b} is stored outside the binary chunk (uri \"{shown}\"), which Umbra does not read"
-                ),
-            ));
-        }
-        let blob = self
-            .blob
-            .ok_or_else(|| malformed(file, format!("{what}: the file has no binary chunk")))?;
+            .map_err(|e| malformed(file, format!("{what}: {e}")))?;
         let offset = view.byte_offset.map_or(0, |o| o.0);
         let length = view.byte_length.0;
         let range = usize::try_from(offset)
@@ -361,7 +539,7 @@ impl Reader<'_> {
             malformed(
                 file,
                 format!(
-                    "{what}: buffer view {index} (bytes {offset}..+{length}) lies beyond the binary chunk of {} bytes",
+                    "{what}: buffer view {index} (bytes {offset}..+{length}) lies beyond its buffer {b} of {} bytes",
                     blob.len()
                 ),
             )
@@ -733,7 +911,7 @@ mod tests {
             };
             assert_eq!(corners(&back), corners(&mesh));
             assert_eq!(back.vertices.len(), mesh.vertices.len());
-            read_glb_bytes(&bytes, "m.glb", MeshReadOptions::default(), true).unwrap();
+            read_gltf_bytes(&bytes, "m.glb", None, MeshReadOptions::default(), true).unwrap();
         }
     }
 
@@ -762,7 +940,7 @@ mod tests {
             .iter()
             .fold((f64::MAX, f64::MIN), |(a, b), &x| (a.min(x), b.max(x)));
         assert_eq!((lo, hi), (-4.0, 12.0));
-        read_glb_bytes(&bytes, "cubes.glb", MeshReadOptions::default(), true).unwrap();
+        read_gltf_bytes(&bytes, "cubes.glb", None, MeshReadOptions::default(), true).unwrap();
     }
 
     #[test]
@@ -866,7 +1044,7 @@ mod tests {
             ),
             (
                 &|d| d["bufferViews"][1]["byteLength"] = json!(1u64 << 40),
-                "beyond the binary chunk",
+                "beyond its buffer 0 of",
             ),
             (
                 &|d| d["accessors"][0]["componentType"] = json!(5123),
@@ -892,7 +1070,7 @@ mod tests {
             ),
             (
                 &|d| d["buffers"][0]["uri"] = json!("cube.bin"),
-                "outside the binary chunk",
+                "bytes alone have no directory",
             ),
             (
                 &|d| d["meshes"][0]["primitives"][0]["attributes"] = json!({"NORMAL": 0}),
@@ -950,9 +1128,10 @@ mod tests {
         // The cube without its last triangle.
         let (bin, positions) = cube_bin();
         let doc = cube_json(bin.len(), positions, 33);
-        let e = read_glb_bytes(
+        let e = read_gltf_bytes(
             &glb(&doc, &bin),
             "open.glb",
+            None,
             MeshReadOptions::default(),
             true,
         )
@@ -967,7 +1146,7 @@ mod tests {
         let read = |name: &str| {
             let path = test_support::data_path(&format!("gltf/{name}"));
             let bytes = std::fs::read(&path).unwrap();
-            read_glb_bytes(&bytes, name, MeshReadOptions::default(), true).unwrap()
+            read_gltf_bytes(&bytes, name, None, MeshReadOptions::default(), true).unwrap()
         };
         let nut = read("nut_unmerged.glb");
         assert_eq!(nut.facets.len(), 1046);
@@ -992,6 +1171,144 @@ mod tests {
         for (got, want) in hi.iter().zip([425.0, 126.0, 127.0]) {
             assert!((got - want).abs() < 1e-4, "{hi:?}");
         }
+    }
+
+    /// The `.gltf` files trimesh wrote: the nut with its two buffers in
+    /// files beside the document, and a scene (a sphere and a mirrored nut)
+    /// with its buffers in base64 data URIs.
+    #[test]
+    fn trimesh_gltf_documents_read_with_their_buffers() {
+        let nut = crate::read_mesh(
+            &test_support::data_path("gltf/nut_external/nut.gltf"),
+            MeshReadOptions::default(),
+            true,
+        )
+        .unwrap();
+        assert_eq!((nut.facets.len(), nut.vertices.len()), (1046, 523));
+        let v = polygon_mesh_volume(&nut);
+        assert!((v - 32171.322236985983).abs() < 1e-9 * v, "{v}");
+        // The same triangles as the `.glb` trimesh wrote of the nut.
+        let glb = crate::read_mesh(
+            &test_support::data_path("gltf/nut_unmerged.glb"),
+            MeshReadOptions::default(),
+            true,
+        )
+        .unwrap();
+        assert_eq!(nut, glb);
+        let path = test_support::data_path("gltf/scene_embedded.gltf");
+        let scene = crate::read_mesh(&path, MeshReadOptions::default(), true).unwrap();
+        assert_eq!(scene.facets.len(), 1886);
+        let v = polygon_mesh_volume(&scene);
+        assert!((v - 8457345.322236987).abs() < 1e-6 * v, "{v}");
+        // Data URIs need no directory: the bytes alone read the same.
+        let bytes = std::fs::read(&path).unwrap();
+        let alone = parse_glb(&bytes, "scene.gltf").unwrap();
+        assert_eq!(alone.to_polygon_mesh(), scene);
+        // The nut's document without its directory names the file it needs.
+        let bytes = std::fs::read(test_support::data_path("gltf/nut_external/nut.gltf")).unwrap();
+        let e = message(parse_glb(&bytes, "nut.gltf"));
+        assert!(
+            e.contains("gltf_buffer_") && e.contains("read the document from its file"),
+            "{e}"
+        );
+    }
+
+    /// The writer's `.gltf` reads back to the `.glb`'s triangles, and its
+    /// buffer is the `.glb`'s binary chunk.
+    #[test]
+    fn the_json_writer_embeds_the_binary_chunk() {
+        let m = crate::uv_sphere(1.5, 12, 7).unwrap();
+        let glb = crate::mesh_to_glb(&m).unwrap();
+        let text = crate::mesh_to_gltf(&m).unwrap();
+        let a = parse_glb(&glb, "m.glb").unwrap();
+        let b = parse_glb(&text, "m.gltf").unwrap();
+        assert_eq!(a, b);
+        assert!(!a.triangles.is_empty());
+        let doc: serde_json::Value = serde_json::from_slice(&text).unwrap();
+        let uri = doc["buffers"][0]["uri"].as_str().unwrap();
+        let data = uri
+            .strip_prefix("data:application/octet-stream;base64,")
+            .unwrap();
+        let decoded = base64::engine::general_purpose::STANDARD
+            .decode(data)
+            .unwrap();
+        let (_, blob) = split_container(&glb, "m.glb").unwrap();
+        let blob = blob.unwrap();
+        // The chunk is padded to four bytes; the buffer is not.
+        assert_eq!(decoded.as_slice(), &blob[..decoded.len()]);
+        assert_eq!(doc["buffers"][0]["byteLength"], json!(decoded.len()));
+        // The empty mesh: a document with no buffer.
+        let empty = crate::mesh_to_gltf(&PolygonMesh::default()).unwrap();
+        assert_eq!(
+            parse_glb(&empty, "e.gltf").unwrap(),
+            TriangleMesh::default()
+        );
+    }
+
+    /// A fresh directory under the system's temporary one.
+    fn temp_dir(name: &str) -> std::path::PathBuf {
+        let dir = std::env::temp_dir().join(format!("umbra-gltf-{name}-{}", std::process::id()));
+        let _ = std::fs::remove_dir_all(&dir);
+        std::fs::create_dir_all(&dir).unwrap();
+        dir
+    }
+
+    /// Buffers in files: `%`-escaped names and subdirectories are found;
+    /// URIs leaving the directory, schemes, absolute paths, missing files,
+    /// directories and short files are named errors; data URIs decode with
+    /// or without padding and refuse anything but base64.
+    #[test]
+    fn buffer_uris_are_resolved_inside_the_documents_directory_only() {
+        let (bin, positions) = cube_bin();
+        let dir = temp_dir("uris");
+        std::fs::create_dir_all(dir.join("sub dir")).unwrap();
+        std::fs::write(dir.join("sub dir").join("cube 1.bin"), &bin).unwrap();
+        std::fs::write(dir.join("short.bin"), &bin[..positions]).unwrap();
+        let read = |uri: &str| {
+            let mut doc = cube_json(bin.len(), positions, 36);
+            doc["buffers"][0]["uri"] = json!(uri);
+            let path = dir.join("m.gltf");
+            std::fs::write(&path, serde_json::to_vec(&doc).unwrap()).unwrap();
+            crate::read_mesh(&path, MeshReadOptions::default(), true)
+        };
+        let cube = read("sub%20dir/cube%201.bin").unwrap();
+        assert_eq!(cube.facets.len(), 12);
+        assert_eq!(read("./sub%20dir//cube%201.bin").unwrap(), cube);
+        let refused = [
+            ("../sub%20dir/cube%201.bin", "'..'"),
+            ("sub%20dir/%2E%2E/%2E%2E/x.bin", "'..'"),
+            ("/etc/passwd", "absolute path"),
+            ("http://example.com/cube.bin", "scheme"),
+            ("file:///tmp/cube.bin", "scheme"),
+            ("C:/cube.bin", "scheme or a drive"),
+            ("sub%20dir%5Ccube%201.bin", "backslash"),
+            ("cube.bin?x=1", "query"),
+            ("%FF.bin", "UTF-8"),
+            ("", "empty"),
+            ("missing.bin", "missing.bin"),
+            ("sub%20dir", "not a regular file"),
+            ("short.bin", "beyond its buffer 0"),
+            ("data:application/octet-stream,abc", "not base64"),
+            (
+                "data:application/octet-stream;base64,@@@@",
+                "invalid base64",
+            ),
+            ("data:base64", "without a comma"),
+        ];
+        for (uri, want) in refused {
+            let e = read(uri).unwrap_err().to_string();
+            assert!(e.contains(want) && e.contains("m.gltf"), "{uri}: {e}");
+        }
+        // Base64 with and without its padding, any case of the scheme.
+        let engine = base64::engine::general_purpose::STANDARD;
+        let padded = engine.encode(&bin);
+        let bare = padded.trim_end_matches('=').to_string();
+        assert_eq!(
+            read(&format!("data:application/gltf-buffer;base64,{padded}")).unwrap(),
+            cube
+        );
+        assert_eq!(read(&format!("DATA:;base64,{bare}")).unwrap(), cube);
+        let _ = std::fs::remove_dir_all(&dir);
     }
 
     proptest! {

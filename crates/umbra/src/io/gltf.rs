@@ -1,8 +1,10 @@
-//! Binary glTF 2.0 (`.glb`) writing: one mesh of one triangle primitive,
-//! positions (`VEC3` of `f32`, with the exact `min` and `max` of the stored
-//! values the specification requires) and `u32` indices, in a single
-//! buffer. The JSON chunk is padded with spaces and the binary chunk with
-//! zeros to 4-byte boundaries.
+//! glTF 2.0 writing, binary (`.glb`) and JSON (`.gltf`): one mesh of one
+//! triangle primitive, positions (`VEC3` of `f32`, with the exact `min` and
+//! `max` of the stored values the specification requires) and `u32`
+//! indices, in a single buffer. In a `.glb` the JSON chunk is padded with
+//! spaces and the binary chunk with zeros to 4-byte boundaries; a `.gltf`
+//! carries the buffer in a base64 `data:` URI, so the document is one
+//! self-contained file.
 //!
 //! Coordinates are rounded to the nearest `f32` (glTF positions are
 //! `f32`); a coordinate beyond the `f32` range is an error. Polygon facets
@@ -12,6 +14,7 @@
 
 use super::stl::to_f32;
 use crate::UmbraError;
+use base64::Engine;
 use serde_json::json;
 use topology::PolygonMesh;
 
@@ -31,8 +34,9 @@ fn too_big(what: &str) -> UmbraError {
     }
 }
 
-/// The `.glb` bytes of a mesh (see the module docs).
-pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
+/// The document and the buffer of a mesh (see the module docs): no buffer
+/// when the mesh has no triangle.
+fn document(mesh: &PolygonMesh) -> Result<(serde_json::Value, Vec<u8>), UmbraError> {
     let tris = boolean_3d::triangulate_mesh(mesh);
     let mut bin: Vec<u8> = Vec::with_capacity(12 * tris.vertices.len() + 12 * tris.triangles.len());
     let mut min = [f32::INFINITY; 3];
@@ -75,6 +79,12 @@ pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
     } else {
         bin.clear();
     }
+    Ok((doc, bin))
+}
+
+/// The `.glb` bytes of a mesh (see the module docs).
+pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
+    let (doc, mut bin) = document(mesh)?;
     let mut json_bytes =
         serde_json::to_vec(&doc).map_err(|e| UmbraError::Internal(format!("glTF JSON: {e}")))?;
     while !json_bytes.len().is_multiple_of(4) {
@@ -99,4 +109,27 @@ pub fn mesh_to_glb(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
         out.extend_from_slice(&bin);
     }
     Ok(out)
+}
+
+/// The `.gltf` bytes of a mesh (see the module docs): JSON text, the buffer
+/// in a base64 `data:` URI.
+///
+/// ```
+/// use umbra::{cuboid, mesh_to_gltf, DVec3};
+/// let text = mesh_to_gltf(&cuboid(DVec3::ONE, true).unwrap()).unwrap();
+/// let doc: serde_json::Value = serde_json::from_slice(&text).unwrap();
+/// let uri = doc["buffers"][0]["uri"].as_str().unwrap();
+/// assert!(uri.starts_with("data:application/octet-stream;base64,"));
+/// ```
+pub fn mesh_to_gltf(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
+    let (mut doc, bin) = document(mesh)?;
+    if !bin.is_empty() {
+        let encoded = base64::engine::general_purpose::STANDARD.encode(&bin);
+        doc["buffers"][0]["uri"] =
+            serde_json::Value::String(format!("data:application/octet-stream;base64,{encoded}"));
+    }
+    let mut text =
+        serde_json::to_vec(&doc).map_err(|e| UmbraError::Internal(format!("glTF JSON: {e}")))?;
+    text.push(b'\n');
+    Ok(text)
 }
