@@ -109,12 +109,28 @@ pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec
 
 /// Encodes `mesh` as `kind` (OBJ, OFF, STL, PLY, 3MF or glTF)
 /// exactly as [`crate::write_mesh_with`] writes it; errors name `file`.
+/// Where the format stores `f32` coordinates (binary STL, glTF), the mesh
+/// is rounded by [`crate::round_to_f32`], which smooths away any facet
+/// intersection the rounding would create.
 pub fn encode_mesh_with(
     kind: FileKind,
     mesh: &PolygonMesh,
     options: MeshWriteOptions,
     file: &str,
 ) -> Result<Vec<u8>, UmbraError> {
+    let rounded;
+    let mesh = if kind.stores_f32(options) {
+        rounded = crate::round_to_f32(mesh)
+            .map_err(|source| UmbraError::Smooth {
+                file: file.to_string(),
+                source,
+            })?
+            .mesh
+            .to_polygon_mesh();
+        &rounded
+    } else {
+        mesh
+    };
     let bytes = match kind {
         FileKind::Obj => Ok(mesh_to_obj(mesh).into_bytes()),
         FileKind::Off => Ok(mesh_to_off(mesh).into_bytes()),

@@ -94,6 +94,7 @@ mod ops;
 #[cfg(feature = "render")]
 mod render;
 mod report;
+mod round_f32;
 mod smoothing;
 
 pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
@@ -124,6 +125,7 @@ pub use report::{
 pub use robust_arith::{
     orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,
 };
+pub use round_f32::{round_to_f32, F32Rounding, RoundedToF32};
 pub use simplify_2d::{
     boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
     SimplifyError, SweepStats,

@@ -108,6 +108,33 @@ impl Bvh {
         &self.order
     }
 
+    /// `true` when some box meets `query` (closed).
+    pub(super) fn any_overlap(&self, boxes: &[[Point3; 2]], query: &[Point3; 2]) -> bool {
+        let mut stack = Vec::new();
+        if !self.nodes.is_empty() {
+            stack.push(0u32);
+        }
+        while let Some(n) = stack.pop() {
+            let node = &self.nodes[n as usize];
+            if !overlap(&[node.lo, node.hi], query) {
+                continue;
+            }
+            if node.count == 0 {
+                stack.push(node.first);
+                stack.push(node.first + 1);
+            } else {
+                let (s, e) = (node.first as usize, (node.first + node.count) as usize);
+                if self.order[s..e]
+                    .iter()
+                    .any(|&i| overlap(&boxes[i as usize], query))
+                {
+                    return true;
+                }
+            }
+        }
+        false
+    }
+
     /// Calls `visit` with every box id at a position after `pos` (in
     /// [`Bvh::order`]) whose box meets box `order()[pos]` (closed): called
     /// for every position, this visits each overlapping pair exactly once.
@@ -145,6 +172,36 @@ impl Bvh {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    #[test]
+    fn any_overlap_matches_brute_force() {
+        let mut seed = 7u64;
+        let mut next = || {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            (seed % 1000) as f64 / 100.0
+        };
+        let mut random_box = || {
+            let lo = [next(), next(), next()];
+            [
+                lo,
+                [
+                    lo[0] + next() / 5.0,
+                    lo[1] + next() / 5.0,
+                    lo[2] + next() / 5.0,
+                ],
+            ]
+        };
+        let boxes: Vec<[Point3; 2]> = (0..300).map(|_| random_box()).collect();
+        let bvh = Bvh::new(&boxes);
+        for _ in 0..500 {
+            let q = random_box();
+            let want = boxes.iter().any(|b| overlap(b, &q));
+            assert_eq!(bvh.any_overlap(&boxes, &q), want);
+        }
+        assert!(!Bvh::new(&[]).any_overlap(&[], &boxes[0]));
+    }
 
     #[test]
     fn queries_match_brute_force() {

@@ -406,6 +406,162 @@ pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
     pairs_with(mesh, true)
 }
 
+/// The facet pairs of [`self_intersecting_pairs`] that hold at least one
+/// facet `f` with `focus[f]`, found without testing the whole mesh: only
+/// the facets whose boxes meet a focus facet's box (the only ones that can
+/// meet it) and the facets whose boxes meet theirs (which hold every
+/// zero-area triangle that splits their edges, so their triangles are cut
+/// exactly as in the whole test) are triangulated and tested. The cost is
+/// a linear pass over the facets' boxes plus the test of that
+/// neighbourhood. `None` when an index is out of range or a coordinate is
+/// not finite (the whole test's precondition).
+///
+/// ```
+/// use topology::{check_mesh, self_intersecting_pairs_near, Facet, PolygonMesh};
+/// // Two tetrahedra, the second poking into the first.
+/// let mut v = vec![[0.0, 0.0, 0.0], [4.0, 0.0, 0.0], [0.0, 4.0, 0.0], [0.0, 0.0, 4.0]];
+/// v.extend(v.clone().iter().map(|p| [p[0] + 1.0, p[1] + 1.0, p[2] + 1.0]));
+/// let t = |o: u32| vec![[o, o + 2, o + 1], [o, o + 1, o + 3], [o + 1, o + 2, o + 3], [o, o + 3, o + 2]];
+/// let facets = t(0).into_iter().chain(t(4)).map(|f| Facet::from_loop(&f)).collect();
+/// let m = PolygonMesh::new(v, facets);
+/// let all = check_mesh(&m).self_intersecting_facet_pairs.unwrap();
+/// let every = self_intersecting_pairs_near(&m, &[true; 8]).unwrap();
+/// assert_eq!(every.len(), all);
+/// assert!(all > 0);
+/// let mut focus = [false; 8];
+/// focus[7] = true;
+/// let near = self_intersecting_pairs_near(&m, &focus).unwrap();
+/// assert!(near.iter().all(|p| p.contains(&7)));
+/// assert_eq!(near, every.iter().copied().filter(|p| p.contains(&7)).collect::<Vec<_>>());
+/// ```
+pub fn self_intersecting_pairs_near(mesh: &PolygonMesh, focus: &[bool]) -> Option<Vec<[u32; 2]>> {
+    let n = mesh.vertices.len() as u32;
+    let in_range = mesh
+        .facets
+        .iter()
+        .flat_map(|f| &f.half_edges)
+        .all(|h| h.start < n && h.end < n);
+    if !in_range {
+        return None;
+    }
+    pairs_near_with(
+        &mesh.vertices,
+        mesh.facets.len(),
+        |f, out| out.extend(mesh.facets[f].half_edges.iter().map(|h| h.start)),
+        |f| mesh.facets[f].clone(),
+        focus,
+    )
+}
+
+/// [`self_intersecting_pairs_near`] on a triangle mesh (each triangle a
+/// facet), without building its polygon mesh.
+pub fn self_intersecting_triangle_pairs_near(
+    mesh: &crate::TriangleMesh,
+    focus: &[bool],
+) -> Option<Vec<[u32; 2]>> {
+    let n = mesh.vertices.len() as u32;
+    if !mesh.triangles.iter().flatten().all(|&v| v < n) {
+        return None;
+    }
+    pairs_near_with(
+        &mesh.vertices,
+        mesh.triangles.len(),
+        |f, out| out.extend(mesh.triangles[f]),
+        |f| crate::Facet::from_loop(&mesh.triangles[f]),
+        focus,
+    )
+}
+
+/// The pairs near a focus over `count` facets given by their corner
+/// indices (`corners`, every index in range) and as facets (`facet`).
+fn pairs_near_with(
+    vertices: &[Point3],
+    count: usize,
+    corners: impl Fn(usize, &mut Vec<u32>) + Sync,
+    facet: impl Fn(usize) -> crate::Facet,
+    focus: &[bool],
+) -> Option<Vec<[u32; 2]>> {
+    let focus: Vec<bool> = (0..count)
+        .map(|f| focus.get(f).copied().unwrap_or(false))
+        .collect();
+    if !focus.contains(&true) {
+        return Some(Vec::new());
+    }
+    if !vertices.iter().flatten().all(|x| x.is_finite()) {
+        return None;
+    }
+    let boxes: Vec<[Point3; 2]> = (0..count)
+        .into_par_iter()
+        .map_init(Vec::new, |buf, f| {
+            buf.clear();
+            corners(f, buf);
+            let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+            for &v in buf.iter() {
+                let p = vertices[v as usize];
+                for k in 0..3 {
+                    b[0][k] = b[0][k].min(p[k]);
+                    b[1][k] = b[1][k].max(p[k]);
+                }
+            }
+            b
+        })
+        .collect();
+    // The facets whose boxes meet a box of `ring` (a facet mask).
+    let grow = |ring: &[bool]| -> Vec<bool> {
+        let inner: Vec<[Point3; 2]> = boxes
+            .iter()
+            .zip(ring)
+            .filter(|(_, &r)| r)
+            .map(|(b, _)| *b)
+            .collect();
+        let bvh = Bvh::new(&inner);
+        let (lo, hi) = inner.iter().fold(
+            ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]),
+            |(lo, hi), b| {
+                (
+                    [0, 1, 2].map(|k| lo[k].min(b[0][k])),
+                    [0, 1, 2].map(|k| hi[k].max(b[1][k])),
+                )
+            },
+        );
+        let all = [lo, hi];
+        boxes
+            .par_iter()
+            .zip(ring.par_iter())
+            .map(|(b, &r)| {
+                r || (b[0][0] <= b[1][0]
+                    && super::bvh::overlap(b, &all)
+                    && bvh.any_overlap(&inner, b))
+            })
+            .collect()
+    };
+    let near = grow(&focus);
+    let kept = grow(&near);
+    let ids: Vec<u32> = (0..count as u32).filter(|&f| kept[f as usize]).collect();
+    // The neighbourhood as a mesh of its own vertices only.
+    let mut index: HashMap<u32, u32> = HashMap::new();
+    let mut sub = PolygonMesh::default();
+    for &f in &ids {
+        let mut facet = facet(f as usize);
+        for h in &mut facet.half_edges {
+            for v in [&mut h.start, &mut h.end] {
+                *v = *index.entry(*v).or_insert_with(|| {
+                    sub.vertices.push(vertices[*v as usize]);
+                    sub.vertices.len() as u32 - 1
+                });
+            }
+        }
+        sub.facets.push(facet);
+    }
+    let mut pairs: Vec<[u32; 2]> = pairs_with(&sub, true)
+        .into_iter()
+        .map(|[a, b]| [ids[a as usize], ids[b as usize]])
+        .filter(|[a, b]| focus[*a as usize] || focus[*b as usize])
+        .collect();
+    pairs.sort_unstable();
+    Some(pairs)
+}
+
 /// [`self_intersecting_pairs`], big convex facets halved or not (the tests
 /// compare the two).
 fn pairs_with(mesh: &PolygonMesh, halving: bool) -> Vec<[u32; 2]> {
@@ -915,6 +1071,40 @@ mod tests {
                 .collect();
             prop_assert_eq!(caps, vec![0, 1, off / 2 + 2, off / 2 + 3]);
             prop_assert_eq!(pairs_with(&mesh, true), pairs_with(&mesh, false));
+        }
+
+        /// The pairs near a focus are the whole test's pairs that hold a
+        /// focus facet: random triangle soups on a small grid (coincident,
+        /// touching, zero-area and T-junction triangles among them) and
+        /// random focus masks.
+        #[test]
+        fn pairs_near_a_focus_are_the_whole_tests_restricted(
+            c in proptest::collection::vec(proptest::collection::vec(0i32..6, 3), 4..40),
+            t in proptest::collection::vec(proptest::collection::vec(0usize..40, 3), 1..30),
+            mask in any::<u64>(),
+        ) {
+            let v: Vec<Point3> = c.iter().map(|q| [q[0], q[1], q[2]].map(f64::from)).collect();
+            let n = v.len();
+            let facets: Vec<crate::Facet> = t
+                .iter()
+                .filter(|x| x[0] % n != x[1] % n && x[1] % n != x[2] % n && x[0] % n != x[2] % n)
+                .map(|x| crate::Facet::from_loop(&[x[0] % n, x[1] % n, x[2] % n].map(|i| i as u32)))
+                .collect();
+            let mesh = PolygonMesh::new(v, facets);
+            let focus: Vec<bool> = (0..mesh.facets.len()).map(|f| mask >> (f % 64) & 1 == 1).collect();
+            let want: Vec<[u32; 2]> = pairs_with(&mesh, true)
+                .into_iter()
+                .filter(|p| focus[p[0] as usize] || focus[p[1] as usize])
+                .collect();
+            let tris = crate::TriangleMesh::new(
+                mesh.vertices.clone(),
+                mesh.facets
+                    .iter()
+                    .map(|f| [0, 1, 2].map(|k| f.half_edges[k].start))
+                    .collect(),
+            );
+            prop_assert_eq!(self_intersecting_triangle_pairs_near(&tris, &focus), Some(want.clone()));
+            prop_assert_eq!(self_intersecting_pairs_near(&mesh, &focus), Some(want));
         }
     }
 

@@ -168,6 +168,26 @@ impl FileKind {
         )
     }
 
+    /// `true` when files of this kind, written with `options`, store `f32`
+    /// coordinates: binary STL and glTF (`.glb`, `.gltf`). Such files are
+    /// written through [`crate::round_to_f32`].
+    ///
+    /// ```
+    /// use umbra::{FileKind, MeshWriteOptions};
+    /// let text = MeshWriteOptions { text: true };
+    /// assert!(FileKind::Stl.stores_f32(MeshWriteOptions::default()));
+    /// assert!(!FileKind::Stl.stores_f32(text));
+    /// assert!(FileKind::Gltf.stores_f32(text));
+    /// assert!(!FileKind::ThreeMf.stores_f32(MeshWriteOptions::default()));
+    /// ```
+    pub fn stores_f32(self, options: MeshWriteOptions) -> bool {
+        match self {
+            FileKind::Stl => !options.text,
+            FileKind::Glb | FileKind::Gltf => true,
+            _ => false,
+        }
+    }
+
     /// `true` if files of this kind can be read (all but `.svg`).
     pub fn can_read(self) -> bool {
         !matches!(self, FileKind::Svg)
