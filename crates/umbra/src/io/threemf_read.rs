@@ -2208,6 +2208,36 @@ mod tests {
         }
     }
 
+    #[test]
+    fn a_production_package_written_by_lib3mf_reads_as_lib3mf_measured() {
+        // Figures of README.md: lib3mf's own reading of the file (trimesh
+        // reads a part named twice twice over).
+        let name = "lib3mf_production.3mf";
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/data/3mf")
+            .join(name);
+        let bytes = std::fs::read(&path).unwrap();
+        // Its meshes are in other parts, named by paths on components and
+        // on a build item.
+        let archive = ZipArchive::new(Cursor::new(&bytes[..])).unwrap();
+        let names: Vec<String> = archive
+            .file_names()
+            .map(|n| n.unwrap().to_string())
+            .collect();
+        for part in ["3D/Objects/object_1.model", "3D/Objects/object_2.model"] {
+            assert!(names.iter().any(|n| n == part), "{names:?}");
+        }
+        let m = fixture(name);
+        assert_eq!(m.triangles.len(), 32);
+        assert_close(volume(&m), 5.166666666666667, name);
+        let b = bounds(&m);
+        let want = [[-3.0, 0.0, 0.0], [21.0, 6.0, 16.0]];
+        for k in 0..3 {
+            assert_close(b[0][k], want[0][k], name);
+            assert_close(b[1][k], want[1][k], name);
+        }
+    }
+
     /// `bytes` with `edits` applied: each `(position, value, kind)` sets,
     /// inserts or removes a byte.
     fn mutate(bytes: &[u8], edits: &[(usize, u8, u8)]) -> Vec<u8> {
