@@ -2294,6 +2294,18 @@ mod tests {
             let _ = read_3mf_bytes(&mutate(&good, &edits), "m.3mf", MeshReadOptions::default(), true);
             let text = mutate(xml.as_bytes(), &text_edits);
             let _ = read_3mf_bytes(&stored(&text), "m.3mf", MeshReadOptions::default(), true);
+            // A Bambu-style package: its bytes, its root's text and its
+            // object part's text mutated.
+            let root = production_model(
+                &path_components_object(2, &[(OBJECT_PART, 1, "-1 0 0 0 1 0 0 0 1 0 0 0"), (OBJECT_PART, 1, IDENTITY_TEXT)]),
+                &(item(2, IDENTITY_TEXT) + &item(1, IDENTITY_TEXT).replace("<item ", &format!("<item p:path=\"{OBJECT_PART}\" "))),
+            );
+            let part = production_model(&mesh_object(1, "model", &cube), "");
+            let _ = read_3mf_bytes(&mutate(&bambu(&root, &[(OBJECT_PART, &part)]), &edits), "b.3mf", MeshReadOptions::default(), true);
+            let mutated_root = String::from_utf8_lossy(&mutate(root.as_bytes(), &text_edits)).into_owned();
+            let _ = read_3mf_bytes(&bambu(&mutated_root, &[(OBJECT_PART, &part)]), "b.3mf", MeshReadOptions::default(), true);
+            let mutated_part = String::from_utf8_lossy(&mutate(part.as_bytes(), &text_edits)).into_owned();
+            let _ = read_3mf_bytes(&bambu(&root, &[(OBJECT_PART, &mutated_part)]), "b.3mf", MeshReadOptions::default(), true);
         }
     }
 }
