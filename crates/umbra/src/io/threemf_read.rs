@@ -254,7 +254,7 @@ pub(crate) fn parse_3mf_with_origins(
             return Err(malformed(
                 file,
                 format!(
-                    "{} line {line}: the production path '/{}' names no part of the package; it holds {}",
+                    "{} line {line}: a production path names the part '/{}', which the package does not have; it holds {}",
                     part_name(parts.names.first().map_or("", String::as_str)),
                     part_name(&name),
                     entry_list(&archive)
@@ -1531,7 +1531,7 @@ mod tests {
             (good.replace("<mesh>", "<b:beamlattice xmlns:b=\"urn:b\"/><nomesh>").replace("</mesh>", "</nomesh>"), "line 4: object 1 has neither a <mesh> nor <components>"),
             (good.replace("<model ", "<model xmlns:b=\"http://schemas.microsoft.com/3dmanufacturing/beamlattice/2017/02\" requiredextensions=\"b\" "), "line 2: the model requires the extension 'b' (http://schemas.microsoft.com/3dmanufacturing/beamlattice/2017/02), which this reader does not support"),
             (good.replace("<model ", "<model requiredextensions=\"q\" "), "the model requires the extension 'q' (an undeclared prefix)"),
-            (good.replace("<item ", &format!("<item xmlns:p=\"{PRODUCTION}\" p:path=\"/3D/Objects/o.model\" ")), "line 34: the production path '/3D/Objects/o.model' names no part of the package; it holds '_rels/.rels', '3D/3dmodel.model'"),
+            (good.replace("<item ", &format!("<item xmlns:p=\"{PRODUCTION}\" p:path=\"/3D/Objects/o.model\" ")), "line 34: a production path names the part '/3D/Objects/o.model', which the package does not have; it holds '_rels/.rels', '3D/3dmodel.model'"),
             (good.replace("<object id=\"1\" type=\"model\">\n<mesh>", "<object id=\"1\" type=\"model\">\n<mesh>\n</mesh>\n</object>\n<object id=\"1\">\n<mesh>"), "line 8: duplicate object id 1 (first defined on line 4)"),
             (good.replace("<?xml", "<!DOCTYPE model [<!ENTITY a \"aaaa\">]>\n<?xml"), "malformed XML"),
         ];
@@ -1885,7 +1885,7 @@ mod tests {
         ));
         assert_eq!(
             e,
-            "t.3mf: malformed 3MF: 3D/3dmodel.model line 6: the production path '/3D/Objects/Object_1.model' names no part of the package; it holds '_rels/.rels', '3D/3dmodel.model', '3D/_rels/3dmodel.model.rels', 'Metadata/plate_1.png', 'Metadata/model_settings.config', '3D/Objects/object_1.model'"
+            "t.3mf: malformed 3MF: 3D/3dmodel.model line 6: a production path names the part '/3D/Objects/Object_1.model', which the package does not have; it holds '_rels/.rels', '3D/3dmodel.model', '3D/_rels/3dmodel.model.rels', 'Metadata/plate_1.png', 'Metadata/model_settings.config', '3D/Objects/object_1.model'"
         );
         for path in [
             "/Metadata/plate_1.png",
