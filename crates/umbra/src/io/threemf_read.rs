@@ -1,4 +1,5 @@
-//! 3MF reading (3D Manufacturing Format, core specification 1.4).
+//! 3MF reading (3D Manufacturing Format, core specification 1.4, and the
+//! production extension's paths to other model parts).
 //!
 //! A 3MF file is a zip package (Open Packaging Conventions). The package
 //! relationship part `_rels/.rels` names the root model part by a
@@ -39,20 +40,46 @@
 //! (which a build item must not reference) are not solids: they are left
 //! out, as the specification allows for supports ("MAY be ignored").
 //! The type of an object with components is ignored, as the specification
-//! says (its components' types decide). Components or items that name an
-//! object in another part (the production extension's `path` attribute)
-//! are refused as unsupported. Forward references (an object used before
-//! its definition, which producers must not write) are accepted.
+//! says (its components' types decide). Forward references (an object
+//! used before its definition, which producers must not write) are
+//! accepted.
+//!
+//! Production extension paths (1.2, section 3): a `<component>` or
+//! `<item>` of the root model part with a `p:path` names its object in
+//! another model part of the package, as Bambu Studio, Orca Slicer and
+//! lib3mf write them (`3D/3dmodel.model` of components whose meshes are in
+//! `3D/Objects/object_1.model`). The path is the part's absolute name in
+//! the package (its one leading `/` dropped, compared with the zip entry
+//! names case-sensitively; a path equal to the root part's name refers to
+//! the root part). It must end in `.model` (ASCII case aside), so a path
+//! never makes the reader open a thumbnail, a relationship or a settings
+//! entry; a part the package lacks is an error naming it. The relationship
+//! part `3D/_rels/3dmodel.model.rels`, which should list the referenced
+//! parts, is not read: the path alone decides (leniently, for producers
+//! that forget it). Each part is read and parsed once, however many
+//! references name it, with the same reader as the root part: its objects
+//! have their own ids, its components without a path refer to its own
+//! objects, and its `<build>` (empty, and optional here) is ignored, as the
+//! build is the root part's alone. A `p:path` in a part other than the
+//! root is refused, as section 3.2 requires ("Any consumer of a 3MF
+//! package that contains path attributes in components in a non-root model
+//! file MUST generate an error"), so references cross parts at most once,
+//! from the root down; cycles and depth are checked over objects of all
+//! parts alike (a root-part path naming the root part itself can close a
+//! cycle, and is refused as any cycle is).
 //!
 //! Vertex and triangle places are the lines of their XML elements in the
-//! model part, so a closure violation names the triangle and its line.
+//! model part that holds them (the part is not named in a closure
+//! violation; errors of reading name it), so a closure violation names the
+//! triangle and its line.
 //! A triangle with a repeated index (forbidden by the specification) is
 //! kept as read, for the closure check to judge, as the other readers do.
 //! A well-formed model without triangles is the empty mesh.
 //!
-//! Hostile input: the model part is decompressed through `Read::take` to at
-//! most [`part_cap`] bytes (a fixed floor, 64 times the package's size, and
-//! an absolute ceiling: see there); component nesting is limited to
+//! Hostile input: every model part is decompressed through `Read::take` to
+//! at most [`part_cap`] bytes (a fixed floor, 64 times the package's size,
+//! and an absolute ceiling: see there), and all the model parts read
+//! together to at most the same number; component nesting is limited to
 //! [`MAX_DEPTH`] levels and cycles are refused; the vertices and triangles
 //! that instancing expands to are counted before any is produced and
 //! refused past [`INSTANCE_BUDGET`] (unless the file spells that many out
@@ -76,11 +103,12 @@ const FORMAT: &str = "3MF";
 const CORE: &str = "http://schemas.microsoft.com/3dmanufacturing/core/2015/02";
 /// The namespace of Open Packaging Conventions relationships.
 const RELATIONSHIPS: &str = "http://schemas.openxmlformats.org/package/2006/relationships";
-/// The production extension (its `path` attribute names another part).
+/// The production extension (its `path` attribute names another model
+/// part).
 const PRODUCTION: &str = "http://schemas.microsoft.com/3dmanufacturing/production/2015/06";
 /// Extensions whose content this reader may ignore safely when a file
-/// requires them: materials and colours, production (UUIDs; a `path` is
-/// refused where it occurs) and triangle sets.
+/// requires them: materials and colours, production (UUIDs are ignored;
+/// a `path` is followed) and triangle sets.
 const IGNORABLE_EXTENSIONS: [&str; 3] = [
     "http://schemas.microsoft.com/3dmanufacturing/material/2015/02",
     PRODUCTION,
@@ -90,6 +118,9 @@ const IGNORABLE_EXTENSIONS: [&str; 3] = [
 const RELS_PART: &str = "_rels/.rels";
 /// Where the model is when no relationship names it.
 const DEFAULT_MODEL: &str = "3D/3dmodel.model";
+/// How the name of a model part ends (ASCII case aside), the only parts a
+/// production path may name.
+const MODEL_SUFFIX: &str = ".model";
 
 /// The smallest decompressed size allowed for any package: 16 MiB, so a
 /// small package of very regular XML (which deflate compresses 100-fold
@@ -124,10 +155,15 @@ fn malformed(file: &str, message: impl Into<String>) -> UmbraError {
     }
 }
 
-/// The decompressed size allowed for the model part of a package of
+/// The decompressed size allowed for a model part of a package of
 /// `package_len` bytes: [`PART_RATIO`] times its size, at least
 /// [`PART_FLOOR`] and at most [`PART_CEILING`]. The package's own size
 /// bounds the ratio (the sizes the zip directory declares could lie).
+/// The same number bounds all the model parts of the package together
+/// (the root and every part its production paths name): the ratio is one
+/// of the package's bytes however they are split into parts, so a package
+/// of thousands of small parts holds no more in memory than one of a
+/// single part.
 fn part_cap(package_len: usize) -> u64 {
     (package_len as u64)
         .saturating_mul(PART_RATIO)
@@ -167,8 +203,9 @@ pub(crate) fn read_3mf_bytes(
     finish(mesh.to_polygon_mesh(), &origins, file, options, check)
 }
 
-/// [`parse_3mf`] with the model part's line of every vertex and triangle.
-/// A file of nothing but white space is [`UmbraError::Empty`].
+/// [`parse_3mf`] with the line of every vertex and triangle (in the model
+/// part that holds it). A file of nothing but white space is
+/// [`UmbraError::Empty`].
 pub(crate) fn parse_3mf_with_origins(
     bytes: &[u8],
     file: &str,
@@ -184,8 +221,9 @@ pub(crate) fn parse_3mf_with_origins(
             format!("not a 3MF package (a 3MF file is a zip archive): {e}"),
         )
     })?;
-    let (part, named_by) = model_part_name(&mut archive, file)?;
-    let Some(xml) = read_part(&mut archive, &part, part_cap(bytes.len()), file)? else {
+    let (root, named_by) = model_part_name(&mut archive, file)?;
+    let mut budget = Budget::new(part_cap(bytes.len()));
+    let Some(xml) = read_part(&mut archive, &root, &mut budget, file)? else {
         let by = match named_by {
             Some(line) => format!("named as the model by {RELS_PART} line {line}"),
             None => format!("the default, as {RELS_PART} names no model"),
@@ -194,21 +232,115 @@ pub(crate) fn parse_3mf_with_origins(
             file,
             format!(
                 "the package has no model part '{}' ({by}); it holds {}",
-                shorten(&part),
+                part_name(&root),
                 entry_list(&archive)
             ),
         ));
     };
-    let text = decode(&xml, file, FORMAT).map_err(|e| in_part(e, &part))?;
+    let mut parts = Parts {
+        names: vec![root.clone()],
+        lines: vec![0],
+        index: HashMap::from([(root, 0)]),
+    };
+    let mut models = vec![read_model_part(&xml, file, 0, &mut parts)?];
+    drop(xml);
+    // The parts the root model's paths name, each read once, in the order
+    // first named (a non-root part names no further part).
+    while let (Some(name), Some(&line)) = (
+        parts.names.get(models.len()).cloned(),
+        parts.lines.get(models.len()),
+    ) {
+        let Some(xml) = read_part(&mut archive, &name, &mut budget, file)? else {
+            return Err(malformed(
+                file,
+                format!(
+                    "{} line {line}: a production path names the part '/{}', which the package does not have; it holds {}",
+                    part_name(parts.names.first().map_or("", String::as_str)),
+                    part_name(&name),
+                    entry_list(&archive)
+                ),
+            ));
+        };
+        let model = read_model_part(&xml, file, models.len(), &mut parts)?;
+        models.push(model);
+    }
+    expand(&models, file)
+}
+
+/// Reads the model part `parts.names[index]` from its bytes `xml`.
+fn read_model_part(
+    xml: &[u8],
+    file: &str,
+    index: usize,
+    parts: &mut Parts,
+) -> Result<Model, UmbraError> {
+    let part = parts.names.get(index).cloned().unwrap_or_default();
+    let text = decode(xml, file, FORMAT).map_err(|e| in_part(e, &part))?;
     let doc = parse_xml(text, file, &part)?;
     let place = Place {
         file,
         part: &part,
+        index,
         doc: &doc,
         lines: Lines::new(text),
     };
-    let model = read_model(&place)?;
-    expand(&model, &place)
+    read_model(&place, parts)
+}
+
+/// The model parts named so far: the root model part (index 0) and the
+/// parts its production paths name, in the order first named.
+struct Parts {
+    /// Entry names (without a leading `/`).
+    names: Vec<String>,
+    /// The line of the root model's first reference to each part (0 for
+    /// the root itself).
+    lines: Vec<u32>,
+    /// The index of each name.
+    index: HashMap<String, usize>,
+}
+
+impl Parts {
+    /// The index of the part that the production path `path` names (the
+    /// root model's reference on `line`): an absolute name in the package
+    /// (one leading `/` is dropped; one without is taken from the package's
+    /// root alike), which must end in `.model` (a model part, never a
+    /// thumbnail, relationship or settings entry).
+    fn named(&mut self, path: &str, line: u32) -> Result<usize, String> {
+        let trimmed = path.trim();
+        let name = trimmed.strip_prefix('/').unwrap_or(trimmed);
+        let is_model = name
+            .len()
+            .checked_sub(MODEL_SUFFIX.len())
+            .and_then(|at| name.as_bytes().get(at..))
+            .is_some_and(|end| end.eq_ignore_ascii_case(MODEL_SUFFIX.as_bytes()));
+        if !is_model || name.len() == MODEL_SUFFIX.len() {
+            return Err(format!(
+                "the production path '{}' does not name a model part (a part whose name ends in {MODEL_SUFFIX})",
+                part_name(path)
+            ));
+        }
+        if let Some(&k) = self.index.get(name) {
+            return Ok(k);
+        }
+        let k = self.names.len();
+        self.names.push(name.to_string());
+        self.lines.push(line);
+        self.index.insert(name.to_string(), k);
+        Ok(k)
+    }
+}
+
+/// A part name for a message: at most 120 characters, escaped.
+fn part_name(name: &str) -> String {
+    let mut out: String = name
+        .chars()
+        .take(120)
+        .flat_map(char::escape_debug)
+        .collect();
+    if name.chars().nth(120).is_some() {
+        out.push_str("...");
+    }
+    out
 }
 
 /// The names of the package's entries for a message (at most 8).
@@ -238,21 +370,39 @@ fn in_part(error: UmbraError, part: &str) -> UmbraError {
         } => UmbraError::Malformed {
             file,
             format,
-            message: format!("{}: {message}", shorten(part)),
+            message: format!("{}: {message}", part_name(part)),
         },
         other => other,
     }
 }
 
+/// The decompressed bytes a package may still use: at most `part` bytes
+/// for any one part, at most `left` more in all.
+struct Budget {
+    part: u64,
+    left: u64,
+}
+
+impl Budget {
+    /// `cap` bytes for one part and for all together.
+    fn new(cap: u64) -> Self {
+        Budget {
+            part: cap,
+            left: cap,
+        }
+    }
+}
+
 /// The decompressed bytes of the entry `name`, or `None` if the package
-/// has no such entry; more than `cap` bytes is an error (a zip bomb).
+/// has no such entry; more than the `budget` allows is an error (a zip
+/// bomb), and what is read is taken from it.
 fn read_part(
     archive: &mut ZipArchive<Cursor<&[u8]>>,
     name: &str,
-    cap: u64,
+    budget: &mut Budget,
     file: &str,
 ) -> Result<Option<Vec<u8>>, UmbraError> {
-    let shown = shorten(name);
+    let shown = part_name(name);
     let entry = match archive.by_name(name) {
         Ok(entry) => entry,
         Err(ZipError::FileNotFound) => return Ok(None),
@@ -263,19 +413,28 @@ fn read_part(
             ))
         }
     };
+    let cap = budget.part.min(budget.left);
     let mut out = Vec::new();
     entry
         .take(cap.saturating_add(1))
         .read_to_end(&mut out)
         .map_err(|e| malformed(file, format!("{shown}: cannot decompress the part: {e}")))?;
-    if out.len() as u64 > cap {
+    let len = out.len() as u64;
+    if len > cap {
+        let what = if cap < budget.part {
+            format!(
+                "the model parts read so far and this one decompress to more than {} bytes together",
+                budget.part
+            )
+        } else {
+            format!("the part decompresses to more than {cap} bytes")
+        };
         return Err(malformed(
             file,
-            format!(
-                "{shown}: the part decompresses to more than {cap} bytes, the limit for a package of this size (a zip bomb?)"
-            ),
+            format!("{shown}: {what}, the limit for a package of this size (a zip bomb?)"),
         ));
     }
+    budget.left -= len;
     Ok(Some(out))
 }
 
@@ -288,7 +447,11 @@ fn parse_xml<'a>(text: &'a str, file: &str, part: &str) -> Result<Document<'a>, 
     Document::parse_with_options(text, options).map_err(|e| {
         malformed(
             file,
-            format!("{} line {}: malformed XML: {e}", shorten(part), e.pos().row),
+            format!(
+                "{} line {}: malformed XML: {e}",
+                part_name(part),
+                e.pos().row
+            ),
         )
     })
 }
@@ -299,7 +462,7 @@ fn model_part_name(
     archive: &mut ZipArchive<Cursor<&[u8]>>,
     file: &str,
 ) -> Result<(String, Option<u32>), UmbraError> {
-    let Some(rels) = read_part(archive, RELS_PART, RELS_CAP, file)? else {
+    let Some(rels) = read_part(archive, RELS_PART, &mut Budget::new(RELS_CAP), file)? else {
         return Ok((DEFAULT_MODEL.to_string(), None));
     };
     let text = decode(&rels, file, FORMAT).map_err(|e| in_part(e, RELS_PART))?;
@@ -381,6 +544,8 @@ fn uri(text: &str) -> String {
 struct Place<'a, 'i> {
     file: &'a str,
     part: &'a str,
+    /// Its index in [`Parts`] (0 for the root model part).
+    index: usize,
     doc: &'a Document<'i>,
     lines: Lines,
 }
@@ -398,7 +563,7 @@ impl Place<'_, '_> {
     fn error_at(&self, line: u32, message: impl std::fmt::Display) -> UmbraError {
         malformed(
             self.file,
-            format!("{} line {line}: {message}", shorten(self.part)),
+            format!("{} line {line}: {message}", part_name(self.part)),
         )
     }
 
@@ -500,6 +665,8 @@ struct MeshPart {
 
 /// A reference to an object with a transform: a component or build item.
 struct Reference {
+    /// The object's part (its index in [`Parts`]) and id.
+    part: usize,
     object: u32,
     transform: Affine,
     line: u32,
@@ -518,16 +685,20 @@ struct Object {
     shape: Shape,
 }
 
-/// The model part's objects by id and its build items.
+/// A model part's objects by id and its build items (none but in the
+/// root model part).
 struct Model {
+    /// The part's entry name.
+    part: String,
     objects: HashMap<u32, Object>,
     items: Vec<Reference>,
     /// Vertices and triangles the file spells out.
     literal: Size,
 }
 
-/// Reads `<model>`: required extensions, resources and build.
-fn read_model(place: &Place<'_, '_>) -> Result<Model, UmbraError> {
+/// Reads `<model>`: required extensions, resources and (in the root model
+/// part) build; the parts that production paths name are added to `parts`.
+fn read_model(place: &Place<'_, '_>, parts: &mut Parts) -> Result<Model, UmbraError> {
     let root = place.doc.root_element();
     if !is(&root, CORE, "model") {
         return Err(place.error(
@@ -541,20 +712,26 @@ fn read_model(place: &Place<'_, '_>) -> Result<Model, UmbraError> {
     }
     check_required_extensions(root, place)?;
     let mut model = Model {
+        part: place.part.to_string(),
         objects: HashMap::new(),
         items: Vec::new(),
         literal: Size::default(),
     };
     for resources in core_children(root, "resources") {
         for node in core_children(resources, "object") {
-            read_object(node, place, &mut model)?;
+            read_object(node, place, parts, &mut model)?;
         }
+    }
+    if place.index != 0 {
+        // Production extension 3.2: the build is in the root model part
+        // only; a non-root part's (empty, as producers write it) is ignored.
+        return Ok(model);
     }
     let Some(build) = core_children(root, "build").next() else {
         return Err(place.error(root, "the model has no <build> element"));
     };
     for node in core_children(build, "item") {
-        model.items.push(read_reference(node, place)?);
+        model.items.push(read_reference(node, place, parts)?);
     }
     Ok(model)
 }
@@ -584,6 +761,7 @@ fn check_required_extensions(root: Node<'_, '_>, place: &Place<'_, '_>) -> Resul
 fn read_object(
     node: Node<'_, '_>,
     place: &Place<'_, '_>,
+    parts: &mut Parts,
     model: &mut Model,
 ) -> Result<(), UmbraError> {
     let id = place.resource_id(node, "id")?;
@@ -620,7 +798,7 @@ fn read_object(
         }
         (None, Some(components)) => Shape::Components(
             core_children(components, "component")
-                .map(|c| read_reference(c, place))
+                .map(|c| read_reference(c, place, parts))
                 .collect::<Result<_, _>>()?,
         ),
         (Some(_), Some(_)) => {
@@ -637,24 +815,37 @@ fn read_object(
     Ok(())
 }
 
-/// Reads a `<component>` or `<item>`: its object id and transform.
-fn read_reference(node: Node<'_, '_>, place: &Place<'_, '_>) -> Result<Reference, UmbraError> {
+/// Reads a `<component>` or `<item>`: its object's part and id, and its
+/// transform. A production path is followed from the root model part only
+/// (production extension 3.1.2).
+fn read_reference(
+    node: Node<'_, '_>,
+    place: &Place<'_, '_>,
+    parts: &mut Parts,
+) -> Result<Reference, UmbraError> {
     let object = place.resource_id(node, "objectid")?;
-    if let Some(path) = node.attribute((PRODUCTION, "path")) {
-        return Err(place.error(
-            node,
-            format!(
-                "<{}> refers to object {object} in the part '{}' (the production extension's path), which this reader does not support",
-                node.tag_name().name(),
-                shorten(path)
-            ),
-        ));
-    }
+    let tag = node.tag_name().name();
+    let part = match node.attribute((PRODUCTION, "path")) {
+        None => place.index,
+        Some(path) if place.index != 0 => {
+            return Err(place.error(
+                node,
+                format!(
+                    "<{tag}> refers to object {object} in the part '{}' (a production path) from a part other than the root model part, which the production extension forbids (section 3.1.2: a path is only valid in the root model file)",
+                    part_name(path)
+                ),
+            ))
+        }
+        Some(path) => parts
+            .named(path, place.line(node))
+            .map_err(|m| place.error(node, format!("<{tag}> refers to object {object}: {m}")))?,
+    };
     let transform = match node.attribute("transform") {
         None => IDENTITY,
         Some(text) => read_transform(text).map_err(|m| place.error(node, m))?,
     };
     Ok(Reference {
+        part,
         object,
         transform,
         line: place.line(node),
@@ -767,42 +958,93 @@ impl Size {
     }
 }
 
-/// The size object `id` expands to and its height (1 for a mesh, one
-/// more than its highest component otherwise), memoized in `sizes`;
-/// `line` references it. Refuses unknown objects, cycles (`stack` holds
-/// the objects being expanded) and nesting deeper than [`MAX_DEPTH`],
-/// also where a memoized object is reached again lower down.
+/// An object: the index of its part in [`Parts`] and its id there.
+type Key = (usize, u32);
+
+/// The model parts read, for expanding the build and naming places.
+struct Build<'a> {
+    file: &'a str,
+    /// The root model part first.
+    models: &'a [Model],
+}
+
+impl Build<'_> {
+    fn object(&self, (part, id): Key) -> Option<&Object> {
+        self.models.get(part).and_then(|m| m.objects.get(&id))
+    }
+
+    fn part(&self, part: usize) -> &str {
+        self.models.get(part).map_or("", |m| m.part.as_str())
+    }
+
+    /// `file: malformed 3MF: 3D/Objects/object_1.model line 12: message`.
+    fn error_at(&self, part: usize, line: u32, message: impl std::fmt::Display) -> UmbraError {
+        malformed(
+            self.file,
+            format!("{} line {line}: {message}", part_name(self.part(part))),
+        )
+    }
+
+    /// Object `key` as named from a place in part `from`: its id, and its
+    /// part if another.
+    fn name(&self, (part, id): Key, from: usize) -> String {
+        if part == from {
+            id.to_string()
+        } else {
+            format!("{id} of the part '{}'", part_name(self.part(part)))
+        }
+    }
+}
+
+/// The size object `key` expands to and its height (1 for a mesh, one
+/// more than its highest component otherwise), memoized in `sizes`; the
+/// reference on `line` of part `from` names it. Refuses unknown objects,
+/// cycles (`stack` holds the objects being expanded) and nesting deeper
+/// than [`MAX_DEPTH`], also where a memoized object is reached again lower
+/// down.
 fn expanded_size(
-    id: u32,
+    key: Key,
+    from: usize,
     line: u32,
-    model: &Model,
-    sizes: &mut HashMap<u32, (Size, usize)>,
-    stack: &mut Vec<u32>,
-    place: &Place<'_, '_>,
+    build: &Build<'_>,
+    sizes: &mut HashMap<Key, (Size, usize)>,
+    stack: &mut Vec<Key>,
 ) -> Result<(Size, usize), UmbraError> {
     let too_deep = || {
-        place.error_at(
+        build.error_at(
+            from,
             line,
             format!("components nest deeper than {MAX_DEPTH} levels"),
         )
     };
-    if let Some(&(size, height)) = sizes.get(&id) {
+    if let Some(&(size, height)) = sizes.get(&key) {
         if stack.len() + height > MAX_DEPTH {
             return Err(too_deep());
         }
         return Ok((size, height));
     }
-    let Some(object) = model.objects.get(&id) else {
-        return Err(place.error_at(line, format!("objectid {id} names no object of the model")));
+    let Some(object) = build.object(key) else {
+        let (part, id) = key;
+        let what = if part == from {
+            "the model".to_string()
+        } else {
+            format!("the part '{}'", part_name(build.part(part)))
+        };
+        return Err(build.error_at(
+            from,
+            line,
+            format!("objectid {id} names no object of {what}"),
+        ));
     };
-    if stack.contains(&id) {
+    if stack.contains(&key) {
         let chain: Vec<String> = stack
             .iter()
-            .skip_while(|&&o| o != id)
-            .chain([&id])
-            .map(u32::to_string)
+            .skip_while(|&&o| o != key)
+            .chain([&key])
+            .map(|&o| build.name(o, from))
             .collect();
-        return Err(place.error_at(
+        return Err(build.error_at(
+            from,
             line,
             format!("component cycle: object {}", chain.join(" -> ")),
         ));
@@ -814,11 +1056,11 @@ fn expanded_size(
         Shape::Mesh(part, true) => (Size::of(part), 1),
         Shape::Mesh(_, false) => (Size::default(), 1),
         Shape::Components(components) => {
-            stack.push(id);
+            stack.push(key);
             let mut size = Size::default();
             let mut height = 1;
             for c in components {
-                let (s, h) = expanded_size(c.object, c.line, model, sizes, stack, place)?;
+                let (s, h) = expanded_size((c.part, c.object), key.0, c.line, build, sizes, stack)?;
                 size.add(s);
                 height = height.max(h + 1);
             }
@@ -826,32 +1068,42 @@ fn expanded_size(
             (size, height)
         }
     };
-    sizes.insert(id, expanded);
+    sizes.insert(key, expanded);
     Ok(expanded)
 }
 
 /// The size of the whole build, refused past the instancing budget.
-fn build_size(model: &Model, place: &Place<'_, '_>) -> Result<Size, UmbraError> {
+fn build_size(build: &Build<'_>) -> Result<Size, UmbraError> {
     let mut sizes = HashMap::new();
     let mut total = Size::default();
-    for item in &model.items {
+    let mut literal = Size::default();
+    for model in build.models {
+        literal.add(model.literal);
+    }
+    for item in build.models.iter().take(1).flat_map(|m| &m.items) {
         let mut stack = Vec::new();
-        let (size, _) =
-            expanded_size(item.object, item.line, model, &mut sizes, &mut stack, place)?;
+        let (size, _) = expanded_size(
+            (item.part, item.object),
+            0,
+            item.line,
+            build,
+            &mut sizes,
+            &mut stack,
+        )?;
         total.add(size);
     }
-    let max_vertices = INSTANCE_BUDGET.max(model.literal.vertices);
-    let max_triangles = INSTANCE_BUDGET.max(model.literal.triangles);
+    let max_vertices = INSTANCE_BUDGET.max(literal.vertices);
+    let max_triangles = INSTANCE_BUDGET.max(literal.triangles);
     if total.vertices > max_vertices || total.triangles > max_triangles {
         return Err(malformed(
-            place.file,
+            build.file,
             format!(
                 "{}: the build items expand through their components to {} vertices and {} triangles, past the budget of {max_vertices} and {max_triangles} (the file spells out {} and {})",
-                shorten(place.part),
+                part_name(build.part(0)),
                 total.vertices,
                 total.triangles,
-                model.literal.vertices,
-                model.literal.triangles
+                literal.vertices,
+                literal.triangles
             ),
         ));
     }
@@ -865,13 +1117,19 @@ struct Output {
     origins: Origins,
 }
 
-/// Every build item expanded into one mesh (see the module docs).
-fn expand(model: &Model, place: &Place<'_, '_>) -> Result<(TriangleMesh, Origins), UmbraError> {
-    let total = build_size(model, place)?;
+/// Every build item of the root model part (`models[0]`) expanded into
+/// one mesh (see the module docs).
+fn expand(models: &[Model], file: &str) -> Result<(TriangleMesh, Origins), UmbraError> {
+    let build = Build { file, models };
+    let total = build_size(&build)?;
     let too_many = || {
         malformed(
-            place.file,
-            format!("{}: more than {} vertices", shorten(place.part), u32::MAX),
+            file,
+            format!(
+                "{}: more than {} vertices",
+                part_name(build.part(0)),
+                u32::MAX
+            ),
         )
     };
     let vertices = usize::try_from(total.vertices).map_err(|_| too_many())?;
@@ -884,13 +1142,13 @@ fn expand(model: &Model, place: &Place<'_, '_>) -> Result<(TriangleMesh, Origins
     };
     out.origins.vertex_places.reserve(vertices);
     out.origins.face_places.reserve(triangles);
-    for item in &model.items {
+    for item in models.iter().take(1).flat_map(|m| &m.items) {
         emit(
-            item.object,
+            (item.part, item.object),
             &item.transform,
+            0,
             item.line,
-            model,
-            place,
+            &build,
             &mut out,
         )?;
     }
@@ -898,32 +1156,33 @@ fn expand(model: &Model, place: &Place<'_, '_>) -> Result<(TriangleMesh, Origins
     Ok((mesh, out.origins))
 }
 
-/// Appends object `id` under `transform` (the depth and the references
-/// were checked by [`build_size`]).
+/// Appends object `key` under `transform`, named on `line` of part `from`
+/// (the depth and the references were checked by [`build_size`]).
 fn emit(
-    id: u32,
+    key: Key,
     transform: &Affine,
+    from: usize,
     line: u32,
-    model: &Model,
-    place: &Place<'_, '_>,
+    build: &Build<'_>,
     out: &mut Output,
 ) -> Result<(), UmbraError> {
     if !transform.is_finite() {
-        return Err(place.error_at(
+        return Err(build.error_at(
+            from,
             line,
             "the transforms composed down to here overflow f64 (not finite)",
         ));
     }
-    match model.objects.get(&id).map(|o| &o.shape) {
+    match build.object(key).map(|o| &o.shape) {
         Some(Shape::Mesh(part, true)) => emit_mesh(part, transform, out),
         Some(Shape::Components(components)) => {
             for c in components {
                 emit(
-                    c.object,
+                    (c.part, c.object),
                     &c.transform.then(transform),
+                    key.0,
                     c.line,
-                    model,
-                    place,
+                    build,
                     out,
                 )?;
             }
@@ -1272,7 +1531,7 @@ mod tests {
             (good.replace("<mesh>", "<b:beamlattice xmlns:b=\"urn:b\"/><nomesh>").replace("</mesh>", "</nomesh>"), "line 4: object 1 has neither a <mesh> nor <components>"),
             (good.replace("<model ", "<model xmlns:b=\"http://schemas.microsoft.com/3dmanufacturing/beamlattice/2017/02\" requiredextensions=\"b\" "), "line 2: the model requires the extension 'b' (http://schemas.microsoft.com/3dmanufacturing/beamlattice/2017/02), which this reader does not support"),
             (good.replace("<model ", "<model requiredextensions=\"q\" "), "the model requires the extension 'q' (an undeclared prefix)"),
-            (good.replace("<item ", &format!("<item xmlns:p=\"{PRODUCTION}\" p:path=\"/3D/Objects/o.model\" ")), "line 34: <item> refers to object 1 in the part '/3D/Objects/o.model' (the production extension's path), which this reader does not support"),
+            (good.replace("<item ", &format!("<item xmlns:p=\"{PRODUCTION}\" p:path=\"/3D/Objects/o.model\" ")), "line 34: a production path names the part '/3D/Objects/o.model', which the package does not have; it holds '_rels/.rels', '3D/3dmodel.model'"),
             (good.replace("<object id=\"1\" type=\"model\">\n<mesh>", "<object id=\"1\" type=\"model\">\n<mesh>\n</mesh>\n</object>\n<object id=\"1\">\n<mesh>"), "line 8: duplicate object id 1 (first defined on line 4)"),
             (good.replace("<?xml", "<!DOCTYPE model [<!ENTITY a \"aaaa\">]>\n<?xml"), "malformed XML"),
         ];
@@ -1292,19 +1551,9 @@ mod tests {
     }
 
     #[test]
-    fn production_paths_on_components_and_allowed_extensions() {
-        let cube = unit_cube();
+    fn allowed_extensions_are_read() {
         let resources =
-            mesh_object(1, "model", &cube) + &components_object(2, &[(1, IDENTITY_TEXT)]);
-        let with_path = resources.replace(
-            "<component ",
-            &format!("<component xmlns:p=\"{PRODUCTION}\" p:path=\"/3D/Objects/object_1.model\" "),
-        );
-        let e = error_of(&simple(&model(&with_path, &item(2, IDENTITY_TEXT))));
-        assert!(
-            e.contains("<component> refers to object 1 in the part '/3D/Objects/object_1.model'"),
-            "{e}"
-        );
+            mesh_object(1, "model", &unit_cube()) + &components_object(2, &[(1, IDENTITY_TEXT)]);
         // Required production and materials, a UUID and colours: read.
         let xml = model(&resources, &item(2, IDENTITY_TEXT)).replace(
             "<model ",
@@ -1314,6 +1563,426 @@ mod tests {
             parse_3mf(&simple(&xml), "p.3mf").unwrap().triangles.len(),
             12
         );
+    }
+
+    /// Where Bambu Studio and Orca Slicer put an object's mesh.
+    const OBJECT_PART: &str = "/3D/Objects/object_1.model";
+
+    /// A model document declaring and requiring the production extension.
+    fn production_model(resources: &str, build: &str) -> String {
+        model(resources, build).replace(
+            "<model ",
+            &format!("<model xmlns:p=\"{PRODUCTION}\" requiredextensions=\"p\" "),
+        )
+    }
+
+    /// An `<object>` of components, each `(path, objectid, transform)`.
+    fn path_components_object(id: u32, components: &[(&str, u32, &str)]) -> String {
+        let mut s = format!("<object id=\"{id}\" p:UUID=\"00000000-0000-4000-8000-00000000000{id}\">\n<components>\n");
+        for (path, object, transform) in components {
+            s += &format!(
+                "<component p:path=\"{path}\" objectid=\"{object}\" p:UUID=\"00000000-0000-4000-8000-000000000001\" transform=\"{transform}\"/>\n"
+            );
+        }
+        s + "</components>\n</object>\n"
+    }
+
+    /// The relationships of the root model part to `parts`.
+    fn model_rels(parts: &[&str]) -> String {
+        let mut s = format!(
+            "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n<Relationships xmlns=\"{RELATIONSHIPS}\">"
+        );
+        for (k, part) in parts.iter().enumerate() {
+            s += &format!("<Relationship Target=\"{part}\" Id=\"rel-{k}\" Type=\"http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel\"/>");
+        }
+        s + "</Relationships>\n"
+    }
+
+    /// A package laid out as Bambu Studio writes one: the root model, the
+    /// `parts` (`(path, model)`), the root part's relationships to them,
+    /// a thumbnail and a settings entry.
+    fn bambu(root: &str, parts: &[(&str, &str)]) -> Vec<u8> {
+        let names: Vec<&str> = parts.iter().map(|p| p.0).collect();
+        let rels = model_rels(&names);
+        let mut entries = vec![
+            ("_rels/.rels", RELS),
+            ("3D/3dmodel.model", root),
+            ("3D/_rels/3dmodel.model.rels", &rels),
+            ("Metadata/plate_1.png", "\u{89}PNG not really"),
+            ("Metadata/model_settings.config", "<config/>"),
+        ];
+        for (path, text) in parts {
+            entries.push((path.trim_start_matches('/'), text));
+        }
+        package(&entries)
+    }
+
+    #[test]
+    fn a_bambu_style_package_reads_through_its_object_parts() {
+        // The root model has its own object 1 (a tetrahedron no item
+        // uses); the component's object 1 is the cube of the other part.
+        // The component scales the cube by (2, 3, 4) and moves it by (10,
+        // 20, 30); the item turns it by 90 degrees about z (x' = -y, y' =
+        // x) and moves it by (0, 0, 5).
+        let tet = tetra([[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]]);
+        let root = production_model(
+            &(mesh_object(1, "model", &tet)
+                + &path_components_object(2, &[(OBJECT_PART, 1, "2 0 0 0 3 0 0 0 4 10 20 30")])),
+            &item(2, "0 1 0 -1 0 0 0 0 1 0 0 5"),
+        );
+        let cube = unit_cube();
+        let part = production_model(&mesh_object(1, "model", &cube), "");
+        let bytes = bambu(&root, &[(OBJECT_PART, &part)]);
+        let m = parse_3mf(&bytes, "b.3mf").unwrap();
+        assert_eq!(m.triangles, cube.triangles);
+        for (p, q) in cube.vertices.iter().zip(&m.vertices) {
+            let want = [-(20.0 + 3.0 * p[1]), 10.0 + 2.0 * p[0], 35.0 + 4.0 * p[2]];
+            assert_eq!(*q, want, "corner {p:?}");
+        }
+        assert_eq!(bounds(&m), [[-23.0, 10.0, 35.0], [-20.0, 12.0, 39.0]]);
+        assert_eq!(volume(&m), 24.0);
+        // Places are lines of the part holding the vertex.
+        let (_, origins) = parse_3mf_with_origins(&bytes, "b.3mf").unwrap();
+        assert_eq!(origins.vertex_places[0], 7);
+        read_3mf_bytes(&bytes, "b.3mf", MeshReadOptions::default(), true).unwrap();
+        // Without the root part's relationships, and with the path on the
+        // build item itself (no leading '/' either): the same.
+        let direct = production_model(
+            "",
+            &item(1, "0 1 0 -1 0 0 0 0 1 0 0 5")
+                .replace("<item ", "<item p:path=\"3D/Objects/object_1.model\" "),
+        );
+        let bytes = package(&[
+            ("_rels/.rels", RELS),
+            ("3D/3dmodel.model", &direct),
+            ("3D/Objects/object_1.model", &part),
+        ]);
+        let m = parse_3mf(&bytes, "b.3mf").unwrap();
+        assert_eq!(bounds(&m), [[-1.0, 0.0, 5.0], [0.0, 1.0, 6.0]]);
+        assert_eq!(volume(&m), 1.0);
+        // An error inside the other part names that part and its line.
+        let bad = part.replacen("x=\"0.0\"", "x=\"zero\"", 1);
+        let e = error_of(&bambu(&root, &[(OBJECT_PART, &bad)]));
+        assert!(
+            e.starts_with("t.3mf: malformed 3MF: 3D/Objects/object_1.model line 7: <vertex> x: 'zero' is not a number"),
+            "{e}"
+        );
+        let e = error_of(&bambu(&root, &[(OBJECT_PART, "<model")]));
+        assert!(
+            e.contains("3D/Objects/object_1.model line 1: malformed XML"),
+            "{e}"
+        );
+        // An id the other part does not have (the root part has it).
+        let e = error_of(&bambu(
+            &root,
+            &[(OBJECT_PART, &part.replace("id=\"1\"", "id=\"3\""))],
+        ));
+        assert!(
+            e.contains("3D/3dmodel.model line 22: objectid 1 names no object of the part '3D/Objects/object_1.model'"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn components_of_another_part_resolve_in_that_part() {
+        // The part's object 5 is two components of its object 1 (no path:
+        // its own object 1, a cube), moved by (0, 0, 3); its object 2 is a
+        // support, left out. The root part has no object 1 at all.
+        let cube = unit_cube();
+        let part = production_model(
+            &(mesh_object(1, "model", &cube)
+                + &mesh_object(2, "support", &cube)
+                + &components_object(
+                    5,
+                    &[
+                        (1, IDENTITY_TEXT),
+                        (2, IDENTITY_TEXT),
+                        (1, "1 0 0 0 1 0 0 0 1 0 0 3"),
+                    ],
+                )),
+            "",
+        );
+        let root = production_model(
+            &path_components_object(7, &[(OBJECT_PART, 5, "1 0 0 0 1 0 0 0 1 1 0 0")]),
+            &item(7, IDENTITY_TEXT),
+        );
+        let m = parse_3mf(&bambu(&root, &[(OBJECT_PART, &part)]), "c.3mf").unwrap();
+        assert_eq!((m.vertices.len(), m.triangles.len()), (16, 24));
+        assert_eq!(bounds(&m), [[1.0, 0.0, 0.0], [2.0, 1.0, 4.0]]);
+        assert_eq!(volume(&m), 2.0);
+        // A part's own <build> items are not the build.
+        let with_items = part.replace("<build>\n", &format!("<build>\n{}", item(1, IDENTITY_TEXT)));
+        let m = parse_3mf(&bambu(&root, &[(OBJECT_PART, &with_items)]), "c.3mf").unwrap();
+        assert_eq!(m.triangles.len(), 24);
+        // Nor does a part need a <build>.
+        let no_build = part.replace("<build>\n</build>\n", "");
+        let m = parse_3mf(&bambu(&root, &[(OBJECT_PART, &no_build)]), "c.3mf").unwrap();
+        assert_eq!(m.triangles.len(), 24);
+    }
+
+    #[test]
+    fn the_same_part_twice_is_two_shells_read_once() {
+        let cube = unit_cube();
+        let part = production_model(&mesh_object(1, "model", &cube), "");
+        let root = production_model(
+            &path_components_object(
+                2,
+                &[
+                    (OBJECT_PART, 1, IDENTITY_TEXT),
+                    (OBJECT_PART, 1, "1 0 0 0 1 0 0 0 1 0 0 3"),
+                ],
+            ),
+            &(item(2, IDENTITY_TEXT)
+                + &item(1, "1 0 0 0 1 0 0 0 1 5 0 0")
+                    .replace("<item ", &format!("<item p:path=\"{OBJECT_PART}\" "))),
+        );
+        let m = parse_3mf(&bambu(&root, &[(OBJECT_PART, &part)]), "t.3mf").unwrap();
+        assert_eq!((m.vertices.len(), m.triangles.len()), (24, 36));
+        assert_eq!(bounds(&m), [[0.0; 3], [6.0, 1.0, 4.0]]);
+        assert_eq!(volume(&m), 3.0);
+        m.check_topology().unwrap();
+        // Padded to 6 MiB, the part is read once: three reads would pass
+        // the package's 16 MiB.
+        let padded = part.replace("</model>", &format!("{}</model>", " ".repeat(6 << 20)));
+        let bytes = bambu(&root, &[(OBJECT_PART, &padded)]);
+        assert!(bytes.len() < 100_000, "{}", bytes.len());
+        assert_eq!(parse_3mf(&bytes, "t.3mf").unwrap().triangles.len(), 36);
+    }
+
+    #[test]
+    fn a_mirror_across_parts_keeps_the_volume_positive() {
+        let cube = unit_cube();
+        let part = production_model(&mesh_object(1, "model", &cube), "");
+        let mirror = "-1 0 0 0 1 0 0 0 1 5 0 0";
+        // Mirrored by the item; by the component; by both (no mirror).
+        for (component, build, mirrored) in [
+            (IDENTITY_TEXT, mirror, true),
+            (mirror, IDENTITY_TEXT, true),
+            (mirror, mirror, false),
+        ] {
+            let root = production_model(
+                &path_components_object(2, &[(OBJECT_PART, 1, component)]),
+                &item(2, build),
+            );
+            let m = parse_3mf(&bambu(&root, &[(OBJECT_PART, &part)]), "m.3mf").unwrap();
+            assert_eq!(volume(&m), 1.0, "{component} {build}");
+            m.check_topology().unwrap();
+            let t = cube.triangles[0];
+            let want = if mirrored { [t[0], t[2], t[1]] } else { t };
+            assert_eq!(m.triangles[0], want);
+            let x0 = if mirrored { 4.0 } else { 0.0 };
+            assert_eq!(bounds(&m), [[x0, 0.0, 0.0], [x0 + 1.0, 1.0, 1.0]]);
+        }
+    }
+
+    #[test]
+    fn cycles_depth_and_budget_hold_across_parts() {
+        let cube = mesh_object(1, "model", &unit_cube());
+        // A root path naming the root part itself closes a cycle.
+        let root = production_model(
+            &(cube.clone()
+                + &path_components_object(2, &[("/3D/3dmodel.model", 2, IDENTITY_TEXT)])),
+            &item(2, IDENTITY_TEXT),
+        );
+        let e = error_of(&bambu(&root, &[]));
+        assert!(
+            e.contains("3D/3dmodel.model line 34: component cycle: object 2 -> 2"),
+            "{e}"
+        );
+        // A root path naming the root part is the root part.
+        let root = production_model(
+            &(cube.clone()
+                + &path_components_object(2, &[("/3D/3dmodel.model", 1, IDENTITY_TEXT)])),
+            &item(2, IDENTITY_TEXT),
+        );
+        assert_eq!(
+            parse_3mf(&bambu(&root, &[]), "r.3mf")
+                .unwrap()
+                .triangles
+                .len(),
+            12
+        );
+        // A cycle inside the other part, entered from the root.
+        let part = production_model(
+            &(cube.clone()
+                + &components_object(3, &[(4, IDENTITY_TEXT)])
+                + &components_object(4, &[(1, IDENTITY_TEXT), (3, IDENTITY_TEXT)])),
+            "",
+        );
+        let root = production_model(
+            &path_components_object(2, &[(OBJECT_PART, 3, IDENTITY_TEXT)]),
+            &item(2, IDENTITY_TEXT),
+        );
+        let e = error_of(&bambu(&root, &[(OBJECT_PART, &part)]));
+        assert!(
+            e.contains("3D/Objects/object_1.model line 40: component cycle: object 3 -> 4 -> 3"),
+            "{e}"
+        );
+        // 20 levels in the root part above 20 in the other part.
+        let mut resources = cube.clone();
+        for k in 2..=20 {
+            resources += &components_object(k, &[(k - 1, IDENTITY_TEXT)]);
+        }
+        let part = production_model(&resources, "");
+        let mut resources = path_components_object(101, &[(OBJECT_PART, 20, IDENTITY_TEXT)]);
+        for k in 102..=121 {
+            resources += &components_object(k, &[(k - 1, IDENTITY_TEXT)]);
+        }
+        let e = error_of(&bambu(
+            &production_model(&resources, &item(121, IDENTITY_TEXT)),
+            &[(OBJECT_PART, &part)],
+        ));
+        assert!(
+            e.contains(&format!("components nest deeper than {MAX_DEPTH} levels")),
+            "{e}"
+        );
+        let m = parse_3mf(
+            &bambu(
+                &production_model(&resources, &item(112, IDENTITY_TEXT)),
+                &[(OBJECT_PART, &part)],
+            ),
+            "d.3mf",
+        )
+        .unwrap();
+        assert_eq!(m.triangles.len(), 12);
+        // Ten copies at each of 4 levels in each part: 10^8 cubes.
+        let mut resources = cube.clone();
+        for k in 2..=5 {
+            let copies: Vec<(u32, &str)> = (0..10).map(|_| (k - 1, IDENTITY_TEXT)).collect();
+            resources += &components_object(k, &copies);
+        }
+        let part = production_model(&resources, "");
+        let copies: Vec<(&str, u32, &str)> =
+            (0..10).map(|_| (OBJECT_PART, 5, IDENTITY_TEXT)).collect();
+        let mut resources = path_components_object(11, &copies);
+        for k in 12..=14 {
+            let copies: Vec<(u32, &str)> = (0..10).map(|_| (k - 1, IDENTITY_TEXT)).collect();
+            resources += &components_object(k, &copies);
+        }
+        let e = error_of(&bambu(
+            &production_model(&resources, &item(14, IDENTITY_TEXT)),
+            &[(OBJECT_PART, &part)],
+        ));
+        assert!(
+            e.contains("3D/3dmodel.model: the build items expand through their components to 800000000 vertices and 1200000000 triangles, past the budget of 16777216 and 16777216 (the file spells out 8 and 12)"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn paths_to_missing_or_non_model_parts_are_refused() {
+        let part = production_model(&mesh_object(1, "model", &unit_cube()), "");
+        let root_to = |path: &str| {
+            production_model(
+                &path_components_object(2, &[(path, 1, IDENTITY_TEXT)]),
+                &item(2, IDENTITY_TEXT),
+            )
+        };
+        // Entry names are case-sensitive.
+        let e = error_of(&bambu(
+            &root_to("/3D/Objects/Object_1.model"),
+            &[(OBJECT_PART, &part)],
+        ));
+        assert_eq!(
+            e,
+            "t.3mf: malformed 3MF: 3D/3dmodel.model line 6: a production path names the part '/3D/Objects/Object_1.model', which the package does not have; it holds '_rels/.rels', '3D/3dmodel.model', '3D/_rels/3dmodel.model.rels', 'Metadata/plate_1.png', 'Metadata/model_settings.config', '3D/Objects/object_1.model'"
+        );
+        for path in [
+            "/Metadata/plate_1.png",
+            "/Metadata/model_settings.config",
+            "/3D/_rels/3dmodel.model.rels",
+            "/_rels/.rels",
+            "/.model",
+            "",
+            "/3D/Objects/object_1.model/",
+        ] {
+            let e = error_of(&bambu(&root_to(path), &[(OBJECT_PART, &part)]));
+            assert!(
+                e.contains(&format!("3D/3dmodel.model line 6: <component> refers to object 1: the production path '{path}' does not name a model part (a part whose name ends in .model)")),
+                "{e}"
+            );
+        }
+        // A model part's suffix in other case is a model part.
+        let m = parse_3mf(
+            &bambu(
+                &root_to("/3D/Objects/a.MODEL"),
+                &[("/3D/Objects/a.MODEL", &part)],
+            ),
+            "a.3mf",
+        )
+        .unwrap();
+        assert_eq!(m.triangles.len(), 12);
+    }
+
+    #[test]
+    fn a_path_in_a_non_root_part_is_refused() {
+        // Production extension 3.2: a consumer MUST generate an error.
+        let cube = mesh_object(1, "model", &unit_cube());
+        let nested = production_model(
+            &(path_components_object(3, &[("/3D/Objects/object_2.model", 1, IDENTITY_TEXT)])),
+            "",
+        );
+        let leaf = production_model(&cube, "");
+        let root = production_model(
+            &path_components_object(2, &[(OBJECT_PART, 3, IDENTITY_TEXT)]),
+            &item(2, IDENTITY_TEXT),
+        );
+        let e = error_of(&bambu(
+            &root,
+            &[
+                (OBJECT_PART, &nested),
+                ("/3D/Objects/object_2.model", &leaf),
+            ],
+        ));
+        assert!(
+            e.contains("3D/Objects/object_1.model line 6: <component> refers to object 1 in the part '/3D/Objects/object_2.model' (a production path) from a part other than the root model part, which the production extension forbids (section 3.1.2"),
+            "{e}"
+        );
+        // Back to the root part: refused alike (no cycle can form).
+        let back = production_model(
+            &(path_components_object(3, &[("/3D/3dmodel.model", 2, IDENTITY_TEXT)])),
+            "",
+        );
+        let e = error_of(&bambu(&root, &[(OBJECT_PART, &back)]));
+        assert!(
+            e.contains("from a part other than the root model part"),
+            "{e}"
+        );
+    }
+
+    #[test]
+    fn many_parts_past_the_package_budget_are_refused() {
+        // 20 parts of 1 MiB each (mostly white space): each is within the
+        // 16 MiB of a package of this size, together they are not.
+        let cube = mesh_object(1, "model", &unit_cube());
+        let pad = " ".repeat(1 << 20);
+        let paths: Vec<String> = (1..=20)
+            .map(|k| format!("/3D/Objects/object_{k}.model"))
+            .collect();
+        let part = production_model(&cube, "").replace("</model>", &format!("{pad}</model>"));
+        let parts: Vec<(&str, &str)> = paths.iter().map(|p| (p.as_str(), part.as_str())).collect();
+        let components: Vec<(&str, u32, &str)> = paths
+            .iter()
+            .map(|p| (p.as_str(), 1, IDENTITY_TEXT))
+            .collect();
+        let root = production_model(
+            &path_components_object(2, &components),
+            &item(2, IDENTITY_TEXT),
+        );
+        let bytes = bambu(&root, &parts);
+        assert!(bytes.len() < 200_000, "{}", bytes.len());
+        let e = error_of(&bytes);
+        assert!(
+            e.contains("3D/Objects/object_16.model: the model parts read so far and this one decompress to more than 16777216 bytes together, the limit for a package of this size (a zip bomb?)"),
+            "{e}"
+        );
+        // 15 of them read.
+        let root = production_model(
+            &path_components_object(2, &components[..15]),
+            &item(2, IDENTITY_TEXT),
+        );
+        let m = parse_3mf(&bambu(&root, &parts[..15]), "p.3mf").unwrap();
+        assert_eq!(m.triangles.len(), 15 * 12);
     }
 
     #[test]
@@ -1539,6 +2208,36 @@ mod tests {
         }
     }
 
+    #[test]
+    fn a_production_package_written_by_lib3mf_reads_as_lib3mf_measured() {
+        // Figures of README.md: lib3mf's own reading of the file (trimesh
+        // reads a part named twice twice over).
+        let name = "lib3mf_production.3mf";
+        let path = std::path::Path::new(env!("CARGO_MANIFEST_DIR"))
+            .join("tests/data/3mf")
+            .join(name);
+        let bytes = std::fs::read(&path).unwrap();
+        // Its meshes are in other parts, named by paths on components and
+        // on a build item.
+        let archive = ZipArchive::new(Cursor::new(&bytes[..])).unwrap();
+        let names: Vec<String> = archive
+            .file_names()
+            .map(|n| n.unwrap().to_string())
+            .collect();
+        for part in ["3D/Objects/object_1.model", "3D/Objects/object_2.model"] {
+            assert!(names.iter().any(|n| n == part), "{names:?}");
+        }
+        let m = fixture(name);
+        assert_eq!(m.triangles.len(), 32);
+        assert_close(volume(&m), 5.166666666666667, name);
+        let b = bounds(&m);
+        let want = [[-3.0, 0.0, 0.0], [21.0, 6.0, 16.0]];
+        for k in 0..3 {
+            assert_close(b[0][k], want[0][k], name);
+            assert_close(b[1][k], want[1][k], name);
+        }
+    }
+
     /// `bytes` with `edits` applied: each `(position, value, kind)` sets,
     /// inserts or removes a byte.
     fn mutate(bytes: &[u8], edits: &[(usize, u8, u8)]) -> Vec<u8> {
@@ -1595,6 +2294,18 @@ mod tests {
             let _ = read_3mf_bytes(&mutate(&good, &edits), "m.3mf", MeshReadOptions::default(), true);
             let text = mutate(xml.as_bytes(), &text_edits);
             let _ = read_3mf_bytes(&stored(&text), "m.3mf", MeshReadOptions::default(), true);
+            // A Bambu-style package: its bytes, its root's text and its
+            // object part's text mutated.
+            let root = production_model(
+                &path_components_object(2, &[(OBJECT_PART, 1, "-1 0 0 0 1 0 0 0 1 0 0 0"), (OBJECT_PART, 1, IDENTITY_TEXT)]),
+                &(item(2, IDENTITY_TEXT) + &item(1, IDENTITY_TEXT).replace("<item ", &format!("<item p:path=\"{OBJECT_PART}\" "))),
+            );
+            let part = production_model(&mesh_object(1, "model", &cube), "");
+            let _ = read_3mf_bytes(&mutate(&bambu(&root, &[(OBJECT_PART, &part)]), &edits), "b.3mf", MeshReadOptions::default(), true);
+            let mutated_root = String::from_utf8_lossy(&mutate(root.as_bytes(), &text_edits)).into_owned();
+            let _ = read_3mf_bytes(&bambu(&mutated_root, &[(OBJECT_PART, &part)]), "b.3mf", MeshReadOptions::default(), true);
+            let mutated_part = String::from_utf8_lossy(&mutate(part.as_bytes(), &text_edits)).into_owned();
+            let _ = read_3mf_bytes(&bambu(&root, &[(OBJECT_PART, &mutated_part)]), "b.3mf", MeshReadOptions::default(), true);
         }
     }
 }
