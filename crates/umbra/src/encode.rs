@@ -120,13 +120,7 @@ pub fn encode_mesh_with(
 ) -> Result<Vec<u8>, UmbraError> {
     let rounded;
     let mesh = if kind.stores_f32(options) {
-        rounded = crate::round_to_f32(mesh)
-            .map_err(|source| UmbraError::Smooth {
-                file: file.to_string(),
-                source,
-            })?
-            .mesh
-            .to_polygon_mesh();
+        rounded = crate::round_to_f32(mesh).mesh.to_polygon_mesh();
         &rounded
     } else {
         mesh
