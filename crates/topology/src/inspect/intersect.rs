@@ -435,13 +435,7 @@ pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
 /// assert_eq!(near, every.iter().copied().filter(|p| p.contains(&7)).collect::<Vec<_>>());
 /// ```
 pub fn self_intersecting_pairs_near(mesh: &PolygonMesh, focus: &[bool]) -> Option<Vec<[u32; 2]>> {
-    let n = mesh.vertices.len() as u32;
-    let in_range = mesh
-        .facets
-        .iter()
-        .flat_map(|f| &f.half_edges)
-        .all(|h| h.start < n && h.end < n);
-    if !in_range {
+    if !super::report::indices_in_range(mesh) {
         return None;
     }
     pairs_near_with(

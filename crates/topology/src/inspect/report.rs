@@ -90,13 +90,7 @@ pub fn check_mesh(mesh: &PolygonMesh) -> MeshCheckReport {
         signed_volume: None,
         bounding_box: None,
     };
-    let n = mesh.vertices.len() as u32;
-    let in_range = mesh
-        .facets
-        .iter()
-        .flat_map(|f| &f.half_edges)
-        .all(|h| h.start < n && h.end < n);
-    if in_range {
+    if indices_in_range(mesh) {
         let (edges, open, non_manifold) = edge_census(mesh);
         let bad_edges = open.len() + non_manifold.len();
         r.edges = edges;
@@ -115,6 +109,16 @@ pub fn check_mesh(mesh: &PolygonMesh) -> MeshCheckReport {
         r.bounding_box = mesh.bounding_box();
     }
     r
+}
+
+/// `true` when every half-edge's vertex indices are below the vertex
+/// count (the precondition of every census and test here).
+pub(super) fn indices_in_range(mesh: &PolygonMesh) -> bool {
+    let n = mesh.vertices.len() as u32;
+    mesh.facets
+        .iter()
+        .flat_map(|f| &f.half_edges)
+        .all(|h| h.start < n && h.end < n)
 }
 
 /// The signed volume of a topologically valid mesh: the sum over facets of
