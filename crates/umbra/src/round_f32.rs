@@ -275,36 +275,48 @@ fn choose_corners(
             }
         }
     }
-    let everything = vec![true; sub.triangles.len()];
     let sub_exact: Vec<Point3> = global.iter().map(|&g| exact[g as usize]).collect();
-    let count = |m: &TriangleMesh| {
-        pairs(m, &everything).map_or(usize::MAX, |p| p.len())
-            + collisions(&sub_exact, &m.vertices).len()
+    // Moving vertex `v` changes only the pairs holding one of its facets
+    // and the coincidences of `v` itself, so the corners of its cell are
+    // ranked by those alone (the rest of the region's count is the same
+    // for all eight): the intersecting pairs with a facet around `v`, and
+    // the vertices, apart from `v` in `f64`, at its rounded position.
+    let local = |m: &TriangleMesh, v: u32, around: &[bool]| {
+        let p = m.vertices[v as usize];
+        let e = sub_exact[v as usize];
+        pairs(m, around).map_or(usize::MAX, |found| found.len())
+            + m.vertices
+                .iter()
+                .zip(&sub_exact)
+                .filter(|&(q, x)| *q == p && *x != e)
+                .count()
     };
-    let mut best = count(&sub);
     for _ in 0..2 {
+        let mut left = 0;
         for &v in &movable {
+            let around: Vec<bool> = sub.triangles.iter().map(|t| t.contains(&v)).collect();
             let p = exact[global[v as usize] as usize];
             let [xs, ys, zs] = [f32_around(p[0]), f32_around(p[1]), f32_around(p[2])];
             let mut keep = sub.vertices[v as usize];
-            for x in xs {
-                for y in ys {
-                    for z in zs {
-                        sub.vertices[v as usize] = [x, y, z];
-                        let k = count(&sub);
-                        if k < best {
-                            best = k;
-                            keep = [x, y, z];
-                        }
-                    }
+            let mut best = local(&sub, v, &around);
+            let corners = xs
+                .into_iter()
+                .flat_map(|x| ys.into_iter().flat_map(move |y| zs.map(|z| [x, y, z])));
+            for corner in corners {
+                if best == 0 {
+                    break;
+                }
+                sub.vertices[v as usize] = corner;
+                let k = local(&sub, v, &around);
+                if k < best {
+                    best = k;
+                    keep = corner;
                 }
             }
             sub.vertices[v as usize] = keep;
-            if best == 0 {
-                break;
-            }
+            left += best;
         }
-        if best == 0 {
+        if left == 0 {
             break;
         }
     }

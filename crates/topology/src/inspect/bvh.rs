@@ -12,6 +12,7 @@ const LEAF: usize = 4;
 
 /// A node: its box, the range of `order` below it, and either two
 /// children or (a leaf) that range itself.
+#[derive(Clone, Copy)]
 struct Node {
     lo: Point3,
     hi: Point3,
@@ -37,69 +38,135 @@ pub(super) fn overlap(a: &[Point3; 2], b: &[Point3; 2]) -> bool {
     (0..3).all(|k| a[0][k] <= b[1][k] && b[0][k] <= a[1][k])
 }
 
-impl Bvh {
-    pub(super) fn new(boxes: &[[Point3; 2]]) -> Bvh {
-        let mut bvh = Bvh {
-            nodes: Vec::with_capacity(2 * boxes.len() / LEAF + 1),
-            order: (0..boxes.len() as u32).collect(),
-        };
-        if boxes.is_empty() {
-            return bvh;
+/// Ranges longer than this are split on two threads (the two halves'
+/// hierarchies built at once and joined); shorter ones in one.
+const PARALLEL_MIN: usize = 1 << 15;
+
+/// A node not filled in yet.
+const BLANK: Node = Node {
+    lo: [0.0; 3],
+    hi: [0.0; 3],
+    end: 0,
+    first: 0,
+    count: 0,
+};
+
+/// The box of the boxes `ids`, and the axis along which their centres
+/// spread the most (the split axis).
+fn bounds(boxes: &[[Point3; 2]], ids: &[u32]) -> (Point3, Point3, usize) {
+    let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+    for &i in ids {
+        let b = &boxes[i as usize];
+        for k in 0..3 {
+            lo[k] = lo[k].min(b[0][k]);
+            hi[k] = hi[k].max(b[1][k]);
+            clo[k] = clo[k].min(centre(b, k));
+            chi[k] = chi[k].max(centre(b, k));
         }
-        bvh.nodes.push(Node {
-            lo: [0.0; 3],
-            hi: [0.0; 3],
-            end: 0,
-            first: 0,
+    }
+    let axis = (0..3)
+        .max_by(|&a, &b| (chi[a] - clo[a]).total_cmp(&(chi[b] - clo[b])))
+        .unwrap_or(0);
+    (lo, hi, axis)
+}
+
+/// The centre of box `b` along axis `k`.
+#[inline]
+fn centre(b: &[Point3; 2], k: usize) -> f64 {
+    b[0][k] * 0.5 + b[1][k] * 0.5
+}
+
+/// Splits `ids` at its median along `axis` (the left half the smaller
+/// centres); returns the length of the left half.
+fn split(boxes: &[[Point3; 2]], ids: &mut [u32], axis: usize) -> usize {
+    let mid = ids.len() / 2;
+    ids.select_nth_unstable_by(mid, |&a, &b| {
+        centre(&boxes[a as usize], axis).total_cmp(&centre(&boxes[b as usize], axis))
+    });
+    mid
+}
+
+/// The hierarchy over `ids`, which sit at `start..` of the whole order:
+/// its root at index 0, children of a node adjacent, leaves' ranges and
+/// ends as positions of the whole order. Long ranges build their halves
+/// on two threads (`rayon::join`), then place the two subtrees' roots at
+/// 1 and 2 and the rest of the left subtree before the rest of the right
+/// one; the tree is the one a single thread builds, numbered apart.
+fn build(boxes: &[[Point3; 2]], ids: &mut [u32], start: usize, parallel_min: usize) -> Vec<Node> {
+    let len = ids.len();
+    if len > parallel_min.max(LEAF) {
+        let (lo, hi, axis) = bounds(boxes, ids);
+        let mid = split(boxes, ids, axis);
+        let (left, right) = ids.split_at_mut(mid);
+        let (l, r) = rayon::join(
+            || build(boxes, left, start, parallel_min),
+            || build(boxes, right, start + mid, parallel_min),
+        );
+        let mut nodes = Vec::with_capacity(1 + l.len() + r.len());
+        nodes.push(Node {
+            lo,
+            hi,
+            end: (start + len) as u32,
+            first: 1,
             count: 0,
         });
-        // (node, start, end) of `order` still to split.
-        let mut stack = vec![(0usize, 0usize, boxes.len())];
-        let centre = |i: u32, k: usize| {
-            let b = &boxes[i as usize];
-            b[0][k] * 0.5 + b[1][k] * 0.5
+        // Subtree node `j` moves to `j + shift` (its root to `root`).
+        let place = |node: &Node, shift: u32| Node {
+            first: if node.count == 0 {
+                node.first + shift
+            } else {
+                node.first
+            },
+            ..*node
         };
-        while let Some((node, start, end)) = stack.pop() {
-            let ids = &mut bvh.order[start..end];
-            let (mut lo, mut hi) = (boxes[ids[0] as usize][0], boxes[ids[0] as usize][1]);
-            let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
-            for &i in ids.iter() {
-                let b = &boxes[i as usize];
-                for k in 0..3 {
-                    lo[k] = lo[k].min(b[0][k]);
-                    hi[k] = hi[k].max(b[1][k]);
-                    clo[k] = clo[k].min(centre(i, k));
-                    chi[k] = chi[k].max(centre(i, k));
-                }
-            }
-            bvh.nodes[node].lo = lo;
-            bvh.nodes[node].hi = hi;
-            bvh.nodes[node].end = end as u32;
-            if ids.len() <= LEAF {
-                bvh.nodes[node].first = start as u32;
-                bvh.nodes[node].count = ids.len() as u32;
-                continue;
-            }
-            let axis = (0..3)
-                .max_by(|&a, &b| (chi[a] - clo[a]).total_cmp(&(chi[b] - clo[b])))
-                .unwrap_or(0);
-            let mid = ids.len() / 2;
-            ids.select_nth_unstable_by(mid, |&a, &b| centre(a, axis).total_cmp(&centre(b, axis)));
-            let left = bvh.nodes.len();
-            for _ in 0..2 {
-                bvh.nodes.push(Node {
-                    lo: [0.0; 3],
-                    hi: [0.0; 3],
-                    end: 0,
-                    first: 0,
-                    count: 0,
-                });
-            }
-            bvh.nodes[node].first = left as u32;
-            stack.push((left, start, start + mid));
-            stack.push((left + 1, start + mid, end));
+        let (ls, rs) = (2, l.len() as u32 + 1);
+        nodes.push(place(&l[0], ls));
+        nodes.push(place(&r[0], rs));
+        nodes.extend(l[1..].iter().map(|n| place(n, ls)));
+        nodes.extend(r[1..].iter().map(|n| place(n, rs)));
+        return nodes;
+    }
+    let mut nodes = Vec::with_capacity(2 * len / LEAF + 1);
+    nodes.push(BLANK);
+    // (node, start, end) of `ids` still to split.
+    let mut stack = vec![(0usize, 0usize, len)];
+    while let Some((node, s, e)) = stack.pop() {
+        let range = &mut ids[s..e];
+        let (lo, hi, axis) = bounds(boxes, range);
+        nodes[node].lo = lo;
+        nodes[node].hi = hi;
+        nodes[node].end = (start + e) as u32;
+        if range.len() <= LEAF {
+            nodes[node].first = (start + s) as u32;
+            nodes[node].count = range.len() as u32;
+            continue;
         }
-        bvh
+        let mid = split(boxes, range, axis);
+        let left = nodes.len();
+        nodes.extend([BLANK, BLANK]);
+        nodes[node].first = left as u32;
+        stack.push((left, s, s + mid));
+        stack.push((left + 1, s + mid, e));
+    }
+    nodes
+}
+
+impl Bvh {
+    pub(super) fn new(boxes: &[[Point3; 2]]) -> Bvh {
+        Bvh::with_parallel_min(boxes, PARALLEL_MIN)
+    }
+
+    /// [`Bvh::new`], ranges longer than `parallel_min` split on two
+    /// threads (the tests take it small).
+    fn with_parallel_min(boxes: &[[Point3; 2]], parallel_min: usize) -> Bvh {
+        let mut order: Vec<u32> = (0..boxes.len() as u32).collect();
+        let nodes = if boxes.is_empty() {
+            Vec::new()
+        } else {
+            build(boxes, &mut order, 0, parallel_min)
+        };
+        Bvh { nodes, order }
     }
 
     /// The box ids in the hierarchy's order: position `p` holds box
@@ -223,13 +290,6 @@ mod tests {
                 boxes.push([p, q]);
             }
         }
-        let bvh = Bvh::new(&boxes);
-        let mut got = Vec::new();
-        for pos in 0..boxes.len() {
-            let i = bvh.order()[pos];
-            bvh.query_after(&boxes, pos, |j| got.push((i.min(j), i.max(j))));
-        }
-        got.sort_unstable();
         let mut want = Vec::new();
         for i in 0..boxes.len() as u32 {
             for j in i + 1..boxes.len() as u32 {
@@ -238,8 +298,28 @@ mod tests {
                 }
             }
         }
-        // Every overlapping pair exactly once.
-        assert_eq!(got, want);
+        // Built on one thread, and with every range above 5, 16 or 100
+        // boxes split on two (the subtrees joined): every overlapping
+        // pair exactly once, and the same order of the boxes.
+        let single = Bvh::with_parallel_min(&boxes, usize::MAX);
+        for parallel_min in [usize::MAX, 5, 16, 100] {
+            let bvh = Bvh::with_parallel_min(&boxes, parallel_min);
+            assert_eq!(bvh.order(), single.order(), "{parallel_min}");
+            assert_eq!(bvh.nodes.len(), single.nodes.len(), "{parallel_min}");
+            let mut got = Vec::new();
+            for pos in 0..boxes.len() {
+                let i = bvh.order()[pos];
+                bvh.query_after(&boxes, pos, |j| got.push((i.min(j), i.max(j))));
+            }
+            got.sort_unstable();
+            assert_eq!(got, want, "{parallel_min}");
+            for q in boxes.iter().step_by(7) {
+                let grown = [q[0].map(|x| x - 0.3), q[1].map(|x| x + 0.3)];
+                let far = [q[0].map(|x| x + 20.0), q[1].map(|x| x + 20.0)];
+                assert!(bvh.any_overlap(&boxes, &grown));
+                assert!(!bvh.any_overlap(&boxes, &far));
+            }
+        }
         let empty = Bvh::new(&[]);
         empty.query_after(&[], 0, |_| panic!("no boxes"));
     }

@@ -500,8 +500,13 @@ fn pairs_near_with(
             b
         })
         .collect();
-    // The facets whose boxes meet a box of `ring` (a facet mask).
+    // The facets whose boxes meet a box of `ring` (a facet mask); a ring
+    // of every facet is its own growth (no hierarchy to build: the case of
+    // a mesh whose every vertex moved).
     let grow = |ring: &[bool]| -> Vec<bool> {
+        if ring.iter().all(|&r| r) {
+            return ring.to_vec();
+        }
         let inner: Vec<[Point3; 2]> = boxes
             .iter()
             .zip(ring)
@@ -532,17 +537,20 @@ fn pairs_near_with(
     let near = grow(&focus);
     let kept = grow(&near);
     let ids: Vec<u32> = (0..count as u32).filter(|&f| kept[f as usize]).collect();
-    // The neighbourhood as a mesh of its own vertices only.
-    let mut index: HashMap<u32, u32> = HashMap::new();
+    // The neighbourhood as a mesh of its own vertices only (the new index
+    // of every vertex, `u32::MAX` until a kept facet uses it).
+    let mut index = vec![u32::MAX; vertices.len()];
     let mut sub = PolygonMesh::default();
     for &f in &ids {
         let mut facet = facet(f as usize);
         for h in &mut facet.half_edges {
             for v in [&mut h.start, &mut h.end] {
-                *v = *index.entry(*v).or_insert_with(|| {
+                let at = &mut index[*v as usize];
+                if *at == u32::MAX {
+                    *at = sub.vertices.len() as u32;
                     sub.vertices.push(vertices[*v as usize]);
-                    sub.vertices.len() as u32 - 1
-                });
+                }
+                *v = *at;
             }
         }
         sub.facets.push(facet);
