@@ -234,11 +234,14 @@ impl PolygonSet2 {
     /// list of vertex indices, the last joining back to the first.
     ///
     /// At a vertex where several loops meet, the outgoing edge is the first
-    /// one clockwise from the reversed incoming edge, so the loop follows
-    /// the region on its left; loops that merely touch at a vertex come out
-    /// as separate simple rings for geometrically valid input. Requires
-    /// [`Self::check_topology`] to pass; otherwise the unmatched edges are
-    /// left out.
+    /// one clockwise from the reversed incoming edge, so the walk follows
+    /// the region on its left around one corner of it; a walk that comes
+    /// back to a vertex it passed (a hole touching its outer ring, two
+    /// holes touching) is then cut there into closed loops. So no loop
+    /// passes a vertex twice: loops that touch at a vertex come out as
+    /// separate rings, which is what ring formats (the simple rings of
+    /// OGC Simple Features) need. Requires [`Self::check_topology`] to
+    /// pass; otherwise the unmatched edges are left out.
     pub fn loops(&self) -> Vec<Vec<u32>> {
         crate::polygon_set::trace::trace_loops(self)
     }
@@ -296,6 +299,7 @@ mod trace {
         }
         let mut used = vec![false; unit.len()];
         let mut loops = Vec::new();
+        let mut at = vec![u32::MAX; n];
         for first in 0..unit.len() {
             if used[first] {
                 continue;
@@ -339,9 +343,44 @@ mod trace {
                     None => break,
                 }
             }
-            loops.push(ring);
+            split_at_repeats(&ring, &mut at, &mut loops);
         }
         loops
+    }
+
+    /// Cuts the closed walk `walk` into loops that pass no vertex twice and
+    /// appends them to `out`: a stack of the walk's vertices, and on
+    /// meeting a vertex already on it, everything above that vertex (with
+    /// it) closes a loop. Each edge of the walk lands in exactly one loop,
+    /// in its direction, so the edges and every winding number stay the
+    /// same. `at` holds each vertex's stack position, `u32::MAX` when not
+    /// on the stack (and is left so).
+    fn split_at_repeats(walk: &[u32], at: &mut Vec<u32>, out: &mut Vec<Vec<u32>>) {
+        let mut stack: Vec<u32> = Vec::with_capacity(walk.len());
+        for &v in walk {
+            if at.len() <= v as usize {
+                at.resize(v as usize + 1, u32::MAX);
+            }
+            let pos = at[v as usize];
+            if pos == u32::MAX {
+                at[v as usize] = stack.len() as u32;
+                stack.push(v);
+                continue;
+            }
+            // The walk came back to `v`: the part since closes a loop.
+            let piece: Vec<u32> = stack.drain(pos as usize..).collect();
+            for &w in &piece[1..] {
+                at[w as usize] = u32::MAX;
+            }
+            out.push(piece);
+            stack.push(v);
+        }
+        for &w in &stack {
+            at[w as usize] = u32::MAX;
+        }
+        if !stack.is_empty() {
+            out.push(stack);
+        }
     }
 }
 
@@ -401,6 +440,114 @@ mod tests {
             }
         ));
         assert!(err.to_string().contains("vertex 1"));
+    }
+
+    /// The directed unit edges of `loops`, sorted.
+    fn loop_edges(loops: &[Vec<u32>]) -> Vec<(u32, u32)> {
+        let mut e: Vec<(u32, u32)> = loops
+            .iter()
+            .flat_map(|l| (0..l.len()).map(move |i| (l[i], l[(i + 1) % l.len()])))
+            .collect();
+        e.sort_unstable();
+        e
+    }
+
+    /// The directed unit edges of `set` (multiplicity `m` as `|m|` copies,
+    /// reversed when negative), sorted.
+    fn unit_edges(set: &PolygonSet2) -> Vec<(u32, u32)> {
+        let mut e = Vec::new();
+        for x in set.edges() {
+            let d = if x.mult > 0 {
+                (x.start, x.end)
+            } else {
+                (x.end, x.start)
+            };
+            e.extend(std::iter::repeat_n(d, x.mult.unsigned_abs() as usize));
+        }
+        e.sort_unstable();
+        e
+    }
+
+    #[test]
+    fn loops_split_a_hole_touching_its_outer_ring() {
+        // A square with a triangular hole touching its corner (0, 0), and a
+        // second hole touching the first at (2, 5): the walk around the
+        // region's corners passes (0, 0) and (2, 5) twice; the loops must
+        // not (a ring through one point twice is not a simple ring).
+        // The touching points are one vertex each, and the outer ring
+        // starts at (0, 10), so the walk reaches (0, 0) before closing and
+        // turns into the hole there.
+        let mut s = PolygonSet2::new();
+        let [top, o, right, corner, a, b, c, d] = [
+            [0., 10.],
+            [0., 0.],
+            [10., 0.],
+            [10., 10.],
+            [2., 5.],
+            [5., 2.],
+            [3., 8.],
+            [4., 6.],
+        ]
+        .map(|p| s.add_vertex(p));
+        for ring in [&[top, o, right, corner][..], &[o, a, b], &[a, c, d]] {
+            for i in 0..ring.len() {
+                s.add_edge(ring[i], ring[(i + 1) % ring.len()]);
+            }
+        }
+        assert!(s.check_topology().is_ok());
+        let loops = s.loops();
+        assert_eq!(loops.len(), 3, "{loops:?}");
+        for l in &loops {
+            let mut v = l.clone();
+            v.sort_unstable();
+            v.dedup();
+            assert_eq!(v.len(), l.len(), "{l:?} passes a vertex twice");
+        }
+        assert_eq!(loop_edges(&loops), unit_edges(&s));
+        let areas: Vec<f64> = loops
+            .iter()
+            .map(|l| {
+                let ring: Vec<Point2> = l.iter().map(|&v| s.vertex(v)).collect();
+                crate::ring_signed_area(&ring)
+            })
+            .collect();
+        assert_eq!(areas.iter().filter(|&&a| a > 0.0).count(), 1, "{areas:?}");
+        assert_eq!(areas.iter().sum::<f64>(), s.signed_area());
+    }
+
+    proptest::proptest! {
+        /// Closed random walks on a 4 x 4 grid (many vertices passed
+        /// several times, edges repeated and reversed): every loop passes
+        /// each vertex at most once, and the loops use each unit edge of
+        /// the set exactly once.
+        #[test]
+        fn loops_are_simple_and_use_every_edge_once(
+            walks in proptest::collection::vec(
+                proptest::collection::vec((0u8..4, 0u8..4), 2..12), 1..5)
+        ) {
+            let mut s = PolygonSet2::new();
+            let ids: Vec<u32> = (0..16)
+                .map(|i| s.add_vertex([f64::from(i % 4), f64::from(i / 4)]))
+                .collect();
+            for w in &walks {
+                for i in 0..w.len() {
+                    let (a, b) = (w[i], w[(i + 1) % w.len()]);
+                    let (a, b) = (ids[usize::from(a.0 + 4 * a.1)], ids[usize::from(b.0 + 4 * b.1)]);
+                    if a != b {
+                        s.add_edge(a, b);
+                    }
+                }
+            }
+            proptest::prop_assume!(s.check_topology().is_ok());
+            let loops = s.loops();
+            for l in &loops {
+                let mut v = l.clone();
+                v.sort_unstable();
+                v.dedup();
+                proptest::prop_assert_eq!(v.len(), l.len(), "{:?}", l);
+            }
+            proptest::prop_assert_eq!(loop_edges(&loops), unit_edges(&s));
+        }
     }
 
     #[test]
