@@ -711,8 +711,8 @@ fn triangle_corners(mode: Mode, indices: &[u32]) -> Vec<[u32; 3]> {
 }
 
 /// The local matrix of `node` in `f64`: its `matrix`, or `T * R * S` of
-/// its translation, rotation (a unit quaternion `x, y, z, w`) and scale
-/// (section 3.5.3 of glTF 2.0).
+/// its translation, rotation (a quaternion `x, y, z, w`, normalized) and
+/// scale (section 3.5.3 of glTF 2.0).
 fn local_matrix(node: &gltf::json::Node) -> Matrix {
     if let Some(m) = node.matrix {
         let mut out = [[0.0; 4]; 4];
@@ -729,22 +729,33 @@ fn local_matrix(node: &gltf::json::Node) -> Matrix {
         .map_or([0.0, 0.0, 0.0, 1.0], |q| q.0)
         .map(f64::from);
     let [sx, sy, sz] = node.scale.unwrap_or([1.0; 3]).map(f64::from);
-    // The rotation matrix of the unit quaternion, by columns.
+    // The rotation matrix of the quaternion, by columns, with `2 / |q|^2`
+    // in place of 2: the rotation of `q / |q|`. glTF asks for unit
+    // quaternions, but exporters write `f32` ones a few ulps off, and
+    // some far off ([0, 0, 1, 1] for a quarter turn); the plain formula
+    // would scale and shear the mesh by `|q|^2`. A zero quaternion, which
+    // names no rotation, is none.
+    let n2 = x * x + y * y + z * z + w * w;
+    let k = if n2 > 0.0 && n2.is_finite() {
+        2.0 / n2
+    } else {
+        0.0
+    };
     let r = [
         [
-            1.0 - 2.0 * (y * y + z * z),
-            2.0 * (x * y + z * w),
-            2.0 * (x * z - y * w),
+            1.0 - k * (y * y + z * z),
+            k * (x * y + z * w),
+            k * (x * z - y * w),
         ],
         [
-            2.0 * (x * y - z * w),
-            1.0 - 2.0 * (x * x + z * z),
-            2.0 * (y * z + x * w),
+            k * (x * y - z * w),
+            1.0 - k * (x * x + z * z),
+            k * (y * z + x * w),
         ],
         [
-            2.0 * (x * z + y * w),
-            2.0 * (y * z - x * w),
-            1.0 - 2.0 * (x * x + y * y),
+            k * (x * z + y * w),
+            k * (y * z - x * w),
+            1.0 - k * (x * x + y * y),
         ],
     ];
     let s = [sx, sy, sz];
@@ -964,6 +975,37 @@ mod tests {
             "{lo:?} {hi:?}"
         );
         assert!((volume(&mesh) - 3.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn rotations_that_are_not_unit_quaternions_are_normalized() {
+        // [0, 0, 1, 1] is the quarter turn about z of the test above at
+        // twice its length, and [0, 0, 0, 0] names no rotation: both keep
+        // the cube's volume (the plain formula would give 3 * 9 and 3).
+        let cases = [
+            ([0.0, 0.0, 1.0, 1.0], [-1.0, 0.0, 0.0], [0.0, 3.0, 1.0]),
+            ([0.0, 0.0, 0.0, 0.0], [0.0, 0.0, 0.0], [3.0, 1.0, 1.0]),
+        ];
+        for (q, want_lo, want_hi) in cases {
+            let bytes = cube_doc(
+                json!([{"mesh": 0, "rotation": q, "scale": [3.0, 1.0, 1.0]}]),
+                json!([{"nodes": [0]}]),
+            );
+            let mesh = parse_glb(&bytes, "turned.glb").unwrap();
+            let lo = mesh.vertices.iter().fold([f64::MAX; 3], |a, p| {
+                [a[0].min(p[0]), a[1].min(p[1]), a[2].min(p[2])]
+            });
+            let hi = mesh.vertices.iter().fold([f64::MIN; 3], |a, p| {
+                [a[0].max(p[0]), a[1].max(p[1]), a[2].max(p[2])]
+            });
+            let near =
+                |a: [f64; 3], b: [f64; 3]| a.iter().zip(b).all(|(x, y)| (x - y).abs() < 1e-6);
+            assert!(
+                near(lo, want_lo) && near(hi, want_hi),
+                "{q:?}: {lo:?} {hi:?}"
+            );
+            assert!((volume(&mesh) - 3.0).abs() < 1e-6, "{q:?}");
+        }
     }
 
     #[test]
