@@ -203,8 +203,9 @@ fn a_destination_that_is_a_file_of_the_script_is_refused() {
     assert_eq!(std::fs::read(&mesh).unwrap(), before);
 }
 
-/// `umbra csg` smooths near the Booleans' contacts when a Boolean ran (and
-/// the whole mesh otherwise), says which in the report, and smooths
+/// `umbra csg` smooths near the Booleans' contacts when a Boolean ran,
+/// leaves a tree without a Boolean as it is unless a tolerance is given
+/// (then smooths the whole mesh), says which in the report, and smooths
 /// nothing with `--smooth 0`.
 #[test]
 fn csg_smooths_near_contacts_and_says_so() {
@@ -218,7 +219,8 @@ fn csg_smooths_near_contacts_and_says_so() {
             vec!["--smooth", "1e-3"],
             Some(true),
         ),
-        (single.clone(), vec![], Some(false)),
+        (single.clone(), vec![], None),
+        (single.clone(), vec!["--smooth", "1e-3"], Some(false)),
         (
             examples().join("pipe_tee.json"),
             vec!["--smooth", "0"],

@@ -10,8 +10,9 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_via_simplify, fill_rule_name, from_geo, layout_polygons,
-    simplify as simplify_set, FillRule, PolygonSet2, Polygons, RingOrientation, UmbraError, Via,
+    boolean, boolean_via_simplify, default_set_tolerance, fill_rule_name, from_geo,
+    layout_polygons, simplify as simplify_set, smooth_polygon_set, FillRule, PolygonSet2, Polygons,
+    RingOrientation, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -114,9 +115,11 @@ fn output<'py>(py: Python<'py>, set: PolygonSet2, keep: bool) -> PyResult<Bound<
     polygons_to_py(py, &layout.polygons)
 }
 
-/// The 2D Boolean of two polygon lists (see the Python docstring).
+/// The 2D Boolean of two polygon lists (see the Python docstring),
+/// smoothed at `smooth` (by default the command line's tolerance, 1e-9
+/// times the operands' largest extent; 0 for the raw output).
 #[pyfunction]
-#[pyo3(signature = (a, b, op, *, via = "basic", keep_orientation = false))]
+#[pyo3(signature = (a, b, op, *, via = "basic", keep_orientation = false, smooth = None))]
 pub fn boolean_2d<'py>(
     py: Python<'py>,
     a: &Bound<'py, PyAny>,
@@ -124,6 +127,7 @@ pub fn boolean_2d<'py>(
     op: &str,
     via: &str,
     keep_orientation: bool,
+    smooth: Option<f64>,
 ) -> PyResult<Bound<'py, PyAny>> {
     let op = parse_op(op)?;
     let via = match via {
@@ -137,19 +141,45 @@ pub fn boolean_2d<'py>(
     };
     let a = input_set(py, a, keep_orientation, "a")?;
     let b = input_set(py, b, keep_orientation, "b")?;
-    let shape = run(py, || match via {
-        Via::Basic => boolean(&a, &b, op)
-            .map(|o| o.shape)
-            .map_err(|source| UmbraError::Boolean {
-                file: String::new(),
-                source,
-            }),
-        Via::Simplify => boolean_via_simplify(&a, &b, op)
-            .map(|o| o.shape)
-            .map_err(|source| UmbraError::Simplify {
-                file: String::new(),
-                source,
-            }),
+    // Winding numbers kept as written are the result itself, which
+    // smoothing (made for regions of winding number 0 and 1) does not
+    // keep: raw unless asked.
+    let tolerance = smooth.unwrap_or_else(|| {
+        if keep_orientation {
+            0.0
+        } else {
+            default_set_tolerance(&a).max(default_set_tolerance(&b))
+        }
+    });
+    let shape = run(py, || {
+        let raw = match via {
+            Via::Basic => {
+                boolean(&a, &b, op)
+                    .map(|o| o.shape)
+                    .map_err(|source| UmbraError::Boolean {
+                        file: String::new(),
+                        source,
+                    })
+            }
+            Via::Simplify => boolean_via_simplify(&a, &b, op)
+                .map(|o| o.shape)
+                .map_err(|source| UmbraError::Simplify {
+                    file: String::new(),
+                    source,
+                }),
+        }?;
+        if tolerance == 0.0 {
+            return Ok(raw);
+        }
+        let opts = SmoothOptions::new(tolerance);
+        let smooth_error = |source| UmbraError::Smooth {
+            file: String::new(),
+            source,
+        };
+        opts.validate().map_err(smooth_error)?;
+        smooth_polygon_set(&raw, &opts)
+            .map(|s| s.shape)
+            .map_err(smooth_error)
     })?;
     output(py, shape, keep_orientation)
 }

@@ -13,7 +13,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify, Contacts, default_mesh_tolerance, encode_mesh_with,
+    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify, Contacts, default_mesh_tolerance, default_set_tolerance, encode_mesh_with,
     encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near,
     Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
     Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
@@ -52,10 +52,13 @@ pub struct BooleanArgs {
     #[arg(long)]
     triangulate: bool,
     /// Smooth the result at this tolerance (Appendix A: merges what lies
-    /// closer, removes slivers, gaps and coincident opposing facets).
-    /// 3D results are smoothed by default at 1e-9 times the largest
-    /// bounding-box extent of either operand; `--smooth 0` writes the basic
-    /// Boolean's raw output. 2D results are smoothed only when asked.
+    /// closer, removes slivers, gaps, coincident opposing facets and
+    /// edges). Results are smoothed by default at 1e-9 times the largest
+    /// bounding-box extent of either operand; `--smooth 0` writes the
+    /// Boolean's raw output (in 2D its degenerate features, such as an
+    /// edge running back over a shared boundary, make rings that OGC
+    /// Simple Features readers like GEOS call invalid). With
+    /// --keep-orientation 2D results are raw unless asked.
     #[arg(long, value_name = "T", value_parser = tolerance_arg)]
     smooth: Option<f64>,
 }
@@ -151,6 +154,15 @@ impl BooleanArgs {
         };
         let out_file = out_path.display().to_string();
         let files = [a_path.as_path(), b_path.as_path()];
+        // With --keep-orientation the winding numbers themselves are the
+        // result (inside-out and multiply covered regions), which
+        // smoothing, made for regions of winding number 0 and 1, does not
+        // keep: raw unless asked.
+        let tolerance = if keep {
+            0.0
+        } else {
+            default_set_tolerance(&a).max(default_set_tolerance(&b))
+        };
         let start = Instant::now();
         let (encoded, report) = match via {
             Via::Basic => {
@@ -167,7 +179,7 @@ impl BooleanArgs {
                     &out,
                     total,
                 );
-                self.smooth_2d(out.shape, encoded, report, out_kind)?
+                self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
             }
             Via::Simplify => {
                 let result = boolean_via_simplify(&a, &b, op);
@@ -183,7 +195,7 @@ impl BooleanArgs {
                     &out,
                     total,
                 );
-                self.smooth_2d(out.shape, encoded, report, out_kind)?
+                self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
             }
         };
         self.out.write(&encoded.bytes, &report)?;
@@ -284,19 +296,21 @@ impl BooleanArgs {
         Ok(ExitCode::SUCCESS)
     }
 
-    /// Smooths a 2D result when `--smooth T` (T > 0) asks for it: the
-    /// smoothed set encoded and the report updated; otherwise unchanged.
+    /// Smooths a 2D result at `--smooth T`, by default at
+    /// [`umbra::DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of
+    /// either operand (`tolerance`): the smoothed set encoded and the
+    /// report updated; unchanged at a tolerance of 0.
     fn smooth_2d(
         &self,
         shape: PolygonSet2,
-        encoded: umbra::EncodedPolygons,
-        report: Boolean2Report,
+        (encoded, report): (umbra::EncodedPolygons, Boolean2Report),
         out_kind: FileKind,
+        tolerance: f64,
     ) -> anyhow::Result<(umbra::EncodedPolygons, Boolean2Report)> {
-        let tol = match self.smooth {
-            Some(t) if t > 0.0 => t,
-            _ => return Ok((encoded, report)),
-        };
+        let tol = self.smooth.unwrap_or(tolerance);
+        if tol <= 0.0 {
+            return Ok((encoded, report));
+        }
         let start = Instant::now();
         let smoothed = smooth_polygon_set(&shape, &SmoothOptions::new(tol)).map_err(|source| {
             UmbraError::Smooth {

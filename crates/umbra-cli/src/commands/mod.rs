@@ -71,12 +71,19 @@ pub fn tolerance_arg(s: &str) -> Result<f64, String> {
 /// tolerance of 0 leaves the result raw. Where the evaluation gathered
 /// contacts at a proximity of at least the tolerance ([`csg_options`]),
 /// only near them, as `umbra boolean` smooths (the same result when the
-/// leaves need no smoothing themselves); else the whole mesh.
+/// leaves need no smoothing themselves); else the whole mesh. A tree
+/// without a Boolean cut nothing, so by default it is left as evaluated
+/// (smoothing a lone primitive or file leaf whole would cost seconds on a
+/// big one and change nothing a Boolean made); an explicit tolerance
+/// still smooths it.
 pub fn smooth_result(
     result: umbra::CsgResult,
     triangulate: bool,
     tolerance: Option<f64>,
 ) -> anyhow::Result<umbra::CsgResult> {
+    if tolerance.is_none() && result.report.booleans == 0 {
+        return Ok(result);
+    }
     let tol = tolerance.unwrap_or_else(|| umbra::default_mesh_tolerance(&result.mesh));
     if tol <= 0.0 {
         return Ok(result);

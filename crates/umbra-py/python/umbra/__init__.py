@@ -219,6 +219,7 @@ def boolean_2d(
     *,
     via: str = "basic",
     keep_orientation: bool = False,
+    smooth: Optional[float] = None,
 ) -> Any:
     """The 2D Boolean ``op`` ("union", "intersection", "difference", "xor").
 
@@ -230,6 +231,14 @@ def boolean_2d(
     shapely geometry, else the plain form. Rings are read by role unless
     ``keep_orientation`` (then every ring is a directed loop as written and
     every output loop is its own polygon).
+
+    The result is smoothed (Appendix A) at ``smooth``, by default (None) at
+    1e-9 times the operands' largest extent, as ``umbra boolean`` does:
+    where operands share boundary the raw output can hold zero-width
+    features (an edge running back over another) that make rings GEOS,
+    and so shapely, calls invalid. ``smooth=0`` returns the raw output,
+    and so does ``keep_orientation=True`` unless ``smooth`` is given (its
+    winding numbers are the result, which smoothing does not keep).
     """
     out = _umbra.boolean_2d(
         _polygons_in(a, "a"),
@@ -237,6 +246,7 @@ def boolean_2d(
         op,
         via=via,
         keep_orientation=keep_orientation,
+        smooth=smooth,
     )
     return _to_shapely(out) if _is_shapely(a) or _is_shapely(b) else out
 

@@ -92,6 +92,7 @@ def boolean_2d(
     *,
     via: Literal["basic", "simplify"] | str = "basic",
     keep_orientation: bool = False,
+    smooth: float | None = None,
 ) -> _Polygons: ...
 def simplify(
     geom: Sequence[Sequence[npt.ArrayLike]],
