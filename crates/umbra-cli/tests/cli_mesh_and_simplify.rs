@@ -288,11 +288,12 @@ fn bad_meshes_exit_1_naming_file_and_constraint() {
             "OFF\n3 2 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n3 0 2 9\n",
             "9",
         ),
-        // OBJ reference 9 is vertex 8 counted from 0, of 3.
+        // OBJ reference 9 is vertex 8 counted from 0, of 3: `boolean` and
+        // `check` both name it in the file's 1-based terms, with its line.
         (
             "dangling.obj",
             "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nf 1 3 9\n",
-            "dangling index",
+            "face 2 (line 5) refers to vertex 9, but there are only 3 vertices",
         ),
         (
             "dangling_relative.obj",

@@ -8,7 +8,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use umbra::{
     check_mesh, check_polygon_set, read_mesh, read_polygon_set, CheckReport, FileKind, FileReport,
-    MeshCheckReport, MeshReadOptions, ReadOptions,
+    MeshCheckReport, MeshReadOptions, ReadOptions, UmbraError,
 };
 
 /// Check a file: topological validity, coordinates, and geometric
@@ -35,7 +35,25 @@ impl CheckArgs {
             let options = MeshReadOptions {
                 validate_coordinates: false,
             };
-            let r = check_mesh(&read_mesh(&self.input, options, false)?);
+            let mut r = check_mesh(&read_mesh(&self.input, options, false)?);
+            if !r.is_valid() {
+                // The reader names the first violation in the file's own
+                // terms (OBJ's 1-based indices and line, a PLY's element,
+                // an STL's facet) where the inspection counts from 0: read
+                // again, checking, for that message.
+                let strict = MeshReadOptions {
+                    validate_coordinates: true,
+                };
+                if let Err(UmbraError::InvalidMesh { message, .. }) =
+                    read_mesh(&self.input, strict, true)
+                {
+                    if r.coordinate_error.is_some() {
+                        r.coordinate_error = Some(message);
+                    } else if r.topology_error.is_some() {
+                        r.topology_error = Some(message);
+                    }
+                }
+            }
             self.print_3d(&file, &r)?;
             (r.is_valid(), problem(&r.coordinate_error, &r.topology_error))
         } else {

@@ -342,6 +342,19 @@ pub(crate) fn parse_ply_with_origins(
             ));
         }
     }
+    // Triangle strips (the `tristrips` element of some scanners' files)
+    // would otherwise be dropped as an unknown element, leaving the
+    // vertices as an empty solid.
+    if header
+        .elements
+        .get("tristrips")
+        .is_some_and(|t| t.count > 0)
+    {
+        return Err(malformed(
+            file,
+            "header: triangle strips (element 'tristrips') are not supported; write the mesh with a 'face' element",
+        ));
+    }
     if vertex_def.is_none() && header.elements.get("face").is_none_or(|f| f.count == 0) {
         return Err(UmbraError::Empty {
             file: file.to_string(),
@@ -629,6 +642,15 @@ mod tests {
         b.extend_from_slice(&0i32.to_be_bytes());
         b.extend_from_slice(&1i32.to_be_bytes());
         b
+    }
+
+    #[test]
+    fn triangle_strips_are_refused_by_name() {
+        let text = "ply\nformat ascii 1.0\nelement vertex 4\nproperty float x\nproperty float y\nproperty float z\nelement tristrips 1\nproperty list int int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n0 0 1\n6 0 2 1 3 0 2\n";
+        let e = parse_ply(text.as_bytes(), "strips.ply")
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("strips.ply") && e.contains("tristrips"), "{e}");
     }
 
     #[test]
