@@ -108,6 +108,20 @@ fn bad_scripts_exit_1_with_one_line_naming_the_script_and_node() {
         ),
         ("{\"box\": ", "script.json"),
         ("", "script.json"),
+        // Errors of the evaluation (not of the script's form) name the
+        // script too, then the node.
+        (
+            r#"{"box": {"size": [1, 1, 1]}, "translate": [1e308, 0, 0]}"#,
+            "script.json: root: transform moves",
+        ),
+        (
+            r#"{"box": {"size": [1, 1, 1]}, "scale": 1e-300}"#,
+            "script.json: root: transform must be invertible (determinant 0: a zero scale",
+        ),
+        (
+            r#"{"op": "union", "children": [{"box": {"size": [1, 1, 1]}}, {"file": "missing.stl"}]}"#,
+            "script.json: children[1]",
+        ),
     ];
     for (text, needle) in cases {
         let script = dir.join("script.json");

@@ -9,6 +9,7 @@ use crate::stdout::outln;
 use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
+use anyhow::Context;
 use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, FileKind};
 
 /// The script form, shown by `umbra csg --help`.
@@ -81,7 +82,9 @@ impl CsgArgs {
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();
-        let result = smooth_result(result?, triangulate, self.smooth)?;
+        // Evaluation errors name the node; the script names the file.
+        let result = result.with_context(|| self.script.display().to_string())?;
+        let result = smooth_result(result, triangulate, self.smooth)?;
         let file = self.out.output.display().to_string();
         let bytes = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
         self.out.write(&bytes, &result.report)?;

@@ -23,7 +23,9 @@ fn check_affine(m: &DMat4) -> Result<f64, ModelError> {
     if det == 0.0 || !det.is_finite() {
         return Err(ModelError::param(
             "transform",
-            format!("must be invertible (determinant {det})"),
+            format!(
+                "must be invertible (determinant {det}: a zero scale, or scales so small or large that their product leaves the f64 range)"
+            ),
         ));
     }
     Ok(det)
