@@ -1,9 +1,10 @@
 //! Results serialized to memory before anything is written (feature
 //! `io`): a front end encodes every output first, so that a failure leaves
 //! every destination untouched, and counts the 2D result as it will be
-//! written (writing by role merges rings that touch at a vertex and drops
-//! back-and-forth spikes, so the written rings may differ from
-//! [`PolygonSet2::loops`]).
+//! written (writing by role merges coincident vertices, so that rings
+//! touching at a point are cut there into simple rings, and drops
+//! back-and-forth spikes: the written rings may differ from
+//! [`PolygonSet2::loops`] of the set as computed).
 
 use crate::io::{rename_output, wrong_dimension_of as wrong_dimension};
 use crate::report::SetCounts;
