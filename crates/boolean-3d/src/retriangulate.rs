@@ -20,6 +20,12 @@
 //!   the *residual* `F' - sum of the kept triangles' boundaries` (opposite
 //!   half-edge pairs cancelled), is triangulated by [`triangulate_facet`].
 //!
+//! Vertices that the merge hid (inside a coplanar region, or subdividing a
+//! straight edge) are given back to the merged facets kept whole that
+//! hold them, when every facet around them is kept whole
+//! (`keep_interior_vertices`): those facets then copy their input
+//! triangles, so a Boolean leaves the surface it did not touch as it was.
+//!
 //! Topology holds whatever the geometry: the residual is a sum of closed
 //! chains (F' by Theorem 3, each kept triangle reversed), so it satisfies
 //! facet boundary closure; its triangulation adds internal edges in
@@ -78,10 +84,13 @@ type Piece = (Vec<[u32; 3]>, Vec<[Point3; 2]>);
 /// differ from the operands' besides the facets of one triangle, in piece
 /// order.
 pub(crate) fn to_triangle_mesh(
-    r: Retained,
+    mut r: Retained,
     sources: [Source<'_>; 2],
     track: bool,
 ) -> (TriangleMesh, Vec<[Point3; 2]>) {
+    for (k, src) in sources.iter().enumerate() {
+        keep_interior_vertices(&mut r, k, src);
+    }
     // (chunk, facets lo..hi of its list, first half-edge of facet lo).
     let mut pieces: Vec<(usize, usize, usize, usize)> = Vec::new();
     for (c, (_, _, list)) in r.chunks.iter().enumerate() {
@@ -144,6 +153,151 @@ pub(crate) fn to_triangle_mesh(
     } = r;
     drop((chunks, maps));
     (TriangleMesh::new(vertices, gather(parts, split)), changed)
+}
+
+/// Gives the vertices that the coplanar merge hid inside untouched merged
+/// facets of operand `k` a place in the result, so that [`facet`] copies
+/// those facets' input triangles instead of triangulating them afresh.
+///
+/// A vertex strictly inside a coplanar region (every edge around it a
+/// merged pair), or one the merge dropped from a straight edge, is no
+/// vertex of any merged facet, so the Boolean never saw it: it has no
+/// result vertex, and a facet holding one failed the "every vertex
+/// retained" test of a facet kept whole, whose input triangles were then
+/// replaced by a new triangulation of its boundary (PyVista's nut minus a
+/// disjoint box lost 216 of its 523 vertices). Here a retained facet of
+/// operand `k` is *kept* when it is its merged facet copied (reversed for
+/// B in a difference) with every boundary vertex retained with the
+/// operand's inclusion value, and every hidden vertex of its triangles
+/// has all its triangles in kept facets; the largest such set is found by
+/// removing, until nothing changes, every candidate that shares a hidden
+/// vertex with a facet that is not kept. The hidden vertices of the kept
+/// facets are appended to the result's vertices (at their input
+/// positions) and marked retained. Every facet using such a vertex then
+/// copies its input triangles, which agree along every edge (they are the
+/// operand's own triangles), so the result's closure is unchanged; a
+/// hidden vertex next to a cut facet stays hidden (keeping it on one side
+/// only would leave a T-junction). Vertices are appended in the result's
+/// facet order, so they do not depend on the thread count.
+fn keep_interior_vertices(r: &mut Retained, k: usize, src: &Source<'_>) {
+    if !src.merged.any {
+        return;
+    }
+    let sigma = src.sigma;
+    let n_facets = src.facets.facet_count();
+    let Retained {
+        vertices,
+        chunks,
+        maps,
+        ..
+    } = r;
+    let map = &mut maps[k];
+    let hidden = |map: &VertexMap, v: u32| map.vid[v as usize] == NONE;
+    // Candidates: retained facets of several triangles kept whole.
+    let mut kept = vec![false; n_facets];
+    for (operand, hes, list) in chunks.iter() {
+        if *operand as usize != k {
+            continue;
+        }
+        let mut at = 0usize;
+        for &(f, n) in list.iter() {
+            let part = &hes[at..at + n as usize];
+            at += n as usize;
+            let tris = src.merged.triangles(f);
+            if tris.len() <= 1 || part.len() != src.facets.facet_range(f).len() {
+                continue;
+            }
+            let vid = |v: u32| map.vid[v as usize];
+            let whole = src.facets.facet_half_edges(f);
+            let copied = part.iter().zip(whole).all(|(&(s, e), (s0, e0))| {
+                map.incl[s0 as usize] == sigma
+                    && map.incl[e0 as usize] == sigma
+                    && if sigma == 1 {
+                        s == vid(s0) && e == vid(e0)
+                    } else {
+                        s == vid(e0) && e == vid(s0)
+                    }
+            });
+            // A visible vertex of its triangles retained otherwise (on
+            // the other operand's boundary) rules it out too.
+            let visible_retained = tris.iter().all(|&t| {
+                src.triangles[t as usize]
+                    .iter()
+                    .all(|&v| hidden(map, v) || map.incl[v as usize] == sigma)
+            });
+            kept[f as usize] = copied && visible_retained;
+        }
+    }
+    // (hidden vertex, facet of one of its triangles), each pair once.
+    let mut around: Vec<(u32, u32)> = Vec::new();
+    for f in 0..n_facets as u32 {
+        for &t in src.merged.triangles(f) {
+            for v in src.triangles[t as usize] {
+                if hidden(map, v) {
+                    around.push((v, f));
+                }
+            }
+        }
+    }
+    if around.is_empty() {
+        return;
+    }
+    around.sort_unstable();
+    around.dedup();
+    // The facets of each hidden vertex (`around` by vertex) and the hidden
+    // vertices of each facet (`by_facet`), as offset tables.
+    let offsets = |keys: &mut dyn Iterator<Item = u32>, n: usize| {
+        let mut off = vec![0usize; n + 1];
+        for key in keys {
+            off[key as usize + 1] += 1;
+        }
+        for i in 0..n {
+            off[i + 1] += off[i];
+        }
+        off
+    };
+    let v_off = offsets(&mut around.iter().map(|p| p.0), src.pos.len());
+    let mut by_facet: Vec<(u32, u32)> = around.iter().map(|&(v, f)| (f, v)).collect();
+    by_facet.sort_unstable();
+    let f_off = offsets(&mut by_facet.iter().map(|p| p.0), n_facets);
+    // Remove every candidate that shares a hidden vertex with a facet
+    // that is not kept, spreading from the facets not kept (each facet
+    // enters the queue at most once: linear in `around`).
+    let mut queue: Vec<u32> = (0..n_facets as u32)
+        .filter(|&f| !kept[f as usize] && f_off[f as usize] < f_off[f as usize + 1])
+        .collect();
+    while let Some(f) = queue.pop() {
+        for &(_, v) in &by_facet[f_off[f as usize]..f_off[f as usize + 1]] {
+            for &(_, g) in &around[v_off[v as usize]..v_off[v as usize + 1]] {
+                if kept[g as usize] {
+                    kept[g as usize] = false;
+                    queue.push(g);
+                }
+            }
+        }
+    }
+    // The hidden vertices of the kept facets, in the result's facet order.
+    let mut placed = vec![false; src.pos.len()];
+    for (operand, _, list) in chunks.iter() {
+        if *operand as usize != k {
+            continue;
+        }
+        for &(f, _) in list.iter() {
+            if !kept[f as usize] {
+                continue;
+            }
+            for &t in src.merged.triangles(f) {
+                for v in src.triangles[t as usize] {
+                    if hidden(map, v) && !placed[v as usize] {
+                        placed[v as usize] = true;
+                        map.vid[v as usize] = vertices.len() as u32;
+                        map.incl[v as usize] = sigma;
+                        vertices.push(src.pos[v as usize]);
+                    }
+                }
+            }
+        }
+    }
 }
 
 /// The pieces' triangles in piece order, in one array; the copies run in

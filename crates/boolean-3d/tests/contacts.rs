@@ -232,20 +232,62 @@ fn with_edge_midpoint(mut m: TriangleMesh, a: Point3, b: Point3) -> TriangleMesh
 #[test]
 fn a_region_re_triangulated_away_from_the_other_operand_is_a_contact() {
     // A cube whose top and front faces share an edge split at its
-    // midpoint: the coplanar merge drops the midpoint, so both faces are
-    // re-triangulated though the other operand is far away.
+    // midpoint, which the coplanar merge hides (it only subdivides a
+    // straight edge).
     let m = with_edge_midpoint(
         box_triangles([0.0; 3], [1.0; 3]),
         [0.0, 0.0, 1.0],
         [1.0, 0.0, 1.0],
     );
     m.check_topology().unwrap();
+    // The other operand far away: both faces are kept as they were, the
+    // midpoint with them, and nothing changed needs a contact box.
     let far = box_triangles([3.0; 3], [4.0; 3]);
     let (out, c) = boolean_triangles_with_contacts(&m, &far, BooleanOp::Union, 1e-5).unwrap();
     assert_new_triangles_in_contacts(&m, &far, BooleanOp::Union, 1e-5);
-    // Both faces changed and nothing else did: two boxes, each a face.
-    assert_eq!(c.boxes.len(), 2, "{:?}", c.boxes);
-    assert!(out.mesh.vertices.len() < m.vertices.len() + far.vertices.len());
+    assert!(c.boxes.is_empty(), "{:?}", c.boxes);
+    assert_eq!(
+        out.mesh.vertices.len(),
+        m.vertices.len() + far.vertices.len()
+    );
+    let mut want: Vec<[Point3; 3]> = m
+        .triangles
+        .iter()
+        .chain(far.triangles.iter())
+        .zip(0..)
+        .map(|(t, i)| {
+            let vs = if i < m.triangles.len() {
+                &m.vertices
+            } else {
+                &far.vertices
+            };
+            t.map(|v| vs[v as usize])
+        })
+        .collect();
+    let mut got: Vec<[Point3; 3]> = out
+        .mesh
+        .triangles
+        .iter()
+        .map(|t| t.map(|v| out.mesh.vertices[v as usize]))
+        .collect();
+    let order = |a: &[Point3; 3], b: &[Point3; 3]| a.partial_cmp(b).unwrap();
+    want.sort_by(order);
+    got.sort_by(order);
+    assert_eq!(got, want, "untouched triangles are the operands' own");
+    // A post through the top face: the top face is cut, and the front
+    // face, which shares the hidden midpoint, is re-triangulated too
+    // although the post is far from it: its box is a contact.
+    let post = box_triangles([0.4, 0.4, 0.5], [0.6, 0.6, 1.5]);
+    let (_, c) = boolean_triangles_with_contacts(&m, &post, BooleanOp::Union, 1e-5).unwrap();
+    assert_new_triangles_in_contacts(&m, &post, BooleanOp::Union, 1e-5);
+    let front = [[0.0, 0.0, 0.0], [1.0, 0.0, 1.0]];
+    assert!(
+        c.boxes
+            .iter()
+            .any(|b| inside(&front[0], b) && inside(&front[1], b)),
+        "{:?}",
+        c.boxes
+    );
 }
 
 proptest! {

@@ -84,10 +84,11 @@ fn an_untouched_operand_keeps_its_triangles() {
 }
 
 #[test]
-fn interior_vertices_of_coplanar_regions_are_dropped() {
+fn interior_vertices_are_dropped_where_the_boolean_cut_and_kept_elsewhere() {
     // A box whose every face is split into 4 triangles around the centre
-    // (an interior vertex per face): the merge drops the centres, so the
-    // difference with a small box in one corner has no triangle on them.
+    // (an interior vertex per face): the merge hides the centres, so the
+    // three faces the corner box cuts are triangulated without theirs,
+    // while the three it leaves untouched keep their own triangles.
     let c = test_support::shapes::box_corners([0.0; 3], [2.0; 3]);
     let mut v = c.to_vec();
     let mut tris = Vec::new();
@@ -111,25 +112,32 @@ fn interior_vertices_of_coplanar_regions_are_dropped() {
     audit.verify().unwrap();
     check_step(&out.mesh, 8.0 - 0.125, "corner cut");
     let centres: Vec<[f64; 3]> = (8..14).map(|i| a.vertices[i]).collect();
-    for t in &out.mesh.triangles {
-        for &i in t {
-            assert!(
-                !centres.contains(&out.mesh.vertices[i as usize]),
-                "face centre kept: {t:?}"
-            );
-        }
+    let used: Vec<[f64; 3]> = out
+        .mesh
+        .triangles
+        .iter()
+        .flatten()
+        .map(|&i| out.mesh.vertices[i as usize])
+        .collect();
+    for c in &centres {
+        // The corner box cuts the faces at x = 0, y = 0 and z = 0.
+        let cut = c.contains(&0.0);
+        assert_eq!(used.contains(c), !cut, "face centre {c:?}");
     }
-    // By Euler per face: 3 untouched squares (2 triangles each), 3 faces
-    // with the corner notch, hexagons (4 each), the notch's 3 squares (2).
-    assert_eq!(out.mesh.triangles.len(), 3 * 2 + 3 * 4 + 3 * 2);
+    // By Euler per face: 3 untouched faces as they were (4 triangles
+    // each), 3 faces with the corner notch, hexagons (4 each), the
+    // notch's 3 squares (2).
+    assert_eq!(out.mesh.triangles.len(), 3 * 4 + 3 * 4 + 3 * 2);
 }
 
 #[test]
-fn vertices_that_only_subdivide_a_straight_edge_are_dropped() {
+fn vertices_that_only_subdivide_a_straight_edge_are_dropped_where_cut() {
     // A 2 x 1 x 1 box whose four long faces are each two unit squares (the
     // vertices at x = 1 subdivide the long edges): 20 triangles. Their
-    // faces merge into rectangles, the four middle vertices go, and a
-    // union with a disjoint cube gives two boxes of 12 triangles each.
+    // faces merge into rectangles, which hides the four middle vertices.
+    // A union with a disjoint cube keeps both operands as they were (20 +
+    // 12 triangles); a union with a box over the far end cuts every long
+    // face, and the middle vertices go.
     let mut v = Vec::new();
     for x in [0.0, 1.0, 2.0] {
         for (y, z) in [(0.0, 0.0), (1.0, 0.0), (1.0, 1.0), (0.0, 1.0)] {
@@ -153,8 +161,13 @@ fn vertices_that_only_subdivide_a_straight_edge_are_dropped() {
     let b = box_triangles([5.0; 3], [6.0; 3]);
     let (out, audit) = boolean_triangles_audit(&a, &b, BooleanOp::Union).unwrap();
     audit.verify().unwrap();
-    check_step(&out.mesh, 3.0, "union");
-    assert_eq!(out.mesh.triangles.len(), 24);
+    check_step(&out.mesh, 3.0, "disjoint union");
+    assert_eq!(out.mesh.triangles.len(), 20 + 12);
+    assert_eq!(out.mesh.vertices.len(), 12 + 8);
+    let end = box_triangles([1.5, -0.5, -0.5], [2.5, 1.5, 1.5]);
+    let (out, audit) = boolean_triangles_audit(&a, &end, BooleanOp::Union).unwrap();
+    audit.verify().unwrap();
+    check_step(&out.mesh, 2.0 + 4.0 - 0.5, "union over the end");
     for t in &out.mesh.triangles {
         for &i in t {
             assert_ne!(out.mesh.vertices[i as usize][0], 1.0, "{t:?}");
