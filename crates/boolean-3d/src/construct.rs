@@ -470,7 +470,7 @@ pub(crate) fn construct(
 }
 
 /// Offsets of contiguous per-facet ranges from a sorted facet sequence.
-fn facet_ranges(n: usize, keys: impl Iterator<Item = u32>) -> Vec<u32> {
+pub(crate) fn facet_ranges(n: usize, keys: impl Iterator<Item = u32>) -> Vec<u32> {
     let mut off = vec![0u32; n + 1];
     for f in keys {
         off[f as usize + 1] += 1;

@@ -37,7 +37,7 @@
 //! the cut box, so a kept triangle lies inside `F'`, and the residual is
 //! the region the Boolean changed plus the input triangles around it.
 
-use crate::construct::{Retained, VertexMap};
+use crate::construct::{facet_ranges, Retained, VertexMap};
 use crate::contacts::exact_box;
 use crate::merge::{Merged, NONE};
 use crate::mesh::Flat;
@@ -155,6 +155,26 @@ pub(crate) fn to_triangle_mesh(
     (TriangleMesh::new(vertices, gather(parts, split)), changed)
 }
 
+/// Whether the retained facet `part` of merged facet `f` is that facet
+/// copied half-edge by half-edge through the vertex map (reversed for B
+/// in a difference): the Boolean neither cut it nor moved its boundary.
+fn copied_whole(src: &Source<'_>, map: &VertexMap, f: u32, part: &[(u32, u32)]) -> bool {
+    if part.len() != src.facets.facet_range(f).len() {
+        return false;
+    }
+    let vid = |v: u32| map.vid[v as usize];
+    let whole = src.facets.facet_half_edges(f);
+    if src.sigma == 1 {
+        part.iter()
+            .zip(whole)
+            .all(|(&(s, e), (s0, e0))| s == vid(s0) && e == vid(e0))
+    } else {
+        part.iter()
+            .zip(whole)
+            .all(|(&(s, e), (s0, e0))| s == vid(e0) && e == vid(s0))
+    }
+}
+
 /// Gives the vertices that the coplanar merge hid inside untouched merged
 /// facets of operand `k` a place in the result, so that [`facet`] copies
 /// those facets' input triangles instead of triangulating them afresh.
@@ -185,48 +205,25 @@ fn keep_interior_vertices(r: &mut Retained, k: usize, src: &Source<'_>) {
     }
     let sigma = src.sigma;
     let n_facets = src.facets.facet_count();
-    let Retained {
-        vertices,
-        chunks,
-        maps,
-        ..
-    } = r;
-    let map = &mut maps[k];
     let hidden = |map: &VertexMap, v: u32| map.vid[v as usize] == NONE;
-    // Candidates: retained facets of several triangles kept whole.
+    // Candidates: retained facets of several triangles copied whole, every
+    // visible vertex of their triangles retained with the operand's value
+    // (a vertex on the other operand's boundary rules a facet out); and
+    // the operand's retained facets in the result's order.
     let mut kept = vec![false; n_facets];
-    for (operand, hes, list) in chunks.iter() {
-        if *operand as usize != k {
-            continue;
-        }
-        let mut at = 0usize;
-        for &(f, n) in list.iter() {
-            let part = &hes[at..at + n as usize];
-            at += n as usize;
-            let tris = src.merged.triangles(f);
-            if tris.len() <= 1 || part.len() != src.facets.facet_range(f).len() {
-                continue;
-            }
-            let vid = |v: u32| map.vid[v as usize];
-            let whole = src.facets.facet_half_edges(f);
-            let copied = part.iter().zip(whole).all(|(&(s, e), (s0, e0))| {
-                map.incl[s0 as usize] == sigma
-                    && map.incl[e0 as usize] == sigma
-                    && if sigma == 1 {
-                        s == vid(s0) && e == vid(e0)
-                    } else {
-                        s == vid(e0) && e == vid(s0)
-                    }
-            });
-            // A visible vertex of its triangles retained otherwise (on
-            // the other operand's boundary) rules it out too.
-            let visible_retained = tris.iter().all(|&t| {
+    let mut order: Vec<u32> = Vec::new();
+    let map = &r.maps[k];
+    for (at, part) in r.facets().filter(|(at, _)| at.operand as usize == k) {
+        let f = at.facet;
+        order.push(f);
+        let tris = src.merged.triangles(f);
+        kept[f as usize] = tris.len() > 1
+            && copied_whole(src, map, f, part)
+            && tris.iter().all(|&t| {
                 src.triangles[t as usize]
                     .iter()
                     .all(|&v| hidden(map, v) || map.incl[v as usize] == sigma)
             });
-            kept[f as usize] = copied && visible_retained;
-        }
     }
     // (hidden vertex, facet of one of its triangles), each pair once.
     let mut around: Vec<(u32, u32)> = Vec::new();
@@ -246,29 +243,20 @@ fn keep_interior_vertices(r: &mut Retained, k: usize, src: &Source<'_>) {
     around.dedup();
     // The facets of each hidden vertex (`around` by vertex) and the hidden
     // vertices of each facet (`by_facet`), as offset tables.
-    let offsets = |keys: &mut dyn Iterator<Item = u32>, n: usize| {
-        let mut off = vec![0usize; n + 1];
-        for key in keys {
-            off[key as usize + 1] += 1;
-        }
-        for i in 0..n {
-            off[i + 1] += off[i];
-        }
-        off
-    };
-    let v_off = offsets(&mut around.iter().map(|p| p.0), src.pos.len());
+    let v_off = facet_ranges(src.pos.len(), around.iter().map(|p| p.0));
     let mut by_facet: Vec<(u32, u32)> = around.iter().map(|&(v, f)| (f, v)).collect();
     by_facet.sort_unstable();
-    let f_off = offsets(&mut by_facet.iter().map(|p| p.0), n_facets);
+    let f_off = facet_ranges(n_facets, by_facet.iter().map(|p| p.0));
+    let range = |off: &[u32], i: u32| off[i as usize] as usize..off[i as usize + 1] as usize;
     // Remove every candidate that shares a hidden vertex with a facet
     // that is not kept, spreading from the facets not kept (each facet
     // enters the queue at most once: linear in `around`).
     let mut queue: Vec<u32> = (0..n_facets as u32)
-        .filter(|&f| !kept[f as usize] && f_off[f as usize] < f_off[f as usize + 1])
+        .filter(|&f| !kept[f as usize] && !range(&f_off, f).is_empty())
         .collect();
     while let Some(f) = queue.pop() {
-        for &(_, v) in &by_facet[f_off[f as usize]..f_off[f as usize + 1]] {
-            for &(_, g) in &around[v_off[v as usize]..v_off[v as usize + 1]] {
+        for &(_, v) in &by_facet[range(&f_off, f)] {
+            for &(_, g) in &around[range(&v_off, v)] {
                 if kept[g as usize] {
                     kept[g as usize] = false;
                     queue.push(g);
@@ -278,22 +266,16 @@ fn keep_interior_vertices(r: &mut Retained, k: usize, src: &Source<'_>) {
     }
     // The hidden vertices of the kept facets, in the result's facet order.
     let mut placed = vec![false; src.pos.len()];
-    for (operand, _, list) in chunks.iter() {
-        if *operand as usize != k {
-            continue;
-        }
-        for &(f, _) in list.iter() {
-            if !kept[f as usize] {
-                continue;
-            }
-            for &t in src.merged.triangles(f) {
-                for v in src.triangles[t as usize] {
-                    if hidden(map, v) && !placed[v as usize] {
-                        placed[v as usize] = true;
-                        map.vid[v as usize] = vertices.len() as u32;
-                        map.incl[v as usize] = sigma;
-                        vertices.push(src.pos[v as usize]);
-                    }
+    let Retained { vertices, maps, .. } = r;
+    let map = &mut maps[k];
+    for f in order.into_iter().filter(|&f| kept[f as usize]) {
+        for &t in src.merged.triangles(f) {
+            for v in src.triangles[t as usize] {
+                if hidden(map, v) && !placed[v as usize] {
+                    placed[v as usize] = true;
+                    map.vid[v as usize] = vertices.len() as u32;
+                    map.incl[v as usize] = sigma;
+                    vertices.push(src.pos[v as usize]);
                 }
             }
         }
@@ -421,21 +403,9 @@ fn facet(
         tris.iter()
             .all(|&t| src.triangles[t as usize].iter().all(|&v| retained(v)))
     };
-    let whole = src.facets.facet_half_edges(f);
-    if part.len() == src.facets.facet_range(f).len() {
-        let same = if sigma == 1 {
-            part.iter()
-                .zip(whole)
-                .all(|(&(s, e), (s0, e0))| s == vid(s0) && e == vid(e0))
-        } else {
-            part.iter()
-                .zip(whole)
-                .all(|(&(s, e), (s0, e0))| s == vid(e0) && e == vid(s0))
-        };
-        if same && all_retained() {
-            out.extend(tris.iter().map(|&t| oriented(t)));
-            return 0;
-        }
+    if copied_whole(src, map, f, part) && all_retained() {
+        out.extend(tris.iter().map(|&t| oriented(t)));
+        return 0;
     }
     // The cut box.
     let mut lo = [f64::INFINITY; 3];
