@@ -10,7 +10,7 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_via_simplify, default_set_tolerance, fill_rule_name, from_geo,
+    boolean, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name, from_geo,
     layout_polygons, simplify as simplify_set, smooth_polygon_set, FillRule, PolygonSet2, Polygons,
     RingOrientation, SmoothOptions, UmbraError, Via,
 };
@@ -141,16 +141,8 @@ pub fn boolean_2d<'py>(
     };
     let a = input_set(py, a, keep_orientation, "a")?;
     let b = input_set(py, b, keep_orientation, "b")?;
-    // Winding numbers kept as written are the result itself, which
-    // smoothing (made for regions of winding number 0 and 1) does not
-    // keep: raw unless asked.
-    let tolerance = smooth.unwrap_or_else(|| {
-        if keep_orientation {
-            0.0
-        } else {
-            default_set_tolerance(&a).max(default_set_tolerance(&b))
-        }
-    });
+    let tolerance =
+        smooth.unwrap_or_else(|| default_boolean_set_tolerance(&a, &b, keep_orientation));
     let shape = run(py, || {
         let raw = match via {
             Via::Basic => {

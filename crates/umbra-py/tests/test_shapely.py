@@ -46,6 +46,16 @@ def test_shapely_bad_geometries():
         umbra.boolean_2d(shapely.Polygon([(0, 0), (math.inf, 0), (1, 1)]), shapely.box(0, 0, 1, 1), "union")
 
 
+def shapely_results(a, b):
+    """Each operation's name and shapely's own result for it."""
+    return (
+        ("union", a.union(b)),
+        ("intersection", a.intersection(b)),
+        ("difference", a.difference(b)),
+        ("xor", a.symmetric_difference(b)),
+    )
+
+
 def test_results_are_valid_for_geos_where_rings_touch():
     # A hole touching its outer ring at a corner, valid in shapely: the
     # result is one outer ring and one hole, not one ring through (0, 0)
@@ -137,12 +147,7 @@ def test_shared_boundaries_give_valid_results_by_default():
         "1.2222222222222223 4.185185185185185, 1 4)))"
     )
     assert a.is_valid and b.is_valid
-    for op, want in (
-        ("union", a.union(b)),
-        ("intersection", a.intersection(b)),
-        ("difference", a.difference(b)),
-        ("xor", a.symmetric_difference(b)),
-    ):
+    for op, want in shapely_results(a, b):
         raw = umbra.boolean_2d(a, b, op, smooth=0)
         assert abs(raw.area - want.area) <= 1e-12 * want.area
         for via in ("basic", "simplify"):
@@ -165,12 +170,7 @@ def test_the_command_line_writes_valid_rings(cli, tmp_path):
     b = shapely.box(1, -1, 11, 3)
     (tmp_path / "a.wkt").write_text(a.wkt)
     (tmp_path / "b.wkt").write_text(b.wkt)
-    for op, want in (
-        ("union", a.union(b)),
-        ("intersection", a.intersection(b)),
-        ("difference", a.difference(b)),
-        ("xor", a.symmetric_difference(b)),
-    ):
+    for op, want in shapely_results(a, b):
         for via in ("basic", "simplify"):
             for ext in ("wkt", "geojson"):
                 out = tmp_path / f"o.{ext}"
@@ -213,12 +213,7 @@ def test_random_valid_operands_give_valid_results():
         a, b = operand(), operand()
         if a.is_empty or b.is_empty:
             continue
-        for op, want in (
-            ("union", a.union(b)),
-            ("intersection", a.intersection(b)),
-            ("difference", a.difference(b)),
-            ("xor", a.symmetric_difference(b)),
-        ):
+        for op, want in shapely_results(a, b):
             for via in ("basic", "simplify"):
                 out = umbra.boolean_2d(a, b, op, via=via)
                 assert out.is_valid, (a.wkt, b.wkt, op, via, shapely.is_valid_reason(out))

@@ -135,8 +135,8 @@ pub use smooth::{
     SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed,
 };
 pub use smoothing::{
-    default_mesh_tolerance, default_set_tolerance, smooth_csg_result, smooth_solid,
-    smooth_solid_near, DEFAULT_RELATIVE_TOLERANCE,
+    default_boolean_set_tolerance, default_mesh_tolerance, default_set_tolerance,
+    smooth_csg_result, smooth_solid, smooth_solid_near, DEFAULT_RELATIVE_TOLERANCE,
 };
 pub use topology::{
     check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,

@@ -59,6 +59,26 @@ pub fn default_set_tolerance(set: &PolygonSet2) -> f64 {
     DEFAULT_RELATIVE_TOLERANCE * extent(set.bounding_box())
 }
 
+/// The tolerance at which a 2D Boolean of `a` and `b` is smoothed unless
+/// the caller names one (`umbra boolean`, Python's `boolean_2d`): the
+/// larger [`default_set_tolerance`] of the two, which removes the
+/// zero-width features the basic Boolean leaves where operands share
+/// boundary (rings GEOS calls invalid); 0 (the raw result) when the ring
+/// orientation is kept, since the winding numbers are then the result and
+/// smoothing, made for regions of winding number 0 and 1, does not keep
+/// them.
+pub fn default_boolean_set_tolerance(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    keep_orientation: bool,
+) -> f64 {
+    if keep_orientation {
+        0.0
+    } else {
+        default_set_tolerance(a).max(default_set_tolerance(b))
+    }
+}
+
 /// Smooths a 3D result in its variant: a triangle mesh (every facet one
 /// loop of three half-edges) by [`smooth_triangles`], which re-triangulates
 /// what it changes, so the result stays triangles; anything else by

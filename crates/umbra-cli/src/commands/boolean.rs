@@ -13,9 +13,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify, Contacts, default_mesh_tolerance, default_set_tolerance, encode_mesh_with,
-    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near,
-    Boolean2Report, Boolean3Report, BooleanOp, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
+    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
+    default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
+    read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near, Boolean2Report,
+    Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
     Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
 };
 
@@ -154,15 +155,7 @@ impl BooleanArgs {
         };
         let out_file = out_path.display().to_string();
         let files = [a_path.as_path(), b_path.as_path()];
-        // With --keep-orientation the winding numbers themselves are the
-        // result (inside-out and multiply covered regions), which
-        // smoothing, made for regions of winding number 0 and 1, does not
-        // keep: raw unless asked.
-        let tolerance = if keep {
-            0.0
-        } else {
-            default_set_tolerance(&a).max(default_set_tolerance(&b))
-        };
+        let tolerance = default_boolean_set_tolerance(&a, &b, keep);
         let start = Instant::now();
         let (encoded, report) = match via {
             Via::Basic => {
