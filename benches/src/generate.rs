@@ -26,7 +26,7 @@ impl Case {
 }
 
 /// The rows of the dissertation's Table 7.4 (section 7.6, repeating Table
-/// 1.1 from [MY04]) in the order printed there: the union of a regular
+/// 1.1 from \[MY04\]) in the order printed there: the union of a regular
 /// n-gon with a copy rotated by `alpha_deg` degrees.
 pub const TABLE_7_4: [Case; 10] = [
     Case {

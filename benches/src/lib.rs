@@ -7,7 +7,7 @@
 //! simplification rows (beside `i_overlay`'s `simplify_shape` and `geo`).
 //!
 //! The headline case is the dissertation's Table 7.4 (section 7.6, after
-//! [MY04]): the union of a regular n-gon with a copy of itself rotated by a
+//! \[MY04\]): the union of a regular n-gon with a copy of itself rotated by a
 //! tiny angle alpha. The exact result is one ring with `4n` vertices: the
 //! `n` vertices of each polygon and `2n` crossings (one near each vertex and
 //! one near the middle of each pair of almost parallel edges). See

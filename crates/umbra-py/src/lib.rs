@@ -5,7 +5,7 @@
 //! conversions and re-exports everything here.
 //!
 //! Every operation copies its inputs out of Python objects, then releases
-//! the GIL ([`run`]) while the facade computes, so two Python threads run
+//! the GIL (`run`) while the facade computes, so two Python threads run
 //! two Booleans on two cores at once. A panic never crosses into Python: it
 //! is caught and raised as `UmbraError("internal error ...")`. Every error
 //! is an `umbra.UmbraError` (a `ValueError`) with the command-line tool's

@@ -406,7 +406,7 @@ pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
     pairs_with(mesh, true)
 }
 
-/// The facet pairs of [`self_intersecting_pairs`] that hold at least one
+/// The facet pairs of `self_intersecting_pairs` that hold at least one
 /// facet `f` with `focus[f]`, found without testing the whole mesh: only
 /// the facets whose boxes meet a focus facet's box (the only ones that can
 /// meet it) and the facets whose boxes meet theirs (which hold every

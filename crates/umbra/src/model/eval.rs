@@ -40,7 +40,7 @@ pub struct CsgOptions {
     /// Gather the Booleans' [`Contacts`] into [`CsgResult::contacts`] at a
     /// proximity of at least this distance in the root's frame (`None`:
     /// not gathered). Each Boolean looks at least
-    /// [`CONTACT_RELATIVE_PROXIMITY`] times its operands' extent around
+    /// `CONTACT_RELATIVE_PROXIMITY` (1e-6) times its operands' extent around
     /// them, so that `Some(0.0)` gives contacts that serve smoothing at the
     /// default tolerance ([`crate::DEFAULT_RELATIVE_TOLERANCE`] times the
     /// result's extent) unless a Boolean's operands are a thousand times
