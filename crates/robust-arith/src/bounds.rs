@@ -22,13 +22,15 @@ pub const MAX_COORDINATE: f64 = f64::MAX / 4.0;
 
 /// The smallest power of two `L >= max_abs` (and at least the smallest
 /// positive normal number), the scale in which the chapter 8 bounds are
-/// stated. Returns infinity for non-finite input.
+/// stated. Returns infinity for non-finite input and above `2^1023`, the
+/// largest power of two an `f64` holds.
 ///
 /// ```
 /// use robust_arith::power_of_two_bound;
 /// assert_eq!(power_of_two_bound(1.0), 1.0);
 /// assert_eq!(power_of_two_bound(3.0), 4.0);
 /// assert_eq!(power_of_two_bound(0.3), 0.5);
+/// assert_eq!(power_of_two_bound(f64::MAX), f64::INFINITY);
 /// ```
 pub fn power_of_two_bound(max_abs: f64) -> f64 {
     let m = max_abs.abs();
@@ -44,6 +46,11 @@ pub fn power_of_two_bound(max_abs: f64) -> f64 {
     l = 2f64.powi(exp.clamp(-1022, 1023));
     while l < m {
         l *= 2.0;
+    }
+    if l.is_infinite() {
+        // m > 2^1023: no finite power of two bounds it (halving an
+        // infinity below would never end).
+        return l;
     }
     while l / 2.0 >= m && l / 2.0 >= f64::MIN_POSITIVE {
         l /= 2.0;
@@ -84,6 +91,13 @@ mod tests {
             (0.50001, 1.0),
             (1e300, 2f64.powi(997)),
             (0.0, f64::MIN_POSITIVE),
+            (2f64.powi(1023), 2f64.powi(1023)),
+            (MAX_COORDINATE * 2.0, 2f64.powi(1023)),
+            // Above 2^1023 no finite power of two bounds m (this looped
+            // forever on an infinity before).
+            (1.5 * 2f64.powi(1023), f64::INFINITY),
+            (f64::MAX, f64::INFINITY),
+            (f64::NAN, f64::INFINITY),
         ] {
             assert_eq!(power_of_two_bound(m), l, "m = {m}");
         }

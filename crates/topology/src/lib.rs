@@ -54,6 +54,7 @@ mod op;
 mod polygon_set;
 mod triangle_mesh;
 mod triangulate;
+mod unit_scale;
 
 pub use error::TopologyError;
 pub use inspect::*;

@@ -171,6 +171,31 @@ impl PolygonMesh {
     pub fn validate_coordinates(&self) -> Result<(), TopologyError> {
         validate_points(&self.vertices)
     }
+
+    /// The same mesh with every facet turned over: each half-edge
+    /// reversed, each loop walked backwards (winding numbers negated, so
+    /// inside and outside swap). Both closure constraints hold for the
+    /// result exactly when they hold for `self`.
+    pub fn reversed(&self) -> PolygonMesh {
+        PolygonMesh {
+            vertices: self.vertices.clone(),
+            facets: self
+                .facets
+                .iter()
+                .map(|f| Facet {
+                    half_edges: f
+                        .half_edges
+                        .iter()
+                        .rev()
+                        .map(|h| HalfEdge {
+                            start: h.end,
+                            end: h.start,
+                        })
+                        .collect(),
+                })
+                .collect(),
+        }
+    }
 }
 
 /// Shape boundary closure over a stream of half-edges: for every vertex pair

@@ -202,14 +202,32 @@ impl PolygonSet2 {
 
     /// The multiplicity-weighted signed area, the integral of the winding
     /// number over the plane (shoelace formula in f64; an estimate, not an
-    /// exact value).
+    /// exact value). Where the formula's products overflow (coordinates
+    /// beyond about 1.3e154), the sum is taken on coordinates scaled by a
+    /// power of two and scaled back: the area, or an infinity of its sign
+    /// when it exceeds `f64::MAX`.
     pub fn signed_area(&self) -> f64 {
+        let area = self.twice_area([1.0; 2]) / 2.0;
+        if area.is_finite() {
+            return area;
+        }
+        match crate::unit_scale::axis_scales(self.vertices.iter().copied()) {
+            Some((down, up)) => crate::unit_scale::scaled_back(self.twice_area(down) / 2.0, &up),
+            None => area,
+        }
+    }
+
+    /// Twice [`PolygonSet2::signed_area`], coordinate `k` multiplied by
+    /// `scale[k]` (1, or powers of two).
+    fn twice_area(&self, scale: [f64; 2]) -> f64 {
         let mut twice = 0.0;
         for e in &self.edges {
             let (a, b) = self.edge_points(e);
+            let s = |p: Point2| [p[0] * scale[0], p[1] * scale[1]];
+            let (a, b) = (s(a), s(b));
             twice += f64::from(e.mult) * (a[0] * b[1] - b[0] * a[1]);
         }
-        twice / 2.0
+        twice
     }
 
     /// The axis-aligned bounding box `[min, max]` of the vertices of edges

@@ -64,6 +64,23 @@ impl TriangleMesh {
     /// The signed volume (divergence theorem, f64; positive for a closed
     /// outward-facing shape). Triangles with a dangling index are skipped.
     pub fn signed_volume(&self) -> f64 {
+        let volume = self.six_times_volume([1.0; 3]) / 6.0;
+        if volume.is_finite() {
+            return volume;
+        }
+        // The products overflowed: the same sum on exactly scaled
+        // coordinates, scaled back (`unit_scale.rs`).
+        match crate::unit_scale::axis_scales(self.vertices.iter().copied()) {
+            Some((down, up)) => {
+                crate::unit_scale::scaled_back(self.six_times_volume(down) / 6.0, &up)
+            }
+            None => volume,
+        }
+    }
+
+    /// Six times the signed volume, coordinate `k` multiplied by
+    /// `scale[k]` (1, or powers of two).
+    fn six_times_volume(&self, scale: [f64; 3]) -> f64 {
         let mut six = 0.0;
         for t in &self.triangles {
             let (Some(&a), Some(&b), Some(&c)) = (
@@ -73,10 +90,11 @@ impl TriangleMesh {
             ) else {
                 continue;
             };
+            let [a, b, c] = [a, b, c].map(|p| [p[0] * scale[0], p[1] * scale[1], p[2] * scale[2]]);
             six += a[0] * (b[1] * c[2] - b[2] * c[1]) - a[1] * (b[0] * c[2] - b[2] * c[0])
                 + a[2] * (b[0] * c[1] - b[1] * c[0]);
         }
-        six / 6.0
+        six
     }
 }
 

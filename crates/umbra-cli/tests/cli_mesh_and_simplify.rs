@@ -160,6 +160,66 @@ fn cube_booleans_in_both_variants_and_formats() {
     }
 }
 
+#[test]
+fn inward_facing_operands_are_turned_outward_unless_kept() {
+    // cube_shifted.off written with every face reversed, as exporters with
+    // the opposite convention write solids: signed volume -8.
+    let dir = temp_dir("inward");
+    let (v, f) = read_mesh(&examples().join("cube_shifted.off"));
+    let reversed: Vec<Vec<usize>> = f
+        .iter()
+        .map(|q| q.iter().rev().copied().collect())
+        .collect();
+    let inward = write(&dir, "inward.obj", &obj_text(&v, &reversed));
+    assert_eq!(volume(&inward), -8.0);
+    let a = examples().join("cube.obj");
+    for (op, want) in [("union", 15.0), ("intersection", 1.0), ("difference", 7.0)] {
+        let out = dir.join(format!("{op}.obj"));
+        let report = dir.join(format!("{op}.json"));
+        let o = boolean(op, &a, &inward, &out, &report, false);
+        assert!(o.status.success(), "{op}: {}", stderr(&o));
+        let err = stderr(&o);
+        assert!(
+            err.contains("warning") && err.contains("inward.obj") && err.contains("face inward"),
+            "{err}"
+        );
+        // The Boolean of the solid the file describes.
+        assert_eq!(volume(&out), want, "{op}");
+        assert!(closed(&out));
+        // Kept as written: the inside-out operand of section 4.7 (all of
+        // space but the cube), no warning, and a different solid.
+        let kept = dir.join(format!("{op}-kept.obj"));
+        let o = umbra([
+            "boolean",
+            op,
+            a.to_str().unwrap(),
+            inward.to_str().unwrap(),
+            "-o",
+            kept.to_str().unwrap(),
+            "--keep-orientation",
+        ]);
+        assert!(o.status.success(), "{op}: {}", stderr(&o));
+        assert!(!stderr(&o).contains("warning"), "{}", stderr(&o));
+        assert!(closed(&kept));
+        // As written, the cube's inside has winding number -1, which no
+        // operation counts as inside: the union keeps all of A and the
+        // cube's facets outside A as they face (8 - 7), the intersection
+        // the cube's facets inside A (-1), the difference all of A and
+        // the cube's facets inside A turned over (8 + 1).
+        let as_written = match op {
+            "union" => 1.0,
+            "intersection" => -1.0,
+            _ => 9.0,
+        };
+        assert_eq!(volume(&kept), as_written, "{op} kept");
+    }
+    // An outward operand is never touched: no warning.
+    let out = dir.join("plain.obj");
+    let b = examples().join("cube_shifted.off");
+    let o = boolean("union", &a, &b, &out, &dir.join("plain.json"), false);
+    assert!(o.status.success() && !stderr(&o).contains("warning"));
+}
+
 /// OBJ text of vertices and faces (1-based references).
 fn obj_text(v: &[[f64; 3]], f: &[Vec<usize>]) -> String {
     let mut text = String::new();

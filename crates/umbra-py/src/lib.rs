@@ -6,7 +6,10 @@
 //!
 //! Every operation copies its inputs out of Python objects, then releases
 //! the GIL (`run`) while the facade computes, so two Python threads run
-//! two Booleans on two cores at once. A panic never crosses into Python: it
+//! two Booleans on two cores at once. The work runs on a rayon pool of
+//! this process (rebuilt in a child after `fork`, whose inherited pool has
+//! no threads): one shared pool, or one single-worker pool per Python
+//! thread under `RAYON_NUM_THREADS=1`. A panic never crosses into Python: it
 //! is caught and raised as `UmbraError("internal error ...")`. Every error
 //! is an `umbra.UmbraError` (a `ValueError`) with the command-line tool's
 //! one-line message.
@@ -24,7 +27,9 @@ mod planar;
 use pyo3::create_exception;
 use pyo3::exceptions::PyValueError;
 use pyo3::prelude::*;
+use std::cell::RefCell;
 use std::panic::{catch_unwind, AssertUnwindSafe};
+use std::sync::{Arc, Mutex, PoisonError};
 
 create_exception!(
     _umbra,
@@ -38,20 +43,77 @@ pub(crate) fn error(message: impl Into<String>) -> PyErr {
     UmbraError::new_err(message.into())
 }
 
-thread_local! {
-    /// This Python thread's own rayon pool, as many threads as the global
-    /// one (`RAYON_NUM_THREADS` or the cores), made at its first call: the
-    /// calls of different Python threads never queue for one pool, so with
-    /// `RAYON_NUM_THREADS=1` two threads run two Booleans on two cores (on
-    /// the shared global pool of one worker they ran one after the other).
-    static POOL: Option<rayon::ThreadPool> = rayon::ThreadPoolBuilder::new()
-        .num_threads(rayon::current_num_threads())
-        .build()
-        .ok();
+/// A rayon pool and the process that built it. After `fork` the child
+/// inherits a pool's memory but not its worker threads, so a job installed
+/// on it would wait forever: a pool built by another process is never
+/// used again (it is leaked, as dropping it would signal threads that do
+/// not exist) and a new one is built.
+struct ProcessPool {
+    pid: u32,
+    pool: Arc<rayon::ThreadPool>,
 }
 
-/// Runs `work` with the GIL released, on the calling thread's pool
-/// ([`POOL`]), and any panic caught: the result, or an `UmbraError` (the
+impl ProcessPool {
+    /// This process's pool in `slot`, built (or rebuilt after a fork) with
+    /// `threads` workers; `None` when the system refuses threads.
+    fn current(slot: &mut Option<ProcessPool>, threads: usize) -> Option<Arc<rayon::ThreadPool>> {
+        let pid = std::process::id();
+        if slot.as_ref().is_none_or(|p| p.pid != pid) {
+            if let Some(inherited) = slot.take() {
+                std::mem::forget(inherited);
+            }
+            *slot = rayon::ThreadPoolBuilder::new()
+                .num_threads(threads)
+                .build()
+                .ok()
+                .map(|pool| ProcessPool {
+                    pid,
+                    pool: Arc::new(pool),
+                });
+        }
+        slot.as_ref().map(|p| Arc::clone(&p.pool))
+    }
+}
+
+/// The worker threads per operation: `RAYON_NUM_THREADS` when it is a
+/// positive number, else the available cores (rayon's own rule, read here
+/// so that rayon's global pool, which nothing uses, is never started).
+fn configured_threads() -> usize {
+    std::env::var("RAYON_NUM_THREADS")
+        .ok()
+        .and_then(|v| v.trim().parse::<usize>().ok())
+        .filter(|&n| n > 0)
+        .unwrap_or_else(|| std::thread::available_parallelism().map_or(1, |n| n.get()))
+}
+
+/// The pool shared by every Python thread when operations run on several
+/// workers: concurrent calls share its workers, so the process never holds
+/// more than one pool's threads however many Python threads call.
+static SHARED: Mutex<Option<ProcessPool>> = Mutex::new(None);
+
+thread_local! {
+    /// This Python thread's own one-worker pool, when operations run on
+    /// one worker (`RAYON_NUM_THREADS=1`): calls of different Python
+    /// threads then still run side by side, one core each, instead of
+    /// queueing for one shared worker.
+    static OWN: RefCell<Option<ProcessPool>> = const { RefCell::new(None) };
+}
+
+/// The pool the calling thread's operation runs on.
+fn pool() -> Option<Arc<rayon::ThreadPool>> {
+    let threads = configured_threads();
+    if threads == 1 {
+        OWN.with(|own| ProcessPool::current(&mut own.borrow_mut(), 1))
+    } else {
+        // The lock is held only to look up or build the pool, never while
+        // an operation runs.
+        let mut shared = SHARED.lock().unwrap_or_else(PoisonError::into_inner);
+        ProcessPool::current(&mut shared, threads)
+    }
+}
+
+/// Runs `work` with the GIL released, on this process's pool (`pool`),
+/// and any panic caught: the result, or an `UmbraError` (the
 /// work's own error as its one-line message, a panic as an internal error).
 pub(crate) fn run<T, E, F>(py: Python<'_>, work: F) -> PyResult<T>
 where
@@ -60,11 +122,9 @@ where
     E: std::fmt::Display + Send,
 {
     let caught = move || catch_unwind(AssertUnwindSafe(work));
-    let on_pool = move || {
-        POOL.with(|pool| match pool {
-            Some(pool) => pool.install(caught),
-            None => caught(),
-        })
+    let on_pool = move || match pool() {
+        Some(pool) => pool.install(caught),
+        None => caught(),
     };
     let outcome = py.detach(move || match on_pool() {
         Ok(Ok(value)) => Ok(value),

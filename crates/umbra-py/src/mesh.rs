@@ -99,15 +99,32 @@ fn facets_of(faces: &Bound<'_, PyAny>, n: usize) -> PyResult<Vec<Facet>> {
     Ok(facets)
 }
 
-/// An integer array of one or two dimensions as `u32` values below
-/// `limit` (`what` names it in errors).
-fn u32_array(obj: &Bound<'_, PyAny>, limit: usize, what: &str) -> PyResult<Vec<u32>> {
+/// An integer array as `u32` values below `limit`: 1-D, or of shape
+/// `(n, columns)` (`what` names it in errors).
+fn u32_array(
+    obj: &Bound<'_, PyAny>,
+    limit: usize,
+    columns: Option<usize>,
+    what: &str,
+) -> PyResult<Vec<u32>> {
     let arr = obj
         .py()
         .import("numpy")?
         .call_method1("asarray", (obj,))
         .and_then(|a| Ok(a.cast_into::<PyUntypedArray>()?))
         .map_err(|e| error(format!("{what}: expected an integer array: {e}")))?;
+    // The shape is part of the form: a flat (h * 2) or (h, 3) array is not
+    // an (h, 2) one, though it holds an even number of indices.
+    let shape = arr.shape();
+    let (expected, fits) = match columns {
+        None => ("a 1-D".to_string(), shape.len() == 1),
+        Some(c) => (format!("an (n, {c})"), shape.len() == 2 && shape[1] == c),
+    };
+    if !fits {
+        return Err(error(format!(
+            "{what}: expected {expected} integer array, got shape {shape:?}"
+        )));
+    }
     indices_of_array(&arr, limit, what)?
         .ok_or_else(|| error(format!("{what}: expected an integer array")))
 }
@@ -201,6 +218,14 @@ impl Mesh {
         })
     }
 
+    /// The mesh with every facet turned over: each loop walked backwards,
+    /// so inside and outside swap (the volume changes sign).
+    fn reversed(&self) -> Mesh {
+        Mesh {
+            mesh: self.mesh.reversed(),
+        }
+    }
+
     /// The signed volume (positive for outward-facing facets). Raises
     /// ``UmbraError`` for an invalid mesh (an open mesh encloses no
     /// volume).
@@ -264,12 +289,9 @@ impl Mesh {
         facet_offsets: &Bound<'_, PyAny>,
     ) -> PyResult<Self> {
         let vertices = points::<3>(vertices, "vertices")?;
-        let he = u32_array(half_edges, vertices.len(), "half_edges")?;
-        if he.len() % 2 != 0 {
-            return Err(error("half_edges: expected an (h, 2) integer array"));
-        }
+        let he = u32_array(half_edges, vertices.len(), Some(2), "half_edges")?;
         let count = he.len() / 2;
-        let offsets = u32_array(facet_offsets, count + 1, "facet_offsets")?;
+        let offsets = u32_array(facet_offsets, count + 1, None, "facet_offsets")?;
         if offsets.first() != Some(&0)
             || offsets.last() != Some(&(count as u32))
             || offsets.windows(2).any(|w| w[0] > w[1])

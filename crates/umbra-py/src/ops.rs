@@ -6,10 +6,12 @@ use crate::mesh::Mesh;
 use crate::{error, run};
 use pyo3::prelude::*;
 use pyo3::types::PyDict;
+use std::borrow::Cow;
 use umbra::{
     as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, default_mesh_tolerance,
-    evaluate_csg, parse_csg, smooth_csg_result, smooth_solid, smooth_solid_near, union_all_solids,
-    BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError, UmbraError,
+    evaluate_csg, parse_csg, smooth_csg_result, smooth_solid, smooth_solid_near, turned_outward,
+    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError,
+    UmbraError,
 };
 
 /// The operation named `op`: every name of the facade (`union`,
@@ -24,6 +26,26 @@ fn variant(triangulate: bool) -> MeshVariant {
         MeshVariant::TriangleMesh
     } else {
         MeshVariant::PolygonMesh
+    }
+}
+
+/// A result and the operands turned outward on the way in: each one's
+/// name and its signed volume as given.
+type WithTurned<'py> = (Bound<'py, Mesh>, Vec<(String, f64)>);
+
+/// `mesh` turned outward when its facets face inward
+/// ([`turned_outward`]), noting its name and signed volume in `turned`.
+fn outward<'m>(
+    mesh: &'m PolygonMesh,
+    name: &str,
+    turned: &mut Vec<(String, f64)>,
+) -> Cow<'m, PolygonMesh> {
+    match turned_outward(mesh) {
+        Some(t) => {
+            turned.push((name.to_string(), mesh.signed_volume()));
+            Cow::Owned(t)
+        }
+        None => Cow::Borrowed(mesh),
     }
 }
 
@@ -66,8 +88,11 @@ fn smoothed(
 /// opposing facets go) where the operands cut or come within ``T`` of
 /// each other, as the command line does; ``None`` (the default) or 0 returns the basic
 /// Boolean's raw output. Both operands must be valid (``Mesh.is_valid()``).
+/// An operand whose facets face inward (negative volume) is turned
+/// outward unless ``keep_orientation``. Returns the result and the
+/// signed volumes of the operands that were turned, by name.
 #[pyfunction]
-#[pyo3(signature = (a, b, op, *, triangulate = false, smooth = None))]
+#[pyo3(signature = (a, b, op, *, triangulate = false, smooth = None, keep_orientation = false))]
 pub fn boolean<'py>(
     py: Python<'py>,
     a: &Bound<'py, Mesh>,
@@ -75,10 +100,18 @@ pub fn boolean<'py>(
     op: &str,
     triangulate: bool,
     smooth: Option<f64>,
-) -> PyResult<Bound<'py, Mesh>> {
+    keep_orientation: bool,
+) -> PyResult<WithTurned<'py>> {
     let op = parse_op(op)?;
     let (a, b) = (&a.get().mesh, &b.get().mesh);
     let variant = variant(triangulate);
+    let mut turned = Vec::new();
+    let (a, b) = if keep_orientation {
+        (Cow::Borrowed(a), Cow::Borrowed(b))
+    } else {
+        (outward(a, "a", &mut turned), outward(b, "b", &mut turned))
+    };
+    let (a, b) = (a.as_ref(), b.as_ref());
     let out = run(py, || match smooth {
         Some(t) if t != 0.0 => {
             // As the command line does: the operands' contacts at the
@@ -104,7 +137,7 @@ pub fn boolean<'py>(
         }
         _ => solid(a, b, op, variant),
     })?;
-    Mesh::wrap(py, out)
+    Ok((Mesh::wrap(py, out)?, turned))
 }
 
 /// Smooths a mesh (Appendix A) at ``tolerance``, by default 1e-9 times
@@ -134,20 +167,30 @@ pub fn smooth<'py>(
 /// (`umbra::union_all_solids`): a balanced tree of binary Booleans whose
 /// independent branches run in parallel, the same result whatever the
 /// thread count; one mesh is returned as it is, none gives the empty mesh.
+/// A mesh whose facets face inward is turned outward unless
+/// ``keep_orientation``. Returns the result and the signed volumes of the
+/// meshes that were turned, by name.
 #[pyfunction]
-#[pyo3(signature = (meshes, *, triangulate = false))]
+#[pyo3(signature = (meshes, *, triangulate = false, keep_orientation = false))]
 pub fn union_all<'py>(
     py: Python<'py>,
     meshes: &Bound<'py, PyAny>,
     triangulate: bool,
-) -> PyResult<Bound<'py, Mesh>> {
+    keep_orientation: bool,
+) -> PyResult<WithTurned<'py>> {
     let mut items: Vec<PolygonMesh> = Vec::new();
+    let mut turned = Vec::new();
     for (i, m) in meshes.try_iter()?.enumerate() {
         let m = m?;
         let m = m
             .cast_into::<Mesh>()
             .map_err(|_| error(format!("meshes[{i}]: expected an umbra.Mesh")))?;
-        items.push(m.get().mesh.clone());
+        let mesh = &m.get().mesh;
+        items.push(if keep_orientation {
+            mesh.clone()
+        } else {
+            outward(mesh, &format!("meshes[{i}]"), &mut turned).into_owned()
+        });
     }
     let variant = variant(triangulate);
     let out = run(py, || {
@@ -163,7 +206,7 @@ pub fn union_all<'py>(
                 other => other.to_string(),
             })
     })?;
-    Mesh::wrap(py, out)
+    Ok((Mesh::wrap(py, out)?, turned))
 }
 
 /// The mesh of a CSG tree given as a dict in the JSON form of ``umbra

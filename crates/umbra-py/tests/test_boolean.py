@@ -3,6 +3,7 @@ every operand left untouched and every bad argument refused."""
 
 import math
 import pickle
+import warnings
 
 import numpy as np
 import pytest
@@ -120,3 +121,25 @@ def test_csg_file_leaves_are_read_from_the_working_directory(tmp_path, monkeypat
     }
     m = umbra.csg(tree)
     assert m.is_valid() and close(m.volume(), 8.0 - 0.125)
+
+
+@pytest.mark.parametrize("triangulate", [False, True])
+def test_inward_facing_operands_are_turned_outward(triangulate):
+    a, b = cube(), cube((0.5, 0.5, 0.5))
+    inward = b.reversed()
+    assert inward.volume() == -1.0 and inward.reversed() == b
+    before = pickle.dumps(inward)
+    for op, want in [("union", 1.875), ("intersection", 0.125), ("difference", 0.875)]:
+        with pytest.warns(UserWarning, match=r"^b: the facets face inward"):
+            m = umbra.boolean(a, inward, op, triangulate=triangulate)
+        assert close(m.volume(), want), op
+        # As written: the inside-out solid of everything but the cube.
+        with warnings.catch_warnings():
+            warnings.simplefilter("error")
+            kept = umbra.boolean(a, inward, op, triangulate=triangulate, keep_orientation=True)
+        assert kept.is_valid()
+        assert not close(kept.volume(), want), op
+    assert pickle.dumps(inward) == before  # the caller's mesh is untouched
+    with pytest.warns(UserWarning, match=r"meshes\[1\]: the facets face inward"):
+        u = umbra.union_all([a, inward], triangulate=triangulate)
+    assert close(u.volume(), 1.875)

@@ -1,6 +1,8 @@
 """Round trips through every file format of the command-line tool, and the
 tool's messages for files that cannot be read or written."""
 
+import os
+
 import numpy as np
 import pytest
 
@@ -196,3 +198,30 @@ def test_polygons_round_trip_shapely(tmp_path, ext):
     back = umbra.read(path)
     assert isinstance(back, shapely.MultiPolygon)
     assert back.normalize().equals_exact(g.normalize(), 0.0)
+
+
+def test_holes_in_no_exterior_are_written_with_a_warning(tmp_path, monkeypatch):
+    # A "hole" outside its polygon's exterior is an inside-out region of
+    # the set: ring formats have no place for it, so it is written as an
+    # exterior of its own (which readers fill) and the caller is told.
+    monkeypatch.setattr(umbra, "_shapely", lambda: None)
+    square = np.array([[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]])
+    stray = np.array([[5.0, 5.0], [5.0, 6.0], [6.0, 6.0], [6.0, 5.0]])
+    path = tmp_path / "stray.wkt"
+    with pytest.warns(UserWarning, match=r"1 hole\(s\) lie in no exterior"):
+        umbra.write([[square, stray]], path)
+    back = umbra.read(path)
+    assert sorted(len(p) for p in back) == [1, 1]
+    # Kept as written, every ring is its own polygon as it runs: no warning.
+    import warnings
+
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        umbra.write([[square, stray]], tmp_path / "kept.wkt", keep_orientation=True)
+        umbra.write([[square]], tmp_path / "plain.wkt")
+
+
+def test_paths_may_be_bytes(tmp_path):
+    path = os.fsencode(tmp_path / "cube.obj")
+    umbra.write(cube(), path)
+    assert umbra.read(path) == cube()

@@ -78,6 +78,14 @@ def test_exact_array_form_and_pickle():
         umbra.Mesh.from_arrays(v, he, [0, 5, 4, 24])
     with pytest.raises(umbra.UmbraError, match="out of range"):
         umbra.Mesh.from_arrays(v, he + 8, off)
+    # The array shapes are part of the form: a flat or (h, 3) array of the
+    # same indices is not an (h, 2) one.
+    with pytest.raises(umbra.UmbraError, match=r"half_edges: expected an \(n, 2\)"):
+        umbra.Mesh.from_arrays(v, he.reshape(-1), off)
+    with pytest.raises(umbra.UmbraError, match=r"half_edges: expected an \(n, 2\)"):
+        umbra.Mesh.from_arrays(v, he.reshape(-1, 3), off)
+    with pytest.raises(umbra.UmbraError, match=r"facet_offsets: expected a 1-D"):
+        umbra.Mesh.from_arrays(v, he, off.reshape(-1, 1))
 
 
 def test_check_reports_like_the_cli():

@@ -115,3 +115,35 @@ def test_two_threads_take_about_the_time_of_one():
     if ratio >= 0.8 and os.getloadavg()[0] >= (os.cpu_count() or 1) - 0.5:
         pytest.skip(f"the machine is busy (load {os.getloadavg()[0]:.1f}): ratio {ratio:.2f}")
     assert ratio < 0.8, ratio
+
+
+# A Boolean in the parent, then Booleans in children forked from it (as
+# multiprocessing does on Linux): a child inherits the parent's pool
+# without its worker threads, and an operation on it would wait forever.
+FORKED = (
+    SPHERES
+    + """
+import multiprocessing, sys
+def volume(op):
+    return umbra.boolean(a, b, op).volume()
+want = [volume(op) for op in ("union", "difference")]
+with multiprocessing.get_context("fork").Pool(2) as pool:
+    got = pool.map(volume, ["union", "difference"])
+assert got == want, (got, want)
+print("ok")
+"""
+)
+
+
+@pytest.mark.skipif(not hasattr(os, "fork"), reason="needs fork")
+@pytest.mark.parametrize("threads", ["1", "2"])
+def test_booleans_run_in_forked_children(threads):
+    env = dict(os.environ, RAYON_NUM_THREADS=threads)
+    out = subprocess.run(
+        [sys.executable, "-c", FORKED % {"segments": 32}],
+        env=env,
+        capture_output=True,
+        text=True,
+        timeout=120,
+    )
+    assert out.returncode == 0 and out.stdout.strip() == "ok", out.stderr

@@ -13,6 +13,36 @@ use boolean_3d::{
 use std::time::Instant;
 use topology::{BooleanOp, PolygonMesh, TriangleMesh};
 
+/// The operand turned outward when its facets face inward: a mesh of
+/// negative signed volume (written with the opposite orientation
+/// convention, or turned over by mistake) is [`PolygonMesh::reversed`];
+/// `None` when its volume is 0 or positive (facing outward, or a solid
+/// whose inner shells bound voids and face inward on purpose), and for a
+/// mesh that violates the closure constraints (whose "volume" means
+/// nothing; the Boolean refuses it with the violation named).
+///
+/// The basic Boolean tolerates an inward-facing operand as an inside-out
+/// one (section 4.7): the result is topologically valid, but it is not
+/// the Boolean of the solid the file describes. The command-line tool and
+/// the Python package therefore turn such operands outward unless told to
+/// keep the orientation as written, as they read 2D rings by role.
+///
+/// ```
+/// use umbra::{turned_outward, Facet, PolygonMesh};
+/// let tetra = PolygonMesh::new(
+///     vec![[0., 0., 0.], [1., 0., 0.], [0., 1., 0.], [0., 0., 1.]],
+///     [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2]].iter().map(|t| Facet::from_loop(t)).collect(),
+/// );
+/// assert!(turned_outward(&tetra).is_none());
+/// let inward = tetra.reversed();
+/// assert_eq!(turned_outward(&inward), Some(tetra));
+/// ```
+pub fn turned_outward(mesh: &PolygonMesh) -> Option<PolygonMesh> {
+    // The volume first: the closure check is the dearer test, and only an
+    // operand about to be turned needs it.
+    (mesh.signed_volume() < 0.0 && mesh.check_topology().is_ok()).then(|| mesh.reversed())
+}
+
 /// The algorithm of a 2D Boolean.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Via {

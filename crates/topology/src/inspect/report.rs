@@ -130,9 +130,35 @@ pub fn mesh_signed_volume(mesh: &PolygonMesh) -> f64 {
     let Some(&o) = mesh.vertices.first() else {
         return 0.0;
     };
+    let volume = six_times_volume(mesh, o, [1.0; 3]) / 6.0;
+    if volume.is_finite() {
+        return volume;
+    }
+    // The products overflowed (coordinates beyond about 5e102): the same
+    // sum on exactly scaled coordinates, scaled back (`unit_scale.rs`).
+    let rel = mesh
+        .vertices
+        .iter()
+        .map(|p| [p[0] - o[0], p[1] - o[1], p[2] - o[2]]);
+    match crate::unit_scale::axis_scales(rel) {
+        Some((down, up)) => {
+            crate::unit_scale::scaled_back(six_times_volume(mesh, o, down) / 6.0, &up)
+        }
+        None => volume,
+    }
+}
+
+/// Six times the signed volume by the divergence sum over the facets, on
+/// coordinates relative to `o`, axis `k` multiplied by `scale[k]` (1, or
+/// powers of two).
+fn six_times_volume(mesh: &PolygonMesh, o: Point3, scale: [f64; 3]) -> f64 {
     let rel = |v: u32| {
         let p = mesh.vertices.get(v as usize).copied().unwrap_or(o);
-        [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
+        [
+            (p[0] - o[0]) * scale[0],
+            (p[1] - o[1]) * scale[1],
+            (p[2] - o[2]) * scale[2],
+        ]
     };
     let mut six = 0.0;
     for f in &mesh.facets {
@@ -146,7 +172,7 @@ pub fn mesh_signed_volume(mesh: &PolygonMesh) -> f64 {
                 + c[2] * (a[0] * b[1] - a[1] * b[0]);
         }
     }
-    six / 6.0
+    six
 }
 
 impl PolygonMesh {

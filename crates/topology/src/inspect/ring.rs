@@ -8,24 +8,52 @@ use std::cmp::Ordering;
 
 /// The signed area of a closed ring (last point joins the first; positive
 /// when counter-clockwise), by the shoelace sum relative to the first point
-/// (f64).
+/// (f64). Finite for every ring of valid coordinates whose area is at most
+/// `f64::MAX` (beyond, an infinity of the area's sign), also where the
+/// products of the plain sum overflow.
 ///
 /// ```
 /// use topology::ring_signed_area;
 /// assert_eq!(ring_signed_area(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]), 2.0);
+/// let s = 1e155;
+/// assert_eq!(ring_signed_area(&[[0.0, 0.0], [s, 0.0], [s, s], [0.0, s]]), f64::INFINITY);
+/// assert_eq!(ring_signed_area(&[[0.0, 0.0], [s, 0.0], [s, 1.0], [0.0, 1.0]]), s);
 /// ```
 pub fn ring_signed_area(ring: &[Point2]) -> f64 {
     let Some(&o) = ring.first() else {
         return 0.0;
     };
+    let area = ring_twice_area(ring, o, [1.0; 2]) / 2.0;
+    if area.is_finite() {
+        return area;
+    }
+    let rel = ring.iter().map(|p| [p[0] - o[0], p[1] - o[1]]);
+    match crate::unit_scale::axis_scales(rel) {
+        Some((down, up)) => {
+            crate::unit_scale::scaled_back(ring_twice_area(ring, o, down) / 2.0, &up)
+        }
+        None => area,
+    }
+}
+
+/// Twice the signed area of `ring` by the shoelace sum over its points
+/// relative to `o`, the differences of axis `k` multiplied by `scale[k]`
+/// (1, or powers of two that keep the products finite: `unit_scale.rs`).
+fn ring_twice_area(ring: &[Point2], o: Point2, scale: [f64; 2]) -> f64 {
     let n = ring.len();
     let mut twice = 0.0;
     for i in 1..n.saturating_sub(1) {
-        let a = [ring[i][0] - o[0], ring[i][1] - o[1]];
-        let b = [ring[i + 1][0] - o[0], ring[i + 1][1] - o[1]];
+        let a = [
+            (ring[i][0] - o[0]) * scale[0],
+            (ring[i][1] - o[1]) * scale[1],
+        ];
+        let b = [
+            (ring[i + 1][0] - o[0]) * scale[0],
+            (ring[i + 1][1] - o[1]) * scale[1],
+        ];
         twice += a[0] * b[1] - a[1] * b[0];
     }
-    twice / 2.0
+    twice
 }
 
 /// Where a point lies with respect to a closed ring.

@@ -15,7 +15,8 @@ use std::time::Instant;
 use umbra::{
     boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
     default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near, Boolean2Report,
+    read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near, turned_outward,
+    Boolean2Report,
     Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
     Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
 };
@@ -33,9 +34,12 @@ pub struct BooleanArgs {
     b: PathBuf,
     #[command(flatten)]
     out: OutputArgs,
-    /// 2D: read every ring as a directed loop exactly as written and
-    /// write every loop as its own polygon (keeps inside-out and
-    /// multiply enclosed shapes); by default rings are read by role.
+    /// Use the operands' orientation as written. 2D: read every ring as
+    /// a directed loop exactly as written and write every loop as its own
+    /// polygon (keeps inside-out and multiply enclosed shapes); by default
+    /// rings are read by role. 3D: an operand whose facets face inward
+    /// (negative signed volume) is used as an inside-out solid (section
+    /// 4.7); by default it is turned outward, with a warning.
     #[arg(long)]
     keep_orientation: bool,
     /// 2D: the algorithm. `basic` is the basic Boolean of chapter 4
@@ -118,9 +122,6 @@ impl BooleanArgs {
         if meshes == 3 {
             if self.via == ViaArg::Simplify {
                 return Err(usage("--via simplify is for 2D files only"));
-            }
-            if self.keep_orientation {
-                return Err(usage("--keep-orientation is for 2D files only"));
             }
             if op == BooleanOp::Xor {
                 return Err(usage(
@@ -224,8 +225,20 @@ impl BooleanArgs {
 
     fn run_3d(&self, op: BooleanOp, out_kind: FileKind) -> anyhow::Result<ExitCode> {
         let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
-        let a = read_mesh(a_path, MeshReadOptions::default(), true)?;
-        let b = read_mesh(b_path, MeshReadOptions::default(), true)?;
+        let mut a = read_mesh(a_path, MeshReadOptions::default(), true)?;
+        let mut b = read_mesh(b_path, MeshReadOptions::default(), true)?;
+        if !self.keep_orientation {
+            for (mesh, path) in [(&mut a, a_path), (&mut b, b_path)] {
+                if let Some(outward) = turned_outward(mesh) {
+                    eprintln!(
+                        "warning: {}: the facets face inward (signed volume {}): turned outward; rerun with --keep-orientation to use it as an inside-out solid",
+                        path.display(),
+                        mesh.signed_volume()
+                    );
+                    *mesh = outward;
+                }
+            }
+        }
         let variant = if self.triangulate || out_kind.holds_triangles_only() {
             MeshVariant::TriangleMesh
         } else {

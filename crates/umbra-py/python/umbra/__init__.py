@@ -27,6 +27,7 @@ threads run operations in parallel.
 from __future__ import annotations
 
 import os
+import warnings
 from typing import Any, Iterable, List, Optional, Union
 
 import numpy as np
@@ -48,7 +49,7 @@ __all__ = [
     "__version__",
 ]
 
-PathLike = Union[str, "os.PathLike[str]"]
+PathLike = Union[str, bytes, "os.PathLike[str]", "os.PathLike[bytes]"]
 
 
 def _shapely() -> Any:
@@ -119,8 +120,8 @@ def _polygons_in(geom: Any, what: str) -> Any:
 def read(path: PathLike, *, check: bool = True, keep_orientation: bool = False) -> Any:
     """Read a file by its extension.
 
-    Meshes (.obj .off .stl .ply) return a ``Mesh``; STL triangles are welded
-    by exact position. With ``check=False`` an open or otherwise invalid
+    Meshes (.obj .off .stl .ply .3mf .glb .gltf) return a ``Mesh``; STL
+    and glTF triangles are welded by exact position. With ``check=False`` an open or otherwise invalid
     mesh (or one with NaN coordinates) is read anyway, for
     ``Mesh.check()`` to report, like ``umbra check``.
 
@@ -129,7 +130,7 @@ def read(path: PathLike, *, check: bool = True, keep_orientation: bool = False) 
     (k, 2) rings). Rings are read by role (exteriors counter-clockwise,
     holes clockwise) unless ``keep_orientation``.
     """
-    kind, value = _umbra.read(os.fspath(path), check=check, keep_orientation=keep_orientation)
+    kind, value = _umbra.read(os.fsdecode(path), check=check, keep_orientation=keep_orientation)
     if kind == "polygons" and _shapely() is not None:
         return _to_shapely(value)  # type: ignore[arg-type]
     return value
@@ -146,17 +147,43 @@ def write(
 
     A ``Mesh`` (or a ``trimesh.Trimesh``) goes to .obj .off .stl .ply .3mf
     .glb .gltf (STL and PLY binary unless ``ascii``; binary STL and glTF
-    store float32; a .gltf carries its buffer in a data URI). Polygons (shapely or the plain form) go to .wkt .geojson
-    .svg.
+    store float32; a .gltf carries its buffer in a data URI). Polygons
+    (shapely or the plain form) go to .wkt .geojson .svg.
+
+    Polygon formats store exteriors counter-clockwise and holes clockwise.
+    A clockwise ring that lies in no exterior (an inside-out region of the
+    set) has no place there: it is written as an exterior of its own, which
+    readers fill, and a ``UserWarning`` says how many; pass
+    ``keep_orientation=True`` to write every ring as it runs.
     """
-    path = os.fspath(path)
+    path = os.fsdecode(path)
     if type(shape).__name__ == "Trimesh" and hasattr(shape, "faces"):
         shape = Mesh.from_trimesh(shape)
     if isinstance(shape, Mesh):
         _umbra.write_mesh(shape, path, ascii=ascii)
     else:
-        _umbra.write_polygons(
+        orphans = _umbra.write_polygons(
             _polygons_in(shape, "geom"), path, keep_orientation=keep_orientation
+        )
+        if orphans:
+            warnings.warn(
+                f"{path}: {orphans} hole(s) lie in no exterior (the set is "
+                "inside-out there); each was written as an exterior of its own, "
+                "which readers fill. Write with keep_orientation=True to keep "
+                "the rings as they run.",
+                UserWarning,
+                stacklevel=2,
+            )
+
+
+def _warn_turned(turned: List[Any]) -> None:
+    """Warns about operands whose facets faced inward and were turned."""
+    for name, volume in turned:
+        warnings.warn(
+            f"{name}: the facets face inward (signed volume {volume}): turned "
+            "outward; pass keep_orientation=True to use it as an inside-out solid",
+            UserWarning,
+            stacklevel=3,
         )
 
 
@@ -167,6 +194,7 @@ def boolean(
     *,
     triangulate: bool = False,
     smooth: Optional[float] = None,
+    keep_orientation: bool = False,
 ) -> Mesh:
     """The 3D Boolean ``op`` ("union", "intersection" or "difference").
 
@@ -178,8 +206,17 @@ def boolean(
     returns the basic Boolean's raw output. Both operands must be valid
     (``Mesh.is_valid()``); otherwise ``UmbraError`` names the operand and
     the violated constraint.
+
+    An operand whose facets face inward (negative ``volume()``, as some
+    exporters write solids) is turned outward with a ``UserWarning``, as
+    ``umbra boolean`` does; ``keep_orientation=True`` uses it as written,
+    an inside-out solid (section 4.7).
     """
-    return _umbra.boolean(a, b, op, triangulate=triangulate, smooth=smooth)
+    out, turned = _umbra.boolean(
+        a, b, op, triangulate=triangulate, smooth=smooth, keep_orientation=keep_orientation
+    )
+    _warn_turned(turned)
+    return out
 
 
 def smooth(mesh: Mesh, tolerance: Optional[float] = None) -> Mesh:
@@ -193,9 +230,19 @@ def smooth(mesh: Mesh, tolerance: Optional[float] = None) -> Mesh:
     return _umbra.smooth(mesh, tolerance)
 
 
-def union_all(meshes: Iterable[Mesh], *, triangulate: bool = False) -> Mesh:
-    """The union of every mesh, as a balanced tree of binary Booleans."""
-    return _umbra.union_all(list(meshes), triangulate=triangulate)
+def union_all(
+    meshes: Iterable[Mesh], *, triangulate: bool = False, keep_orientation: bool = False
+) -> Mesh:
+    """The union of every mesh, as a balanced tree of binary Booleans.
+
+    Meshes whose facets face inward are turned outward with a
+    ``UserWarning`` unless ``keep_orientation`` (see ``boolean``).
+    """
+    out, turned = _umbra.union_all(
+        list(meshes), triangulate=triangulate, keep_orientation=keep_orientation
+    )
+    _warn_turned(turned)
+    return out
 
 
 def csg(tree: dict, *, triangulate: bool = False, smooth: float | None = None) -> Mesh:

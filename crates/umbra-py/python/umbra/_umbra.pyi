@@ -15,6 +15,7 @@ __all__ = [
     "csg",
     "read",
     "simplify",
+    "smooth",
     "union_all",
     "write_mesh",
     "write_polygons",
@@ -53,6 +54,8 @@ class Mesh:
         """Closed facets and shape, valid coordinates."""
     def volume(self) -> float:
         """The signed volume; UmbraError for an invalid mesh."""
+    def reversed(self) -> Mesh:
+        """The mesh with every facet turned over (inside and outside swap)."""
     def check(self) -> dict[str, Any]:
         """The report of ``umbra check --json`` (without ``file``)."""
     def to_arrays(
@@ -79,9 +82,12 @@ def boolean(
     *,
     triangulate: bool = False,
     smooth: float | None = None,
-) -> Mesh: ...
+    keep_orientation: bool = False,
+) -> Tuple[Mesh, List[Tuple[str, float]]]: ...
 def smooth(mesh: Mesh, tolerance: float | None = None) -> Mesh: ...
-def union_all(meshes: Iterable[Mesh], *, triangulate: bool = False) -> Mesh: ...
+def union_all(
+    meshes: Iterable[Mesh], *, triangulate: bool = False, keep_orientation: bool = False
+) -> Tuple[Mesh, List[Tuple[str, float]]]: ...
 def csg(
     tree: dict[str, Any], *, triangulate: bool = False, smooth: float | None = None
 ) -> Mesh: ...

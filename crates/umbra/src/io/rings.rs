@@ -313,6 +313,24 @@ mod tests {
     }
 
     #[test]
+    fn rings_beyond_the_square_root_of_the_largest_f64_keep_their_roles() {
+        // The shoelace products of 1e155 overflow; the rings were dropped
+        // (a NaN area is neither an exterior nor a hole) or kept clockwise.
+        let s = 1e155;
+        let mut outer = square(0.0, 0.0, 4.0 * s);
+        outer.reverse(); // stored clockwise
+        let hole = square(s, s, s); // stored counter-clockwise
+        let set = build_set(&vec![vec![outer, hole]], RingOrientation::ByRole, "t").unwrap();
+        let layout = layout_polygons(&set, RingOrientation::ByRole, "t").unwrap();
+        assert_eq!(layout.orphan_holes, 0);
+        assert_eq!(layout.polygons.len(), 1);
+        let poly = &layout.polygons[0];
+        assert_eq!(poly.len(), 2);
+        assert_eq!(ring_signed_area(&poly[0]), f64::INFINITY);
+        assert_eq!(ring_signed_area(&poly[1]), f64::NEG_INFINITY);
+    }
+
+    #[test]
     fn holes_go_to_the_smallest_container() {
         // A big square with a hole, an island in the hole with its own hole.
         let mut set = PolygonSet2::new();

@@ -497,10 +497,16 @@ impl Ctx<'_> {
 
 #[cfg(feature = "io")]
 fn read_file(p: &std::path::Path, path: &[usize]) -> Result<PolygonMesh, ModelError> {
-    crate::read_mesh(p, crate::MeshReadOptions::default(), true).map_err(|e| ModelError::File {
-        node: path_string(path),
-        message: e.to_string(),
-    })
+    let mesh = crate::read_mesh(p, crate::MeshReadOptions::default(), true).map_err(|e| {
+        ModelError::File {
+            node: path_string(path),
+            message: e.to_string(),
+        }
+    })?;
+    // A leaf is a solid: one written with its facets facing inward (the
+    // opposite orientation convention) is turned outward, as `umbra
+    // boolean` does by default (a script has no inside-out leaves).
+    Ok(crate::turned_outward(&mesh).unwrap_or(mesh))
 }
 
 #[cfg(not(feature = "io"))]

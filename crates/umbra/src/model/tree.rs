@@ -14,7 +14,8 @@
 //!   optional, 0 gives a cone);
 //! - `"torus": {"radius": R, "tube": r, "segments": [32, 16]}` (axis z,
 //!   centred);
-//! - `"file": "relative/path.obj"` (a mesh file, relative to the script);
+//! - `"file": "relative/path.obj"` (a mesh file, relative to the script;
+//!   a closed mesh whose facets face inward is turned outward);
 //!
 //! and optionally `"translate": [x, y, z]`, `"rotate": [ax, ay, az]`
 //! (degrees, about x, then y, then z) and `"scale": s` or `[sx, sy, sz]`,
@@ -539,10 +540,20 @@ pub fn parse_csg(text: &str) -> Result<CsgNode, ModelError> {
 }
 
 fn parse_csg_named(text: &str, file: &str) -> Result<CsgNode, ModelError> {
-    // serde_json refuses nesting beyond 128 levels with a clear message.
+    // serde_json refuses nesting beyond 128 JSON levels (its parser is
+    // recursive: the limit keeps a hostile script from overflowing the
+    // stack). An operation takes two of them (its object and its children's
+    // list), so the message says what that means for a tree.
     let value: Value = serde_json::from_str(text).map_err(|e| ModelError::Json {
         file: file.to_string(),
-        message: e.to_string(),
+        message: if e.to_string().starts_with("recursion limit exceeded") {
+            format!(
+                "{e}: a script may nest about 60 operations deep (128 JSON levels); \
+                 give a chain of Booleans as one operation with many children"
+            )
+        } else {
+            e.to_string()
+        },
     })?;
     parse_csg_value(&value, file)
 }
