@@ -568,6 +568,52 @@ fn booleans_via_simplify_agree_with_the_basic_boolean() {
 }
 
 #[test]
+fn invalid_operands_read_by_role_get_set_semantics_in_both_algorithms() {
+    // Files a GIS user has: a square given twice in one multipolygon, a
+    // polygon whose two holes overlap, a hole outside its shell. As sets
+    // (shapely's make_valid, the Boolean through simplification): areas
+    // 100, 100 - 28 and 100. The basic Boolean on the rings as read counted
+    // the doubled square twice (its union with itself was empty) and the
+    // overlapping holes' -1 as inside.
+    let dir = temp_dir("invalid-sets");
+    let sq = "(0 0, 10 0, 10 10, 0 10, 0 0)";
+    let cases = [
+        ("twice", format!("MULTIPOLYGON (({sq}), ({sq}))"), 100.0),
+        (
+            "holes",
+            format!("POLYGON ({sq}, (2 2, 2 6, 6 6, 6 2, 2 2), (4 4, 4 8, 8 8, 8 4, 4 4))"),
+            72.0,
+        ),
+        (
+            "stray",
+            format!("POLYGON ({sq}, (20 20, 20 21, 21 21, 21 20, 20 20))"),
+            100.0,
+        ),
+    ];
+    for (name, text, area) in cases {
+        let input = write(&dir, &format!("{name}.wkt"), &format!("{text}\n"));
+        for op in ["union", "intersection"] {
+            for via in ["basic", "simplify"] {
+                let out = dir.join(format!("{name}-{op}-{via}.geojson"));
+                let o = umbra([
+                    "boolean",
+                    op,
+                    input.to_str().unwrap(),
+                    input.to_str().unwrap(),
+                    "-o",
+                    out.to_str().unwrap(),
+                    "--via",
+                    via,
+                ]);
+                assert!(o.status.success(), "{name} {op} {via}: {}", stderr(&o));
+                let got = geojson_area(&out);
+                assert!((got - area).abs() < 1e-9, "{name} {op} {via}: {got}");
+            }
+        }
+    }
+}
+
+#[test]
 fn geojson_round_trip_and_bad_geojson() {
     let dir = temp_dir("geojson");
     let out = dir.join("copy.geojson");

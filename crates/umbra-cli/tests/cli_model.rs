@@ -134,6 +134,17 @@ fn bad_scripts_exit_1_with_one_line_naming_the_script_and_node() {
         assert!(e.contains(needle), "{text}: {e}");
         assert!(!out.exists(), "nothing written on error");
     }
+    // A script that is not there: the cause said once.
+    let o = umbra([
+        "csg",
+        dir.join("nothere.json").to_str().unwrap(),
+        "-o",
+        dir.join("o.obj").to_str().unwrap(),
+    ]);
+    assert_eq!(o.status.code(), Some(1));
+    let e = stderr(&o);
+    assert!(e.contains("nothere.json: cannot read"), "{e}");
+    assert_eq!(e.matches("os error").count(), 1, "{e}");
 }
 
 #[test]

@@ -31,8 +31,11 @@ use std::cell::RefCell;
 use std::panic::{catch_unwind, AssertUnwindSafe};
 use std::sync::{Arc, Mutex, PoisonError};
 
+// Registered under `umbra` (the package re-exports it there), so pickle
+// finds it by that name: an error raised in a worker process reaches its
+// caller as an `UmbraError`.
 create_exception!(
-    _umbra,
+    umbra,
     UmbraError,
     PyValueError,
     "An error of umbra: bad input (a NaN coordinate, a dangling index, an open mesh, an unknown operation, an unreadable file) or, for messages starting with 'internal error', a bug to report. The message is one line, as the command-line tool prints it."

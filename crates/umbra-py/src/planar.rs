@@ -11,8 +11,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
     boolean, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name, from_geo,
-    layout_polygons, simplify as simplify_set, smooth_polygon_set, FillRule, PolygonSet2, Polygons,
-    RingOrientation, SmoothOptions, UmbraError, Via,
+    layout_polygons, regularized_operand, simplify as simplify_set, smooth_polygon_set, FillRule,
+    PolygonSet2, Polygons, RingOrientation, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -146,6 +146,19 @@ pub fn boolean_2d<'py>(
     let shape = run(py, || {
         let raw = match via {
             Via::Basic => {
+                // Operands read by role are made sets first, as the
+                // command line does (`regularized_operand`).
+                let regular = |s: &PolygonSet2| {
+                    regularized_operand(s).map_err(|source| UmbraError::Simplify {
+                        file: String::new(),
+                        source,
+                    })
+                };
+                let (a, b) = if keep_orientation {
+                    (a.clone(), b.clone())
+                } else {
+                    (regular(&a)?, regular(&b)?)
+                };
                 boolean(&a, &b, op)
                     .map(|o| o.shape)
                     .map_err(|source| UmbraError::Boolean {

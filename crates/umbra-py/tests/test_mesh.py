@@ -159,3 +159,10 @@ def test_umbra_error_is_a_value_error_and_panics_never_cross():
         umbra._umbra._panic_for_tests()
     # The interpreter is fine afterwards.
     assert cube().volume() == 1.0
+
+
+def test_umbra_error_pickles_for_worker_processes():
+    # Errors raised in a worker process travel back by pickle.
+    e = pickle.loads(pickle.dumps(umbra.UmbraError("bad input")))
+    assert type(e) is umbra.UmbraError and str(e) == "bad input"
+    assert umbra.UmbraError.__module__ == "umbra"

@@ -61,3 +61,24 @@ def test_bad_2d_arguments():
         umbra.boolean_2d([[np.zeros((3, 3))]], SQUARE, "union")
     with pytest.raises(umbra.UmbraError, match="a: expected a list of polygons"):
         umbra.boolean_2d(7, SQUARE, "union")
+
+
+@pytest.mark.parametrize("via", ["basic", "simplify"])
+def test_invalid_operands_are_taken_as_sets(via):
+    # A square given twice (overlapping parts) and a polygon with a hole
+    # outside its shell: as sets (make_valid's areas) in both algorithms.
+    # The basic Boolean on the rings as read gave an empty union of the
+    # doubled square with itself, and filled the stray hole in the
+    # intersection.
+    sq = np.array([[0.0, 0.0], [10.0, 0.0], [10.0, 10.0], [0.0, 10.0]])
+    stray = np.array([[20.0, 20.0], [20.0, 21.0], [21.0, 21.0], [21.0, 20.0]])
+    twice = [[sq], [sq.copy()]]
+    holed = [[sq, stray]]
+    for shape in (twice, holed):
+        for op in ("union", "intersection"):
+            out = umbra.boolean_2d(shape, shape, op, via=via)
+            if not isinstance(out, list):  # shapely installed
+                out = out.area
+            else:
+                out = area(out)
+            assert abs(out - 100.0) < 1e-9, (op, via, out)

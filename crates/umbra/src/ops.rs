@@ -11,7 +11,7 @@ use boolean_3d::{
     triangulate_mesh, Boolean3Error, Contacts,
 };
 use std::time::Instant;
-use topology::{BooleanOp, PolygonMesh, TriangleMesh};
+use topology::{BooleanOp, PolygonMesh, PolygonSet2, TriangleMesh};
 
 /// The operand turned outward when its facets face inward: a mesh of
 /// negative signed volume (written with the opposite orientation
@@ -41,6 +41,37 @@ pub fn turned_outward(mesh: &PolygonMesh) -> Option<PolygonMesh> {
     // The volume first: the closure check is the dearer test, and only an
     // operand about to be turned needs it.
     (mesh.signed_volume() < 0.0 && mesh.check_topology().is_ok()).then(|| mesh.reversed())
+}
+
+/// A 2D operand read by role made a set for the basic Boolean: winding
+/// number 1 where `set`'s is positive, 0 elsewhere (the simplification
+/// sweep with the positive rule, chapters 6-7).
+///
+/// The basic Boolean combines winding numbers by eq. 4.20, `c_A a + c_B b +
+/// c_I a b`, which is the Boolean of the sets only when both are 0 or 1.
+/// Rings read by role from a valid file give exactly that, but an invalid
+/// one does not: two overlapping parts of a multipolygon cover their
+/// overlap twice (the union of such an operand with itself was empty), a
+/// hole outside its shell or two overlapping holes leave winding number
+/// -1 (which the intersection counted as inside). The command-line tool
+/// and the Python package therefore pass operands read by role through
+/// this first: a valid operand has no crossing, so it comes back as the
+/// same set (no vertex moves); an invalid one as the region GIS tools
+/// mean by it (`make_valid`'s, for overlapping parts and holes), the
+/// result the Boolean through simplification gives.
+///
+/// ```
+/// use umbra::{boolean, regularized_operand, BooleanOp, PolygonSet2};
+/// let mut twice = PolygonSet2::new(); // one square given twice
+/// for _ in 0..2 {
+///     twice.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// }
+/// assert_eq!(boolean(&twice, &twice, BooleanOp::Union).unwrap().shape.signed_area(), 0.0);
+/// let set = regularized_operand(&twice).unwrap();
+/// assert_eq!(boolean(&set, &set, BooleanOp::Union).unwrap().shape.signed_area(), 1.0);
+/// ```
+pub fn regularized_operand(set: &PolygonSet2) -> Result<PolygonSet2, simplify_2d::SimplifyError> {
+    simplify_2d::simplify(set, simplify_2d::FillRule::Positive).map(|s| s.shape)
 }
 
 /// The algorithm of a 2D Boolean.

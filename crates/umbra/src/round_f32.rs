@@ -225,6 +225,82 @@ fn f32_around(x: f64) -> [f64; 2] {
     }
 }
 
+/// The box of the corners of `t` in `m`, vertex `v` taken anywhere in
+/// `cell`.
+fn box_with_cell(m: &TriangleMesh, t: [u32; 3], v: u32, cell: &[Point3; 2]) -> [Point3; 2] {
+    let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+    for w in t {
+        let ps = if w == v {
+            [cell[0], cell[1]]
+        } else {
+            [m.vertices[w as usize]; 2]
+        };
+        for p in ps {
+            for k in 0..3 {
+                b[0][k] = b[0][k].min(p[k]);
+                b[1][k] = b[1][k].max(p[k]);
+            }
+        }
+    }
+    b
+}
+
+/// The facets of `m` that [`self_intersecting_triangle_pairs_near`] looks
+/// at for the facets around vertex `v`, wherever `v` lies in the box
+/// `cell`, as a mesh of its own: the facets whose boxes meet the box of
+/// the facets around `v` (`v` anywhere in its cell), and those whose boxes
+/// meet the box of all of these. That holds both box rings of the test
+/// for every position of `v` in the cell, so the pairs of the facets
+/// around `v` are the same on it as on `m`. Returns the mesh, the index
+/// of `v` in it and its facets around `v`.
+fn corner_neighbourhood(
+    m: &TriangleMesh,
+    v: u32,
+    cell: [Point3; 2],
+) -> (TriangleMesh, u32, Vec<bool>) {
+    let boxes: Vec<[Point3; 2]> = m
+        .triangles
+        .iter()
+        .map(|&t| box_with_cell(m, t, v, &cell))
+        .collect();
+    let union = |pick: &dyn Fn(usize) -> bool| {
+        let mut u = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+        for b in boxes
+            .iter()
+            .enumerate()
+            .filter(|&(f, _)| pick(f))
+            .map(|(_, b)| b)
+        {
+            for k in 0..3 {
+                u[0][k] = u[0][k].min(b[0][k]);
+                u[1][k] = u[1][k].max(b[1][k]);
+            }
+        }
+        u
+    };
+    let star_box = union(&|f| m.triangles[f].contains(&v));
+    let first: Vec<bool> = boxes.iter().map(|b| overlap(b, &star_box)).collect();
+    let first_box = union(&|f| first[f]);
+    let mut index = vec![u32::MAX; m.vertices.len()];
+    let mut near = TriangleMesh::default();
+    let mut around = Vec::new();
+    for (t, b) in m.triangles.iter().zip(&boxes) {
+        if !overlap(b, &first_box) {
+            continue;
+        }
+        near.triangles.push(t.map(|w| {
+            let at = &mut index[w as usize];
+            if *at == u32::MAX {
+                *at = near.vertices.len() as u32;
+                near.vertices.push(m.vertices[w as usize]);
+            }
+            *at
+        }));
+        around.push(t.contains(&v));
+    }
+    (near, index[v as usize], around)
+}
+
 /// Rounds the vertices of the facets in `found` to other corners of their
 /// `f32` grid cells where that removes intersecting pairs: each moved
 /// vertex of those facets in turn takes the corner of its cell (of the
@@ -268,39 +344,45 @@ fn choose_corners(
             })
         }));
     }
+    let mut is_movable = vec![false; sub.vertices.len()];
     let mut movable: Vec<u32> = Vec::new();
     for (t, _) in mesh.triangles.iter().zip(&seed).filter(|(_, &s)| s) {
         for v in t {
             let (g, l) = (*v as usize, local[v]);
-            if exact[g] != mesh.vertices[g] && !movable.contains(&l) {
+            if exact[g] != mesh.vertices[g] && !is_movable[l as usize] {
+                is_movable[l as usize] = true;
                 movable.push(l);
             }
         }
     }
     let sub_exact: Vec<Point3> = global.iter().map(|&g| exact[g as usize]).collect();
-    // Moving vertex `v` changes only the pairs holding one of its facets
-    // and the coincidences of `v` itself, so the corners of its cell are
-    // ranked by those alone (the rest of the region's count is the same
-    // for all eight): the intersecting pairs with a facet around `v`, and
-    // the vertices, apart from `v` in `f64`, at its rounded position.
-    let local = |m: &TriangleMesh, v: u32, around: &[bool]| {
-        let p = m.vertices[v as usize];
-        let e = sub_exact[v as usize];
-        pairs(m, around).map_or(usize::MAX, |found| found.len())
-            + m.vertices
-                .iter()
-                .zip(&sub_exact)
-                .filter(|&(q, x)| *q == p && *x != e)
-                .count()
+    // The vertices, apart from `v` in `f64`, at its rounded position.
+    let coincident = |m: &TriangleMesh, v: u32| {
+        let (p, e) = (m.vertices[v as usize], sub_exact[v as usize]);
+        m.vertices
+            .iter()
+            .zip(&sub_exact)
+            .filter(|&(q, x)| *q == p && *x != e)
+            .count()
     };
     for _ in 0..2 {
         let mut left = 0;
         for &v in &movable {
-            let around: Vec<bool> = sub.triangles.iter().map(|t| t.contains(&v)).collect();
             let p = exact[global[v as usize] as usize];
             let [xs, ys, zs] = [f32_around(p[0]), f32_around(p[1]), f32_around(p[2])];
+            let cell = [[xs[0], ys[0], zs[0]], [xs[1], ys[1], zs[1]]];
+            // Moving `v` changes only the pairs holding one of its facets
+            // and the coincidences of `v` itself, so the corners of its
+            // cell are ranked by those alone (the rest of the region's
+            // count is the same for all eight), the pairs counted on the
+            // facets that can take part in them wherever `v` lies in its
+            // cell (`corner_neighbourhood`).
+            let (mut near, at, around) = corner_neighbourhood(&sub, v, cell);
+            let local = |near: &TriangleMesh, sub: &TriangleMesh| {
+                pairs(near, &around).map_or(usize::MAX, |found| found.len()) + coincident(sub, v)
+            };
             let mut keep = sub.vertices[v as usize];
-            let mut best = local(&sub, v, &around);
+            let mut best = local(&near, &sub);
             let corners = xs
                 .into_iter()
                 .flat_map(|x| ys.into_iter().flat_map(move |y| zs.map(|z| [x, y, z])));
@@ -309,7 +391,8 @@ fn choose_corners(
                     break;
                 }
                 sub.vertices[v as usize] = corner;
-                let k = local(&sub, v, &around);
+                near.vertices[at as usize] = corner;
+                let k = local(&near, &sub);
                 if k < best {
                     best = k;
                     keep = corner;
@@ -519,6 +602,65 @@ mod tests {
             }
         }
         assert!(plain_pairs > 0, "the inputs should exercise the repair");
+    }
+
+    /// The pairs of the facets around a vertex, counted on its corner
+    /// neighbourhood, are those counted on the whole mesh, at every corner
+    /// of the vertex's `f32` cell: the nut's union with a turned copy,
+    /// plainly rounded (so that some corners make pairs), every vertex of
+    /// a facet of a pair and a spread of others.
+    #[test]
+    fn corner_neighbourhoods_count_the_pairs_of_the_whole_mesh() {
+        let path = test_support::data_path("pyvista/nut.ply");
+        let a = crate::read_mesh(&path, crate::MeshReadOptions::default(), true).unwrap();
+        let turn = glam::DMat4::from_translation(glam::DVec3::new(0.37, 0.21, 0.13))
+            * glam::DMat4::from_euler(
+                glam::EulerRot::XYZ,
+                1f64.to_radians(),
+                2f64.to_radians(),
+                3f64.to_radians(),
+            );
+        let b = crate::transform_mesh(&a, &turn).unwrap();
+        let d = boolean_solid(&a, &b, BooleanOp::Union, MeshVariant::TriangleMesh)
+            .unwrap()
+            .mesh;
+        let mut m = topology::triangulate_mesh(&d);
+        let exact = m.vertices.clone();
+        round_vertices(&mut m.vertices);
+        let all: Vec<bool> = vec![true; m.triangles.len()];
+        let found = pairs(&m, &all).unwrap();
+        assert!(!found.is_empty(), "plain rounding should make pairs here");
+        let mut vs: Vec<u32> = found
+            .iter()
+            .flatten()
+            .flat_map(|&f| m.triangles[f as usize])
+            .collect();
+        vs.extend((0..m.vertices.len() as u32).step_by(97));
+        vs.sort_unstable();
+        vs.dedup();
+        let mut nonzero = 0;
+        for v in vs {
+            let p = exact[v as usize];
+            let [xs, ys, zs] = [f32_around(p[0]), f32_around(p[1]), f32_around(p[2])];
+            let cell = [[xs[0], ys[0], zs[0]], [xs[1], ys[1], zs[1]]];
+            let (mut near, at, around) = corner_neighbourhood(&m, v, cell);
+            let star: Vec<bool> = m.triangles.iter().map(|t| t.contains(&v)).collect();
+            let keep = m.vertices[v as usize];
+            for x in xs {
+                for y in ys {
+                    for z in zs {
+                        m.vertices[v as usize] = [x, y, z];
+                        near.vertices[at as usize] = [x, y, z];
+                        let whole = pairs(&m, &star).unwrap().len();
+                        let local = pairs(&near, &around).unwrap().len();
+                        assert_eq!(local, whole, "vertex {v} at {:?}", [x, y, z]);
+                        nonzero += usize::from(whole > 0);
+                    }
+                }
+            }
+            m.vertices[v as usize] = keep;
+        }
+        assert!(nonzero > 0, "some corners should make pairs");
     }
 
     /// A mesh of `f32` coordinates comes back as it is, at the cost of one

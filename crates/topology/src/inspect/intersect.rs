@@ -403,7 +403,7 @@ fn triangulate_for_test(positions: &[Point3], hes: &[(u32, u32)], out: &mut Vec<
 /// `[smaller, larger]`. Requires every index in range and every coordinate
 /// finite (the caller checks).
 pub(super) fn self_intersecting_pairs(mesh: &PolygonMesh) -> Vec<[u32; 2]> {
-    pairs_with(mesh, true)
+    pairs_with(mesh, true, None)
 }
 
 /// The facet pairs of `self_intersecting_pairs` that hold at least one
@@ -555,7 +555,11 @@ fn pairs_near_with(
         }
         sub.facets.push(facet);
     }
-    let mut pairs: Vec<[u32; 2]> = pairs_with(&sub, true)
+    // Only pairs holding a focus facet are wanted: the others are not
+    // tested at all (the neighbourhood is there to cut the focus facets'
+    // triangles as the whole test does, not to be tested itself).
+    let sub_focus: Vec<bool> = ids.iter().map(|&f| focus[f as usize]).collect();
+    let mut pairs: Vec<[u32; 2]> = pairs_with(&sub, true, Some(&sub_focus))
         .into_iter()
         .map(|[a, b]| [ids[a as usize], ids[b as usize]])
         .filter(|[a, b]| focus[*a as usize] || focus[*b as usize])
@@ -565,8 +569,11 @@ fn pairs_near_with(
 }
 
 /// [`self_intersecting_pairs`], big convex facets halved or not (the tests
-/// compare the two).
-fn pairs_with(mesh: &PolygonMesh, halving: bool) -> Vec<[u32; 2]> {
+/// compare the two); with `focus`, only the pairs holding a facet `f` with
+/// `focus[f]` (the same pairs as the whole test's, filtered: the other
+/// pairs are never tested).
+fn pairs_with(mesh: &PolygonMesh, halving: bool, focus: Option<&[bool]>) -> Vec<[u32; 2]> {
+    let wanted = |f: u32| focus.is_none_or(|m| m.get(f as usize).copied().unwrap_or(false));
     let id = weld(&mesh.vertices);
     // Every facet's triangles with welded corners; the zero-area ones only
     // record the vertices they place inside a segment.
@@ -621,7 +628,7 @@ fn pairs_with(mesh: &PolygonMesh, halving: bool) -> Vec<[u32; 2]> {
             let t = &tris[i as usize];
             bvh.query_after(&boxes, pos, |j| {
                 let u = &tris[j as usize];
-                if u.facet != t.facet && improper(t, u) {
+                if u.facet != t.facet && (wanted(t.facet) || wanted(u.facet)) && improper(t, u) {
                     found.push([t.facet.min(u.facet), t.facet.max(u.facet)]);
                 }
             });
@@ -1072,7 +1079,7 @@ mod tests {
                 .map(|i| i as u32)
                 .collect();
             prop_assert_eq!(caps, vec![0, 1, off / 2 + 2, off / 2 + 3]);
-            prop_assert_eq!(pairs_with(&mesh, true), pairs_with(&mesh, false));
+            prop_assert_eq!(pairs_with(&mesh, true, None), pairs_with(&mesh, false, None));
         }
 
         /// The pairs near a focus are the whole test's pairs that hold a
@@ -1094,10 +1101,11 @@ mod tests {
                 .collect();
             let mesh = PolygonMesh::new(v, facets);
             let focus: Vec<bool> = (0..mesh.facets.len()).map(|f| mask >> (f % 64) & 1 == 1).collect();
-            let want: Vec<[u32; 2]> = pairs_with(&mesh, true)
+            let want: Vec<[u32; 2]> = pairs_with(&mesh, true, None)
                 .into_iter()
                 .filter(|p| focus[p[0] as usize] || focus[p[1] as usize])
                 .collect();
+            prop_assert_eq!(&pairs_with(&mesh, true, Some(&focus)), &want);
             let tris = crate::TriangleMesh::new(
                 mesh.vertices.clone(),
                 mesh.facets

@@ -9,13 +9,14 @@ use crate::errors::{self, usage};
 use crate::files::OutputArgs;
 use crate::stdout::outln;
 use clap::ValueEnum;
-use std::path::PathBuf;
+use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
     default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid_near, turned_outward,
+    read_mesh, read_polygon_set, regularized_operand, smooth_polygon_set, smooth_solid_near,
+    turned_outward,
     Boolean2Report,
     Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
     Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
@@ -160,6 +161,17 @@ impl BooleanArgs {
         let start = Instant::now();
         let (encoded, report) = match via {
             Via::Basic => {
+                // Operands read by role are made sets first (an invalid
+                // file's overlapping parts or stray holes would otherwise
+                // be counted twice or inside out: `regularized_operand`).
+                let (a, b) = if keep {
+                    (a, b)
+                } else {
+                    let set = |s: &PolygonSet2, file: &Path| {
+                        regularized_operand(s).map_err(|e| errors::simplify(e, &[file]))
+                    };
+                    (set(&a, a_path)?, set(&b, b_path)?)
+                };
                 let result = boolean(&a, &b, op);
                 let total = millis_since(start);
                 let out = result.map_err(|e| errors::boolean2(e, files))?;

@@ -88,12 +88,7 @@ impl fmt::Display for ModelError {
     }
 }
 
-impl std::error::Error for ModelError {
-    fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
-        match self {
-            ModelError::Io { source, .. } => Some(source),
-            ModelError::Boolean { source, .. } => Some(source),
-            _ => None,
-        }
-    }
-}
+/// No variant names a source: each message already ends with its cause
+/// (one complete line), and a printer that also walks the chain would say
+/// the cause twice.
+impl std::error::Error for ModelError {}
