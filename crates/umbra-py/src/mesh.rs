@@ -318,9 +318,24 @@ impl Mesh {
     }
 
     /// The mesh of a ``trimesh.Trimesh`` (its vertices and faces, exactly).
+    /// Anything without both (a ``trimesh.Scene``, which ``trimesh.load``
+    /// returns for many files, or a ``PointCloud``) is an ``UmbraError``
+    /// saying what to pass instead.
     #[staticmethod]
     fn from_trimesh(m: &Bound<'_, PyAny>) -> PyResult<Self> {
-        Mesh::new(&m.getattr("vertices")?, &m.getattr("faces")?)
+        match (m.getattr("vertices"), m.getattr("faces")) {
+            (Ok(v), Ok(f)) => Mesh::new(&v, &f),
+            _ => {
+                let kind = m
+                    .get_type()
+                    .name()
+                    .map_or_else(|_| "object".to_string(), |n| n.to_string());
+                Err(error(format!(
+                    "from_trimesh: expected a trimesh.Trimesh (vertices and faces), got a {kind}; \
+                     for a trimesh.Scene pass scene.to_mesh() (its meshes through their transforms)"
+                )))
+            }
+        }
     }
 
     /// A ``trimesh.Trimesh`` of this mesh (``triangles`` as faces; no

@@ -109,7 +109,11 @@ pub fn polygons_to_py<'py>(py: Python<'py>, polygons: &Polygons) -> PyResult<Bou
     Ok(out.into_any())
 }
 
-/// The layout of a result in the requested ring convention.
+/// The layout of a result in the requested ring convention: with `keep`
+/// every loop as its own polygon as it runs, else by role (holes in their
+/// exteriors). Results going to shapely, which has no ring direction, are
+/// laid out by role whatever the input convention (`layout_by_role`): a
+/// hole as a polygon of its own would be filled.
 fn output<'py>(py: Python<'py>, set: PolygonSet2, keep: bool) -> PyResult<Bound<'py, PyAny>> {
     let layout = run(py, || layout_polygons(&set, orientation(keep), "<result>"))?;
     polygons_to_py(py, &layout.polygons)
@@ -119,7 +123,9 @@ fn output<'py>(py: Python<'py>, set: PolygonSet2, keep: bool) -> PyResult<Bound<
 /// smoothed at `smooth` (by default the command line's tolerance, 1e-9
 /// times the operands' largest extent; 0 for the raw output).
 #[pyfunction]
-#[pyo3(signature = (a, b, op, *, via = "basic", keep_orientation = false, smooth = None))]
+#[pyo3(signature = (a, b, op, *, via = "basic", keep_orientation = false, smooth = None, layout_by_role = false))]
+// The arguments are the Python keyword arguments, one each.
+#[allow(clippy::too_many_arguments)]
 pub fn boolean_2d<'py>(
     py: Python<'py>,
     a: &Bound<'py, PyAny>,
@@ -128,6 +134,7 @@ pub fn boolean_2d<'py>(
     via: &str,
     keep_orientation: bool,
     smooth: Option<f64>,
+    layout_by_role: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let op = parse_op(op)?;
     let via = match via {
@@ -186,7 +193,7 @@ pub fn boolean_2d<'py>(
             .map(|s| s.shape)
             .map_err(smooth_error)
     })?;
-    output(py, shape, keep_orientation)
+    output(py, shape, keep_orientation && !layout_by_role)
 }
 
 /// The fill rule named `rule`.
@@ -210,12 +217,13 @@ fn parse_rule(rule: &str) -> PyResult<FillRule> {
 /// The simplification of a polygon list by a fill rule (see the Python
 /// docstring).
 #[pyfunction]
-#[pyo3(signature = (geom, rule = "positive", *, keep_orientation = false))]
+#[pyo3(signature = (geom, rule = "positive", *, keep_orientation = false, layout_by_role = false))]
 pub fn simplify<'py>(
     py: Python<'py>,
     geom: &Bound<'py, PyAny>,
     rule: &str,
     keep_orientation: bool,
+    layout_by_role: bool,
 ) -> PyResult<Bound<'py, PyAny>> {
     let rule = parse_rule(rule)?;
     let set = input_set(py, geom, keep_orientation, "geom")?;
@@ -227,5 +235,5 @@ pub fn simplify<'py>(
                 source,
             })
     })?;
-    output(py, shape, keep_orientation)
+    output(py, shape, keep_orientation && !layout_by_role)
 }

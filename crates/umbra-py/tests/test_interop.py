@@ -32,3 +32,14 @@ def test_quads_go_to_trimesh_as_triangles(tmp_path):
     path = tmp_path / "box.ply"
     umbra.write(trimesh.creation.box(), path)
     assert abs(umbra.read(path).volume() - 1.0) < 1e-15
+
+
+def test_scenes_and_point_clouds_are_refused_by_name():
+    box = trimesh.creation.box(extents=(2.0, 3.0, 4.0))
+    scene = trimesh.Scene([box])
+    with pytest.raises(umbra.UmbraError, match=r"got a Scene; .*scene\.to_mesh\(\)"):
+        umbra.Mesh.from_trimesh(scene)
+    with pytest.raises(umbra.UmbraError, match="got a PointCloud"):
+        umbra.Mesh.from_trimesh(trimesh.PointCloud(box.vertices))
+    # The hint works: the scene's mesh through its transforms.
+    assert abs(umbra.Mesh.from_trimesh(scene.to_mesh()).volume() - 24.0) < 1e-12

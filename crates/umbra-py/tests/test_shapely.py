@@ -4,6 +4,7 @@ shapely)."""
 
 import math
 
+import numpy as np
 import pytest
 
 import umbra
@@ -35,6 +36,27 @@ def test_shapely_simplify_figure_eight():
     assert s.is_valid and isinstance(s, shapely.Polygon) and s.area == 1.0
     both = umbra.simplify(bowtie, "nonzero", keep_orientation=True)
     assert both.area == 2.0 and len(both.geoms) == 2
+
+
+def test_shapely_results_keep_their_holes_when_orientation_is_kept():
+    # shapely has no ring direction: a hole returned as a polygon of its
+    # own was filled (area 116 for this donut, and invalid).
+    # Exterior counter-clockwise, hole clockwise (as written, so that the
+    # winding numbers are those of the set).
+    donut = shapely.geometry.polygon.orient(
+        shapely.box(0, 0, 10, 10).difference(shapely.box(2, 2, 6, 6)), 1.0
+    )
+    for rule in ("positive", "nonzero"):
+        s = umbra.simplify(donut, rule, keep_orientation=True)
+        assert s.is_valid and s.area == 84.0, (rule, s.wkt)
+    u = umbra.boolean_2d(donut, shapely.box(20, 0, 21, 1), "union", keep_orientation=True)
+    assert u.is_valid and u.area == 85.0, u.wkt
+    # The plain form keeps every loop as it runs.
+    plain = umbra.simplify(
+        [[np.asarray(donut.exterior.coords), np.asarray(donut.interiors[0].coords)]],
+        keep_orientation=True,
+    )
+    assert len(plain) == 2
 
 
 def test_shapely_bad_geometries():

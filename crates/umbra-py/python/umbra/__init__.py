@@ -287,6 +287,9 @@ def boolean_2d(
     and so does ``keep_orientation=True`` unless ``smooth`` is given (its
     winding numbers are the result, which smoothing does not keep).
     """
+    # shapely has no ring direction: its results are laid out by role (a
+    # hole as a polygon of its own would be filled).
+    to_shapely = _is_shapely(a) or _is_shapely(b)
     out = _umbra.boolean_2d(
         _polygons_in(a, "a"),
         _polygons_in(b, "b"),
@@ -294,8 +297,9 @@ def boolean_2d(
         via=via,
         keep_orientation=keep_orientation,
         smooth=smooth,
+        layout_by_role=to_shapely,
     )
-    return _to_shapely(out) if _is_shapely(a) or _is_shapely(b) else out
+    return _to_shapely(out) if to_shapely else out
 
 
 def simplify(geom: Any, rule: str = "positive", *, keep_orientation: bool = False) -> Any:
@@ -307,7 +311,11 @@ def simplify(geom: Any, rule: str = "positive", *, keep_orientation: bool = Fals
     the plain form). Winding rules other than "positive" mostly make sense
     with ``keep_orientation=True``, where rings keep their direction.
     """
+    to_shapely = _is_shapely(geom)
     out = _umbra.simplify(
-        _polygons_in(geom, "geom"), rule, keep_orientation=keep_orientation
+        _polygons_in(geom, "geom"),
+        rule,
+        keep_orientation=keep_orientation,
+        layout_by_role=to_shapely,
     )
-    return _to_shapely(out) if _is_shapely(geom) else out
+    return _to_shapely(out) if to_shapely else out

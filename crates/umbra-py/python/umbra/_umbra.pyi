@@ -99,12 +99,14 @@ def boolean_2d(
     via: Literal["basic", "simplify"] | str = "basic",
     keep_orientation: bool = False,
     smooth: float | None = None,
+    layout_by_role: bool = False,
 ) -> _Polygons: ...
 def simplify(
     geom: Sequence[Sequence[npt.ArrayLike]],
     rule: str = "positive",
     *,
     keep_orientation: bool = False,
+    layout_by_role: bool = False,
 ) -> _Polygons: ...
 def read(
     path: _PathLike, *, check: bool = True, keep_orientation: bool = False
