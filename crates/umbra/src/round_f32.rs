@@ -25,11 +25,13 @@
 //!    vertices that coincide, are rounded to
 //!    other corners of their `f32` grid cells where that removes pairs
 //!    (each vertex in turn takes the best of its cell's eight corners, by
-//!    the exact test and the coincidences on the facets two vertex-rings
-//!    around), up to three passes: no vertex merges, so a 2-manifold
-//!    stays one, and each coordinate stays within one `f32` spacing of its
-//!    `f64` value. This removes the folds of thin triangles, which are
-//!    what rounding makes (every case measured needed one pass).
+//!    the exact test on the facets around it, counted on the facets whose
+//!    boxes can meet theirs wherever it lies in its cell, and its own
+//!    coincidences), up to three passes while each removes some: no
+//!    vertex merges, so a 2-manifold stays one, and each coordinate stays
+//!    within one `f32` spacing of its `f64` value. This removes the folds
+//!    of thin triangles, which are what rounding makes (every case
+//!    measured needed one pass).
 //! 4. While pairs remain, the triangles are smoothed near them
 //!    ([`smooth::smooth_triangles_near`]: the boxes of the facets of every
 //!    pair, grown by the tolerance) at a tolerance of twice the `f32`
@@ -470,6 +472,7 @@ pub fn round_to_f32(mesh: &PolygonMesh) -> RoundedToF32 {
             break;
         }
         report.corner_passes += 1;
+        let before = found.len() + collided.len();
         let changed = choose_corners(&exact, &mut current, &found, &collided);
         // Pairs anywhere near the moved corners, and those left.
         let mut focus = changed;
@@ -478,6 +481,13 @@ pub fn round_to_f32(mesh: &PolygonMesh) -> RoundedToF32 {
         }
         found = pairs(&current, &focus).unwrap_or_default();
         collided = collisions(&exact, &current.vertices);
+        if found.len() + collided.len() >= before {
+            // A pass that removed nothing leaves the next one the same
+            // choices (a countersunk plate: 46 pairs and 2 coincidences
+            // after the second pass and the third, 2 s each); smoothing
+            // takes what is left.
+            break;
+        }
     }
     report.collisions_left = collided.len();
     let max_abs = current
