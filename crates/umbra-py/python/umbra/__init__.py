@@ -277,7 +277,17 @@ def boolean_2d(
     the result is a shapely Polygon or MultiPolygon when ``a`` or ``b`` is a
     shapely geometry, else the plain form. Rings are read by role unless
     ``keep_orientation`` (then every ring is a directed loop as written and
-    every output loop is its own polygon).
+    every output loop is its own polygon in the plain form; shapely results
+    are always laid out by role, as shapely has no ring direction).
+
+    Operands read by role are taken as sets in both algorithms: an invalid
+    geometry's overlapping parts, overlapping holes or holes outside their
+    shell mean what ``shapely.make_valid`` makes of them (``via="basic"``
+    first simplifies each operand by the positive rule; a valid operand
+    comes through unchanged). A self-intersecting ring is read as drawn
+    and oriented by its signed area, so only its larger lobe is inside
+    (as GEOS's ``buffer(0)`` keeps it); use ``simplify(geom, "nonzero",
+    keep_orientation=True)`` to keep every lobe.
 
     The result is smoothed (Appendix A) at ``smooth``, by default (None) at
     1e-9 times the operands' largest extent, as ``umbra boolean`` does:
