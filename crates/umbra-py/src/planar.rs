@@ -156,10 +156,12 @@ pub fn boolean_2d<'py>(
                 // Operands read by role are made sets first, as the
                 // command line does (`regularized_operand`).
                 let regular = |s: &PolygonSet2| {
-                    regularized_operand(s).map_err(|source| UmbraError::Simplify {
-                        file: String::new(),
-                        source,
-                    })
+                    regularized_operand(s)
+                        .map(|r| r.shape)
+                        .map_err(|source| UmbraError::Simplify {
+                            file: String::new(),
+                            source,
+                        })
                 };
                 let (a, b) = if keep_orientation {
                     (a.clone(), b.clone())

@@ -58,7 +58,10 @@ pub fn turned_outward(mesh: &PolygonMesh) -> Option<PolygonMesh> {
 /// this first: a valid operand has no crossing, so it comes back as the
 /// same set (no vertex moves); an invalid one as the region GIS tools
 /// mean by it (`make_valid`'s, for overlapping parts and holes), the
-/// result the Boolean through simplification gives.
+/// result the Boolean through simplification gives. The sweep's
+/// [`simplify_2d::Simplified::epsilon`] bounds how far the operand's
+/// boundary moved (0 in effect for a valid one, which has no crossing to
+/// round): a report adds it to the Boolean's own.
 ///
 /// ```
 /// use umbra::{boolean, regularized_operand, BooleanOp, PolygonSet2};
@@ -67,11 +70,13 @@ pub fn turned_outward(mesh: &PolygonMesh) -> Option<PolygonMesh> {
 ///     twice.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
 /// }
 /// assert_eq!(boolean(&twice, &twice, BooleanOp::Union).unwrap().shape.signed_area(), 0.0);
-/// let set = regularized_operand(&twice).unwrap();
+/// let set = regularized_operand(&twice).unwrap().shape;
 /// assert_eq!(boolean(&set, &set, BooleanOp::Union).unwrap().shape.signed_area(), 1.0);
 /// ```
-pub fn regularized_operand(set: &PolygonSet2) -> Result<PolygonSet2, simplify_2d::SimplifyError> {
-    simplify_2d::simplify(set, simplify_2d::FillRule::Positive).map(|s| s.shape)
+pub fn regularized_operand(
+    set: &PolygonSet2,
+) -> Result<simplify_2d::Simplified, simplify_2d::SimplifyError> {
+    simplify_2d::simplify(set, simplify_2d::FillRule::Positive)
 }
 
 /// The algorithm of a 2D Boolean.

@@ -200,7 +200,9 @@ pub struct Boolean2Report {
     pub topologically_valid: bool,
     /// The violated constraint, if any.
     pub topology_error: Option<String>,
-    /// The error bound of section 8.4.
+    /// The error bound of section 8.4 (the command line adds the bound of
+    /// the sweep that made operands read by role sets, and smoothing's
+    /// distortion bound).
     pub epsilon: f64,
     /// Through simplification: the largest adjustment count (section 8.4).
     #[serde(skip_serializing_if = "Option::is_none")]

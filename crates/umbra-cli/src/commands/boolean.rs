@@ -164,20 +164,23 @@ impl BooleanArgs {
                 // Operands read by role are made sets first (an invalid
                 // file's overlapping parts or stray holes would otherwise
                 // be counted twice or inside out: `regularized_operand`).
-                let (a, b) = if keep {
-                    (a, b)
+                // Their sweeps' error bound adds to the Boolean's.
+                let (a, b, moved) = if keep {
+                    (a, b, 0.0)
                 } else {
                     let set = |s: &PolygonSet2, file: &Path| {
                         regularized_operand(s).map_err(|e| errors::simplify(e, &[file]))
                     };
-                    (set(&a, a_path)?, set(&b, b_path)?)
+                    let (a, b) = (set(&a, a_path)?, set(&b, b_path)?);
+                    let moved = a.epsilon.max(b.epsilon);
+                    (a.shape, b.shape, moved)
                 };
                 let result = boolean(&a, &b, op);
                 let total = millis_since(start);
                 let out = result.map_err(|e| errors::boolean2(e, files))?;
                 let encoded =
                     encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
-                let report = Boolean2Report::basic(
+                let mut report = Boolean2Report::basic(
                     op,
                     keep,
                     inputs,
@@ -185,6 +188,7 @@ impl BooleanArgs {
                     &out,
                     total,
                 );
+                report.epsilon += moved;
                 self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
             }
             Via::Simplify => {
