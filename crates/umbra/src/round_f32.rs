@@ -227,24 +227,55 @@ fn f32_around(x: f64) -> [f64; 2] {
     }
 }
 
+/// Grows box `b` to hold point `p`.
+fn include(b: &mut [Point3; 2], p: &Point3) {
+    for k in 0..3 {
+        b[0][k] = b[0][k].min(p[k]);
+        b[1][k] = b[1][k].max(p[k]);
+    }
+}
+
+/// The empty box (every [`include`] makes it the point's).
+const EMPTY_BOX: [Point3; 2] = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+
 /// The box of the corners of `t` in `m`, vertex `v` taken anywhere in
 /// `cell`.
 fn box_with_cell(m: &TriangleMesh, t: [u32; 3], v: u32, cell: &[Point3; 2]) -> [Point3; 2] {
-    let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+    let mut b = EMPTY_BOX;
     for w in t {
-        let ps = if w == v {
-            [cell[0], cell[1]]
+        if w == v {
+            include(&mut b, &cell[0]);
+            include(&mut b, &cell[1]);
         } else {
-            [m.vertices[w as usize]; 2]
-        };
-        for p in ps {
-            for k in 0..3 {
-                b[0][k] = b[0][k].min(p[k]);
-                b[1][k] = b[1][k].max(p[k]);
-            }
+            include(&mut b, &m.vertices[w as usize]);
         }
     }
     b
+}
+
+/// The facets `f` of `m` with `keep(f)` as a mesh of their own vertices
+/// (numbered in order of first use): the mesh, the index in `m` of each of
+/// its vertices, and the index in it of each vertex of `m` (`u32::MAX` for
+/// a vertex no kept facet uses).
+fn sub_mesh(m: &TriangleMesh, keep: impl Fn(usize) -> bool) -> (TriangleMesh, Vec<u32>, Vec<u32>) {
+    let mut index = vec![u32::MAX; m.vertices.len()];
+    let mut global = Vec::new();
+    let mut sub = TriangleMesh::default();
+    for (f, t) in m.triangles.iter().enumerate() {
+        if !keep(f) {
+            continue;
+        }
+        sub.triangles.push(t.map(|w| {
+            let at = &mut index[w as usize];
+            if *at == u32::MAX {
+                *at = global.len() as u32;
+                global.push(w);
+                sub.vertices.push(m.vertices[w as usize]);
+            }
+            *at
+        }));
+    }
+    (sub, global, index)
 }
 
 /// The facets of `m` that [`self_intersecting_triangle_pairs_near`] looks
@@ -266,41 +297,20 @@ fn corner_neighbourhood(
         .map(|&t| box_with_cell(m, t, v, &cell))
         .collect();
     let union = |pick: &dyn Fn(usize) -> bool| {
-        let mut u = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
-        for b in boxes
-            .iter()
-            .enumerate()
-            .filter(|&(f, _)| pick(f))
-            .map(|(_, b)| b)
-        {
-            for k in 0..3 {
-                u[0][k] = u[0][k].min(b[0][k]);
-                u[1][k] = u[1][k].max(b[1][k]);
-            }
+        let mut u = EMPTY_BOX;
+        for (_, b) in boxes.iter().enumerate().filter(|&(f, _)| pick(f)) {
+            include(&mut u, &b[0]);
+            include(&mut u, &b[1]);
         }
         u
     };
     let star_box = union(&|f| m.triangles[f].contains(&v));
     let first: Vec<bool> = boxes.iter().map(|b| overlap(b, &star_box)).collect();
     let first_box = union(&|f| first[f]);
-    let mut index = vec![u32::MAX; m.vertices.len()];
-    let mut near = TriangleMesh::default();
-    let mut around = Vec::new();
-    for (t, b) in m.triangles.iter().zip(&boxes) {
-        if !overlap(b, &first_box) {
-            continue;
-        }
-        near.triangles.push(t.map(|w| {
-            let at = &mut index[w as usize];
-            if *at == u32::MAX {
-                *at = near.vertices.len() as u32;
-                near.vertices.push(m.vertices[w as usize]);
-            }
-            *at
-        }));
-        around.push(t.contains(&v));
-    }
-    (near, index[v as usize], around)
+    let (near, _, index) = sub_mesh(m, |f| overlap(&boxes[f], &first_box));
+    let at = index[v as usize];
+    let around = near.triangles.iter().map(|t| t.contains(&at)).collect();
+    (near, at, around)
 }
 
 /// Rounds the vertices of the facets in `found` to other corners of their
@@ -334,23 +344,12 @@ fn choose_corners(
     }
     let region = grow_by_vertex(mesh, &grow_by_vertex(mesh, &seed));
     // The region as a mesh of its own vertices.
-    let mut local = std::collections::HashMap::new();
-    let mut global = Vec::new();
-    let mut sub = TriangleMesh::default();
-    for (t, _) in mesh.triangles.iter().zip(&region).filter(|(_, &r)| r) {
-        sub.triangles.push(t.map(|v| {
-            *local.entry(v).or_insert_with(|| {
-                global.push(v);
-                sub.vertices.push(mesh.vertices[v as usize]);
-                global.len() as u32 - 1
-            })
-        }));
-    }
+    let (mut sub, global, local) = sub_mesh(mesh, |f| region[f]);
     let mut is_movable = vec![false; sub.vertices.len()];
     let mut movable: Vec<u32> = Vec::new();
     for (t, _) in mesh.triangles.iter().zip(&seed).filter(|(_, &s)| s) {
         for v in t {
-            let (g, l) = (*v as usize, local[v]);
+            let (g, l) = (*v as usize, local[*v as usize]);
             if exact[g] != mesh.vertices[g] && !is_movable[l as usize] {
                 is_movable[l as usize] = true;
                 movable.push(l);
@@ -549,6 +548,22 @@ mod tests {
     use proptest::strategy::Strategy;
     use topology::check_mesh;
 
+    /// PyVista's mesh `name` and a copy turned by 1, 2 and 3 degrees about
+    /// x, y and z and shifted by (0.37, 0.21, 0.13).
+    fn with_turned_copy(name: &str) -> (PolygonMesh, PolygonMesh) {
+        let path = test_support::data_path(&format!("pyvista/{name}.ply"));
+        let a = crate::read_mesh(&path, crate::MeshReadOptions::default(), true).unwrap();
+        let turn = glam::DMat4::from_translation(glam::DVec3::new(0.37, 0.21, 0.13))
+            * glam::DMat4::from_euler(
+                glam::EulerRot::XYZ,
+                1f64.to_radians(),
+                2f64.to_radians(),
+                3f64.to_radians(),
+            );
+        let b = crate::transform_mesh(&a, &turn).unwrap();
+        (a, b)
+    }
+
     /// PyVista's nut and sphere (real meshes of `f32` coordinates) minus
     /// and united with copies of themselves turned a few degrees and
     /// shifted, in either variant: rounding the `f64` results to `f32`
@@ -560,16 +575,7 @@ mod tests {
     fn rounding_boolean_results_adds_no_intersecting_pair() {
         let mut plain_pairs = 0;
         for name in ["nut", "sphere"] {
-            let path = test_support::data_path(&format!("pyvista/{name}.ply"));
-            let a = crate::read_mesh(&path, crate::MeshReadOptions::default(), true).unwrap();
-            let turn = glam::DMat4::from_translation(glam::DVec3::new(0.37, 0.21, 0.13))
-                * glam::DMat4::from_euler(
-                    glam::EulerRot::XYZ,
-                    1f64.to_radians(),
-                    2f64.to_radians(),
-                    3f64.to_radians(),
-                );
-            let b = crate::transform_mesh(&a, &turn).unwrap();
+            let (a, b) = with_turned_copy(name);
             for op in [BooleanOp::Union, BooleanOp::Difference] {
                 for variant in [MeshVariant::TriangleMesh, MeshVariant::PolygonMesh] {
                     let d = boolean_solid(&a, &b, op, variant).unwrap().mesh;
@@ -621,16 +627,7 @@ mod tests {
     /// a facet of a pair and a spread of others.
     #[test]
     fn corner_neighbourhoods_count_the_pairs_of_the_whole_mesh() {
-        let path = test_support::data_path("pyvista/nut.ply");
-        let a = crate::read_mesh(&path, crate::MeshReadOptions::default(), true).unwrap();
-        let turn = glam::DMat4::from_translation(glam::DVec3::new(0.37, 0.21, 0.13))
-            * glam::DMat4::from_euler(
-                glam::EulerRot::XYZ,
-                1f64.to_radians(),
-                2f64.to_radians(),
-                3f64.to_radians(),
-            );
-        let b = crate::transform_mesh(&a, &turn).unwrap();
+        let (a, b) = with_turned_copy("nut");
         let d = boolean_solid(&a, &b, BooleanOp::Union, MeshVariant::TriangleMesh)
             .unwrap()
             .mesh;
