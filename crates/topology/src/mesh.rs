@@ -95,6 +95,122 @@ impl Facet {
         }
         loops
     }
+
+    /// [`Facet::loops`], with the choice made by geometry where the facet
+    /// passes a vertex more than once: arriving at such a vertex, a loop
+    /// leaves by the unused outgoing half-edge met first turning clockwise
+    /// from the edge it came by, in the facet's plane seen from the side
+    /// the facet faces (the plane of its Newell normal at `positions`).
+    /// That is how the boundary of a region on its left is traced, so two
+    /// parts of a facet touching at a vertex come out as two loops, not
+    /// as one loop through the vertex twice whose corners pair the wrong
+    /// edges (which a file format of one loop per face would then carry,
+    /// and which reads as a pinched surface). Without such a vertex, or
+    /// with an index out of range of `positions`, the loops of
+    /// [`Facet::loops`].
+    ///
+    /// ```
+    /// use topology::Facet;
+    /// // Two triangles of one facet touching at vertex 0, their
+    /// // half-edges stored so that the plain tracing passes 0 twice.
+    /// let p = [[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [1.0, 1.0, 0.0], [-1.0, 0.0, 0.0], [-1.0, -1.0, 0.0]];
+    /// let f = Facet::from_loop(&[1, 2, 0, 3, 4, 0]);
+    /// assert_eq!(f.loops(), vec![vec![1, 2, 0, 3, 4, 0]]);
+    /// assert_eq!(f.loops_in_plane(&p), vec![vec![1, 2, 0], vec![0, 3, 4]]);
+    /// ```
+    pub fn loops_in_plane(&self, positions: &[Point3]) -> Vec<Vec<u32>> {
+        let n = positions.len() as u32;
+        let mut outgoing: HashMap<u32, Vec<usize>> = HashMap::new();
+        for (i, h) in self.half_edges.iter().enumerate().rev() {
+            outgoing.entry(h.start).or_default().push(i);
+        }
+        let in_range = self.half_edges.iter().all(|h| h.start < n && h.end < n);
+        if !in_range || outgoing.values().all(|l| l.len() == 1) {
+            return self.loops();
+        }
+        let Some((u, v)) = self.plane_axes(positions) else {
+            return self.loops();
+        };
+        let flat = |i: u32| {
+            let p = positions[i as usize];
+            [p[u], p[v]]
+        };
+        // The clockwise angle from direction `r` to direction `d`, in
+        // (0, 2 pi]: the turn of `d` past `r`.
+        let clockwise = |r: [f64; 2], d: [f64; 2]| {
+            let cross = r[0] * d[1] - r[1] * d[0];
+            let dot = r[0] * d[0] + r[1] * d[1];
+            let a = (-cross).atan2(dot);
+            if a <= 0.0 {
+                a + std::f64::consts::TAU
+            } else {
+                a
+            }
+        };
+        let mut used = vec![false; self.half_edges.len()];
+        let mut loops = Vec::new();
+        for first in 0..self.half_edges.len() {
+            if used[first] {
+                continue;
+            }
+            used[first] = true;
+            let start = self.half_edges[first].start;
+            let mut ring = vec![start];
+            let mut prev = start;
+            let mut at = self.half_edges[first].end;
+            loop {
+                let list = outgoing.get(&at).map(Vec::as_slice).unwrap_or(&[]);
+                // Back at the start, closing the loop (by `first`) is one
+                // of the choices.
+                let closing = (at == start).then_some(first);
+                let here = flat(at);
+                let back = flat(prev);
+                let r = [back[0] - here[0], back[1] - here[1]];
+                let turn = |k: usize| {
+                    let e = flat(self.half_edges[k].end);
+                    clockwise(r, [e[0] - here[0], e[1] - here[1]])
+                };
+                let next = list
+                    .iter()
+                    .copied()
+                    .filter(|&i| !used[i])
+                    .chain(closing)
+                    .min_by(|&i, &j| turn(i).total_cmp(&turn(j)).then(i.cmp(&j)));
+                match next {
+                    Some(i) if Some(i) != closing => {
+                        used[i] = true;
+                        ring.push(at);
+                        prev = at;
+                        at = self.half_edges[i].end;
+                    }
+                    _ => break,
+                }
+            }
+            loops.push(ring);
+        }
+        loops
+    }
+
+    /// The two coordinate axes of the projection that sees the facet from
+    /// the side it faces: the plane orthogonal to the largest component of
+    /// its Newell normal, ordered so that the loops keep their turning
+    /// sense; `None` for a facet with a zero normal.
+    fn plane_axes(&self, positions: &[Point3]) -> Option<(usize, usize)> {
+        let mut normal = [0.0f64; 3];
+        for h in &self.half_edges {
+            let (a, b) = (positions[h.start as usize], positions[h.end as usize]);
+            for (k, n) in normal.iter_mut().enumerate() {
+                let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+                *n += (a[i] - b[i]) * (a[j] + b[j]);
+            }
+        }
+        let k = (0..3).max_by(|&i, &j| normal[i].abs().total_cmp(&normal[j].abs()))?;
+        if normal[k] == 0.0 || normal[k].is_nan() {
+            return None;
+        }
+        let (i, j) = ((k + 1) % 3, (k + 2) % 3);
+        Some(if normal[k] > 0.0 { (i, j) } else { (j, i) })
+    }
 }
 
 /// A polyhedral shape as vertices and facets (section 4.2). Non-manifold
@@ -288,5 +404,86 @@ mod tests {
         let loops = f.loops();
         assert_eq!(loops.len(), 2);
         assert_eq!(loops[0], vec![0, 1, 2, 3]);
+    }
+
+    proptest::proptest! {
+        /// Triangles of one facet around a shared centre vertex, each
+        /// anticlockwise in its plane, in a plane of any orientation and
+        /// with the half-edges stored in any order: the geometric tracing
+        /// gives back exactly the triangles (as rotations of their loops),
+        /// where the plain tracing may run through the centre twice.
+        #[test]
+        fn touching_triangles_come_back_as_their_loops(
+            k in 2usize..6,
+            axis in proptest::array::uniform3(-1.0f64..1.0),
+            angle in 0.0f64..std::f64::consts::TAU,
+            flip in proptest::bool::ANY,
+            order in proptest::collection::vec(0u32..1000, 18),
+        ) {
+            proptest::prop_assume!(axis.iter().map(|a| a * a).sum::<f64>() > 1e-3);
+            let n = axis.iter().map(|a| a * a).sum::<f64>().sqrt();
+            let [x, y, z] = axis.map(|a| a / n);
+            let (sn, c) = angle.sin_cos();
+            let t = 1.0 - c;
+            let r = [
+                [t * x * x + c, t * x * y - sn * z, t * x * z + sn * y],
+                [t * x * y + sn * z, t * y * y + c, t * y * z - sn * x],
+                [t * x * z - sn * y, t * y * z + sn * x, t * z * z + c],
+            ];
+            let place = |u: f64, v: f64| {
+                let v = if flip { -v } else { v };
+                [0, 1, 2].map(|i| r[i][0] * u + r[i][1] * v)
+            };
+            // Triangle j spans the angles [2 pi j / k, 2 pi (j + 0.6) / k].
+            let mut p = vec![place(0.0, 0.0)];
+            let mut tris = Vec::new();
+            for j in 0..k {
+                let a0 = std::f64::consts::TAU * j as f64 / k as f64;
+                let a1 = std::f64::consts::TAU * (j as f64 + 0.6) / k as f64;
+                let first = p.len() as u32;
+                p.push(place(a0.cos(), a0.sin()));
+                p.push(place(a1.cos(), a1.sin()));
+                // Anticlockwise in (u, v); clockwise when the plane is
+                // flipped, so reverse it there to keep one facet's sense.
+                tris.push(if flip { [0, first + 1, first] } else { [0, first, first + 1] });
+            }
+            let mut half_edges: Vec<HalfEdge> = tris
+                .iter()
+                .flat_map(|t| (0..3).map(move |i| HalfEdge { start: t[i], end: t[(i + 1) % 3] }))
+                .collect();
+            let mut keyed: Vec<(u32, HalfEdge)> =
+                half_edges.iter().zip(&order).map(|(h, &o)| (o, *h)).collect();
+            keyed.sort_by_key(|e| e.0);
+            half_edges = keyed.into_iter().map(|e| e.1).collect();
+            let f = Facet { half_edges };
+            let canon = |l: &[u32]| {
+                let m = (0..l.len()).min_by_key(|&i| l[i]).unwrap_or(0);
+                let mut r = l.to_vec();
+                r.rotate_left(m);
+                r
+            };
+            let mut got: Vec<Vec<u32>> = f.loops_in_plane(&p).iter().map(|l| canon(l)).collect();
+            got.sort();
+            let mut want: Vec<Vec<u32>> = tris.iter().map(|t| canon(t)).collect();
+            want.sort();
+            proptest::prop_assert_eq!(got, want);
+        }
+    }
+
+    #[test]
+    fn loops_in_plane_without_a_repeated_vertex_are_the_plain_loops() {
+        let p = [
+            [0.0, 0.0, 0.0],
+            [4.0, 0.0, 0.0],
+            [4.0, 4.0, 0.0],
+            [0.0, 4.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [2.0, 2.0, 0.0],
+        ];
+        let f = Facet::from_loops(&[vec![0, 1, 2, 3], vec![4, 5, 6]]);
+        assert_eq!(f.loops_in_plane(&p), f.loops());
+        // An index beyond the positions: the plain loops, no panic.
+        assert_eq!(f.loops_in_plane(&p[..3]), f.loops());
     }
 }

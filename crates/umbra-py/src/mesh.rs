@@ -175,7 +175,7 @@ impl Mesh {
         }
         let list = PyList::empty(py);
         for f in &self.mesh.facets {
-            let loops = f.loops();
+            let loops = f.loops_in_plane(&self.mesh.vertices);
             if loops.len() == 1 {
                 list.append(index_vector(py, &loops[0]))?;
             } else {

@@ -229,7 +229,7 @@ impl Work {
                 half_edges: renamed,
             };
             if changed {
-                facets.push(Facet::from_loops(&facet.loops()));
+                facets.push(Facet::from_loops(&facet.loops_in_plane(&vertices)));
             } else {
                 facets.push(facet);
             }

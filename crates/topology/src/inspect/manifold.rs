@@ -66,7 +66,7 @@ impl PolygonMesh {
             edges,
             open_edges,
             non_manifold_edges,
-            non_manifold_vertices: non_manifold_vertices(self),
+            non_manifold_vertices: non_manifold_vertices(self, &self.vertices),
         })
     }
 }
@@ -75,6 +75,107 @@ impl TriangleMesh {
     /// [`PolygonMesh::manifold_report`] of the same shape.
     pub fn manifold_report(&self) -> Result<ManifoldReport, TopologyError> {
         self.to_polygon_mesh().manifold_report()
+    }
+
+    /// [`PolygonMesh::manifold_report_near`] of the same shape (triangle
+    /// `t` is facet `t`), without building its whole polygon mesh.
+    pub fn manifold_report_near(&self, focus: &[bool]) -> Option<ManifoldReport> {
+        let n = self.vertices.len() as u32;
+        if !self.triangles.iter().flatten().all(|&v| v < n) {
+            return None;
+        }
+        Some(report_near(
+            &self.vertices,
+            self.triangles.len(),
+            |t, out| out.extend(self.triangles[t]),
+            |t| crate::Facet::from_loop(&self.triangles[t]),
+            focus,
+        ))
+    }
+}
+
+impl PolygonMesh {
+    /// [`PolygonMesh::manifold_report`] restricted to the vertices of the
+    /// facets `f` with `focus[f]` (a focus shorter than the facet list
+    /// counts as `false` beyond its end): the edges with an end at such a
+    /// vertex, and those vertices. Every facet using such an edge or
+    /// vertex is looked at, so the counts are exactly the whole report's,
+    /// filtered, at a cost of one pass over the facets plus the focus's
+    /// neighbourhood. Closure is not checked (call
+    /// [`PolygonMesh::check_topology`] for that); `None` when an index is
+    /// out of range.
+    ///
+    /// ```
+    /// use topology::{Facet, PolygonMesh};
+    /// // Two tetrahedra sharing only vertex 0: a pinch.
+    /// let mut v = vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [0.0, 0.0, 1.0]];
+    /// v.extend([[-1.0, 0.0, 0.0], [0.0, -1.0, 0.0], [0.0, 0.0, -1.0]]);
+    /// let loops = [[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2], [0, 4, 5], [0, 6, 4], [4, 6, 5], [0, 5, 6]];
+    /// let m = PolygonMesh::new(v, loops.iter().map(|l| Facet::from_loop(l)).collect());
+    /// let far = m.manifold_report_near(&[false, false, true]).unwrap();
+    /// assert!(far.non_manifold_vertices.is_empty());
+    /// let near = m.manifold_report_near(&[true]).unwrap();
+    /// assert_eq!(near.non_manifold_vertices, vec![0]);
+    /// assert_eq!(near.non_manifold_vertices, m.manifold_report().unwrap().non_manifold_vertices);
+    /// ```
+    pub fn manifold_report_near(&self, focus: &[bool]) -> Option<ManifoldReport> {
+        if !super::report::indices_in_range(self) {
+            return None;
+        }
+        Some(report_near(
+            &self.vertices,
+            self.facets.len(),
+            |f, out| out.extend(self.facets[f].half_edges.iter().map(|h| h.start)),
+            |f| self.facets[f].clone(),
+            focus,
+        ))
+    }
+}
+
+/// The report near a focus over `count` facets given by their corner
+/// indices (`corners`, every index in range of `positions`) and as facets.
+fn report_near(
+    positions: &[crate::Point3],
+    count: usize,
+    corners: impl Fn(usize, &mut Vec<u32>),
+    facet: impl Fn(usize) -> crate::Facet,
+    focus: &[bool],
+) -> ManifoldReport {
+    let mut near = vec![false; positions.len()];
+    let mut buf = Vec::new();
+    for f in (0..count.min(focus.len())).filter(|&f| focus[f]) {
+        buf.clear();
+        corners(f, &mut buf);
+        for &v in &buf {
+            near[v as usize] = true;
+        }
+    }
+    // Every facet with a corner at a focus vertex: all the half-edges of
+    // the edges counted and all the corners of the vertices counted.
+    let mut star = PolygonMesh::default();
+    for f in 0..count {
+        buf.clear();
+        corners(f, &mut buf);
+        if buf.iter().any(|&v| near[v as usize]) {
+            star.facets.push(facet(f));
+        }
+    }
+    let touches = |e: &EdgeUse| near[e.a as usize] || near[e.b as usize];
+    let (_, open, non_manifold) = edge_census(&star);
+    let mut edges = std::collections::HashSet::new();
+    for h in star.facets.iter().flat_map(|f| &f.half_edges) {
+        if near[h.start as usize] || near[h.end as usize] {
+            edges.insert((h.start.min(h.end), h.start.max(h.end)));
+        }
+    }
+    ManifoldReport {
+        edges: edges.len(),
+        open_edges: open.into_iter().filter(touches).collect(),
+        non_manifold_edges: non_manifold.into_iter().filter(touches).collect(),
+        non_manifold_vertices: non_manifold_vertices(&star, positions)
+            .into_iter()
+            .filter(|&v| near[v as usize])
+            .collect(),
     }
 }
 
@@ -116,14 +217,16 @@ pub(super) fn edge_census(mesh: &PolygonMesh) -> (usize, Vec<EdgeUse>, Vec<EdgeU
 
 /// Vertices around which the facet corners form more than one fan, sorted:
 /// the corners at `v` join the edge they come in by to the edge they leave
-/// by; on a 2-manifold these links make one cycle per vertex. Requires a
-/// topologically valid mesh.
-pub(super) fn non_manifold_vertices(mesh: &PolygonMesh) -> Vec<u32> {
+/// by; on a 2-manifold these links make one cycle per vertex. Where a
+/// facet passes a vertex more than once, its corners there pair edges by
+/// the facet's geometry at `positions` ([`crate::Facet::loops_in_plane`]).
+/// Requires a topologically valid mesh.
+pub(super) fn non_manifold_vertices(mesh: &PolygonMesh, positions: &[crate::Point3]) -> Vec<u32> {
     // For every vertex, its corners as (incoming neighbour, outgoing
     // neighbour).
     let mut corners: Vec<(u32, u32, u32)> = Vec::new();
     for f in &mesh.facets {
-        for l in f.loops() {
+        for l in f.loops_in_plane(positions) {
             let k = l.len();
             for i in 0..k {
                 corners.push((l[i], l[(i + k - 1) % k], l[(i + 1) % k]));
@@ -236,5 +339,49 @@ mod tests {
             loops.iter().map(|l| [l[0], l[1], l[2]]).collect(),
         );
         assert_eq!(tri.manifold_report(), Ok(r));
+    }
+
+    proptest::proptest! {
+        /// The report near a focus is the whole report filtered to the
+        /// focus facets' vertices, on random triangle soups (open,
+        /// non-manifold and repeated triangles included) and for the
+        /// polygon and triangle forms alike.
+        #[test]
+        fn report_near_is_the_whole_report_filtered(
+            tris in proptest::collection::vec([0u32..9, 0u32..9, 0u32..9], 1..24),
+            mask in proptest::collection::vec(proptest::bool::ANY, 0..30),
+        ) {
+            let tris: Vec<[u32; 3]> =
+                tris.into_iter().filter(|t| t[0] != t[1] && t[1] != t[2] && t[0] != t[2]).collect();
+            let v = vec![[0.0; 3]; 9];
+            let loops: Vec<Vec<u32>> = tris.iter().map(|t| t.to_vec()).collect();
+            let m = mesh(v.clone(), &loops);
+            let (_, open_all, nm_all) = edge_census(&m);
+            let nmv_all = non_manifold_vertices(&m, &m.vertices);
+            let mut near = [false; 9];
+            for (t, _) in tris.iter().zip(&mask).filter(|(_, &k)| k) {
+                for &c in t {
+                    near[c as usize] = true;
+                }
+            }
+            let touches = |e: &&EdgeUse| near[e.a as usize] || near[e.b as usize];
+            let r = m.manifold_report_near(&mask).unwrap();
+            let want_open: Vec<EdgeUse> = open_all.iter().filter(touches).copied().collect();
+            let want_nm: Vec<EdgeUse> = nm_all.iter().filter(touches).copied().collect();
+            let want_nmv: Vec<u32> = nmv_all.into_iter().filter(|&x| near[x as usize]).collect();
+            proptest::prop_assert_eq!(&r.open_edges, &want_open);
+            proptest::prop_assert_eq!(&r.non_manifold_edges, &want_nm);
+            proptest::prop_assert_eq!(&r.non_manifold_vertices, &want_nmv);
+            let tri = TriangleMesh::new(v, tris.clone());
+            proptest::prop_assert_eq!(tri.manifold_report_near(&mask), Some(r));
+        }
+    }
+
+    #[test]
+    fn report_near_refuses_dangling_indices() {
+        let m = mesh(vec![[0.0; 3]; 3], &[vec![0, 1, 5]]);
+        assert_eq!(m.manifold_report_near(&[true]), None);
+        let t = TriangleMesh::new(vec![[0.0; 3]; 3], vec![[0, 1, 5]]);
+        assert_eq!(t.manifold_report_near(&[true]), None);
     }
 }

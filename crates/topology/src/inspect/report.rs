@@ -95,7 +95,7 @@ pub fn check_mesh(mesh: &PolygonMesh) -> MeshCheckReport {
         let bad_edges = open.len() + non_manifold.len();
         r.edges = edges;
         if r.topologically_valid {
-            let bad_vertices = non_manifold_vertices(mesh).len();
+            let bad_vertices = non_manifold_vertices(mesh, &mesh.vertices).len();
             r.non_manifold_edges = Some(bad_edges);
             r.non_manifold_vertices = Some(bad_vertices);
             r.two_manifold = Some(bad_edges == 0 && bad_vertices == 0);

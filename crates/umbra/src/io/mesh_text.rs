@@ -384,7 +384,7 @@ pub(crate) fn faces(mesh: &PolygonMesh) -> Vec<Vec<u32>> {
     let mut tris = Vec::new();
     let mut hes = Vec::new();
     for f in &mesh.facets {
-        let loops = f.loops();
+        let loops = f.loops_in_plane(&mesh.vertices);
         if loops.len() == 1 {
             out.push(loops.into_iter().next().unwrap_or_default());
         } else if loops.len() > 1 {

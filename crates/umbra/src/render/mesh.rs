@@ -459,7 +459,7 @@ pub fn render_mesh_svg(mesh: &PolygonMesh, opts: &RenderOptions) -> Result<Strin
     let mut svg = Svg::new(scene.width, scene.height, BACKGROUND);
     for (_, i) in order {
         let loops: Vec<Vec<[f64; 2]>> = mesh.facets[i]
-            .loops()
+            .loops_in_plane(&mesh.vertices)
             .iter()
             .map(|l| l.iter().map(|&v| scene.at(v)).collect())
             .collect();
