@@ -4,7 +4,8 @@
 //! Boolean alone (`boolean`), smoothing its whole result at the default
 //! tolerance, 1e-9 of the size (`smooth`), the Boolean with the operands'
 //! contacts at that tolerance (`boolean_contacts`) and smoothing only near
-//! them (`smooth_near`, what the command line runs), in both variants.
+//! them (`smooth_near`), and the same with the guard the command line
+//! turns on (`smooth_near_guarded`, what it runs), in both variants.
 //! The goal (issue: smoothing adds at most 25% to the Boolean's time at
 //! 1M triangles) is the ratio of `boolean_contacts + smooth_near` minus
 //! `boolean` to `boolean` at the same size; the figures are in `docs/performance.md`. The 2D group smooths the basic
@@ -70,6 +71,16 @@ fn spheres(c: &mut Criterion) {
                 });
             },
         );
+        let guarded = opts.guarded();
+        group.bench_with_input(
+            BenchmarkId::new("triangles/smooth_near_guarded", size),
+            &(),
+            |bench, _| {
+                bench.iter(|| {
+                    black_box(smooth_triangles_near(&out, &guarded, &contacts.boxes).unwrap())
+                });
+            },
+        );
         let (qa, qb) = sphere_pair_quads(size);
         let out = boolean_mesh(&qa, &qb, BooleanOp::Difference).unwrap().mesh;
         group.bench_with_input(
@@ -98,6 +109,14 @@ fn spheres(c: &mut Criterion) {
             &(),
             |bench, _| {
                 bench.iter(|| black_box(smooth_mesh_near(&out, &opts, &contacts.boxes).unwrap()));
+            },
+        );
+        group.bench_with_input(
+            BenchmarkId::new("polygons/smooth_near_guarded", size),
+            &(),
+            |bench, _| {
+                bench
+                    .iter(|| black_box(smooth_mesh_near(&out, &guarded, &contacts.boxes).unwrap()));
             },
         );
     }

@@ -36,4 +36,4 @@ pub use mesh::{
 };
 pub use options::SmoothOptions;
 pub use planar::{sanity_check_polygon_set, smooth_polygon_set, PlanarDefect, MAX_PLANAR_PASSES};
-pub use report::{SmoothCounts, SmoothReport, Smoothed};
+pub use report::{MeshDefects, Reverted, SmoothCounts, SmoothReport, Smoothed};

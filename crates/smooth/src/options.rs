@@ -17,6 +17,20 @@ pub struct SmoothOptions {
     /// [`crate::SmoothReport::budget_hit`]. `None` derives it from the
     /// input size: `1000 * (vertices + half-edges) + 1_000_000`.
     pub budget: Option<u64>,
+    /// Keep the input where smoothing would make a 3D mesh worse: after
+    /// smoothing, the facets it changed are checked for intersecting
+    /// facet pairs (the exact test of `topology`), non-manifold edges and
+    /// vertices, and open edges; if the result has more pairs than the
+    /// input at the same place, or as many and more of the others
+    /// ([`crate::MeshDefects::worse_than`]), the input is returned unchanged and
+    /// [`crate::SmoothReport::reverted`] says what smoothing would have
+    /// left. Smoothing is not guaranteed to keep a clean result clean
+    /// where surfaces lie within the tolerance of each other at an angle
+    /// (near-coincident rotated copies); the guard keeps such a result as
+    /// the Boolean made it. Off by default: the algorithm's postconditions
+    /// ([`crate::sanity_check_mesh`]) hold for an unguarded result, not for
+    /// an input handed back. 2D smoothing ignores it.
+    pub guard: bool,
 }
 
 impl SmoothOptions {
@@ -25,6 +39,20 @@ impl SmoothOptions {
         SmoothOptions {
             tolerance,
             budget: None,
+            guard: false,
+        }
+    }
+
+    /// The same options with [`SmoothOptions::guard`] on.
+    ///
+    /// ```
+    /// let o = smooth::SmoothOptions::new(1e-9).guarded();
+    /// assert!(o.guard && o.tolerance == 1e-9);
+    /// ```
+    pub fn guarded(self) -> Self {
+        SmoothOptions {
+            guard: true,
+            ..self
         }
     }
 

@@ -74,6 +74,106 @@ pub struct SmoothReport {
     /// sweep's epsilon, when the sweep ran). A front end adds the input's
     /// own epsilon, e.g. the Boolean's, as `Boolean2Report::smoothed` does.
     pub epsilon: f64,
+    /// Set when [`crate::SmoothOptions::guard`] handed the input back
+    /// because smoothing would have left more defects than the input had
+    /// where it changed it; the counts above are then zero (nothing
+    /// changed) and this says what was undone.
+    pub reverted: Option<Reverted>,
+}
+
+/// Defects of a mesh near the facets smoothing changed (or would have):
+/// the counts the guard compares.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize)]
+pub struct MeshDefects {
+    /// Facet pairs that intersect other than in shared vertices and
+    /// edges (the exact test of `topology::self_intersecting_pairs_near`).
+    pub intersecting_pairs: usize,
+    /// Edges used both ways but not exactly once each way.
+    pub non_manifold_edges: usize,
+    /// Vertices around which the facet corners form more than one fan.
+    pub non_manifold_vertices: usize,
+    /// Edges used in one direction only.
+    pub open_edges: usize,
+}
+
+impl MeshDefects {
+    /// Whether any count is above zero.
+    pub fn any(&self) -> bool {
+        *self != MeshDefects::default()
+    }
+
+    /// The non-manifold and open edges and non-manifold vertices
+    /// together: places where the surface is not a closed 2-manifold.
+    pub fn manifold_defects(&self) -> usize {
+        self.non_manifold_edges + self.non_manifold_vertices + self.open_edges
+    }
+
+    /// The guard's rule: more intersecting facet pairs, or as many and
+    /// more [`MeshDefects::manifold_defects`]. Pairs come first: they make
+    /// the solid geometrically invalid (its surface passes through
+    /// itself), while a pinch or an edge shared by four facets is a valid
+    /// topology that smoothing legitimately makes where two parts lie
+    /// within the tolerance of each other (and the Boolean makes where
+    /// solids touch). So smoothing that removes rounding's intersecting
+    /// pairs at the price of a pinch is kept.
+    ///
+    /// ```
+    /// use smooth::MeshDefects;
+    /// let clean = MeshDefects::default();
+    /// let pairs = MeshDefects { intersecting_pairs: 3, ..clean };
+    /// let pinch = MeshDefects { non_manifold_vertices: 1, ..clean };
+    /// assert!(pairs.worse_than(&clean) && !clean.worse_than(&pairs));
+    /// assert!(pinch.worse_than(&clean));
+    /// assert!(pairs.worse_than(&pinch) && !pinch.worse_than(&pairs));
+    /// assert!(!pairs.worse_than(&pairs));
+    /// ```
+    pub fn worse_than(&self, other: &MeshDefects) -> bool {
+        (self.intersecting_pairs, self.manifold_defects())
+            > (other.intersecting_pairs, other.manifold_defects())
+    }
+}
+
+impl std::fmt::Display for MeshDefects {
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "{} intersecting facet pairs, {} non-manifold edges, {} non-manifold vertices, {} open edges",
+            self.intersecting_pairs, self.non_manifold_edges, self.non_manifold_vertices, self.open_edges
+        )
+    }
+}
+
+impl std::fmt::Display for Reverted {
+    /// One sentence for front ends' messages.
+    ///
+    /// ```
+    /// use smooth::{MeshDefects, Reverted};
+    /// let r = Reverted {
+    ///     smoothed: MeshDefects { intersecting_pairs: 15, ..MeshDefects::default() },
+    ///     ..Reverted::default()
+    /// };
+    /// assert!(r.to_string().starts_with("smoothing undone: its 0 adjustments would have left 15 intersecting facet pairs"));
+    /// ```
+    fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        write!(
+            f,
+            "smoothing undone: its {} adjustments would have left {} where the unsmoothed mesh has {}; the mesh is kept as it was",
+            self.counts.adjustments(),
+            self.smoothed,
+            self.input
+        )
+    }
+}
+
+/// What the guard undid ([`SmoothReport::reverted`]).
+#[derive(Clone, Debug, Default, PartialEq, Serialize)]
+pub struct Reverted {
+    /// The defects smoothing would have left near what it changed.
+    pub smoothed: MeshDefects,
+    /// The input's defects at the same place (kept).
+    pub input: MeshDefects,
+    /// The operations smoothing had made (undone).
+    pub counts: SmoothCounts,
 }
 
 /// A smoothed shape and its report.

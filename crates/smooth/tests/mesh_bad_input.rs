@@ -124,6 +124,7 @@ fn a_tiny_budget_stops_early_with_a_valid_shape_and_says_so() {
     let o = SmoothOptions {
         tolerance: 1e-6,
         budget: Some(2),
+        guard: false,
     };
     let out = smooth_mesh(&m, &o).unwrap();
     assert!(out.report.budget_hit);

@@ -120,6 +120,7 @@ fn a_budget_of_zero_is_reported_and_the_result_stays_valid() {
     let opts = SmoothOptions {
         tolerance: 1e-6,
         budget: Some(0),
+        guard: false,
     };
     let out = smooth_polygon_set(&s, &opts).unwrap();
     assert!(out.report.budget_hit);

@@ -10,9 +10,23 @@ use std::borrow::Cow;
 use umbra::{
     as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, default_mesh_tolerance,
     evaluate_csg, parse_csg, smooth_csg_result, smooth_solid, smooth_solid_near, turned_outward,
-    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SolidsError,
-    UmbraError,
+    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SmoothReport,
+    SolidsError, UmbraError,
 };
+
+/// A result and the report of its smoothing, if it was smoothed.
+type MaybeSmoothed = (PolygonMesh, Option<SmoothReport>);
+
+/// A `UserWarning` when the smoothing guard handed the mesh back as it
+/// was (`SmoothReport::reverted`), with the command line's sentence.
+fn warn_if_undone(py: Python<'_>, report: Option<&SmoothReport>) -> PyResult<()> {
+    if let Some(undone) = report.and_then(|r| r.reverted.as_ref()) {
+        let message = std::ffi::CString::new(undone.to_string()).unwrap_or_default();
+        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+        PyErr::warn(py, category.as_any(), &message, 1)?;
+    }
+    Ok(())
+}
 
 /// The operation named `op`: every name of the facade (`union`,
 /// `intersection`, `difference`, `xor`), with its message otherwise.
@@ -70,13 +84,13 @@ fn smoothed(
     mesh: &PolygonMesh,
     variant: MeshVariant,
     tolerance: f64,
-) -> Result<PolygonMesh, UmbraError> {
-    smooth_solid(mesh, variant, &SmoothOptions::new(tolerance))
-        .map(|out| out.shape)
-        .map_err(|source| UmbraError::Smooth {
+) -> Result<umbra::Smoothed<PolygonMesh>, UmbraError> {
+    smooth_solid(mesh, variant, &SmoothOptions::new(tolerance).guarded()).map_err(|source| {
+        UmbraError::Smooth {
             file: String::new(),
             source,
-        })
+        }
+    })
 }
 
 /// The 3D Boolean ``op`` ("union", "intersection" or "difference") of
@@ -116,7 +130,7 @@ pub fn boolean<'py>(
         Some(t) if t != 0.0 => {
             // As the command line does: the operands' contacts at the
             // tolerance, and smoothing only there (`smooth_solid_near`).
-            let opts = SmoothOptions::new(t);
+            let opts = SmoothOptions::new(t).guarded();
             opts.validate().map_err(|source| UmbraError::Smooth {
                 file: String::new(),
                 source,
@@ -129,15 +143,16 @@ pub fn boolean<'py>(
                     }
                 })?;
             smooth_solid_near(&raw.mesh, variant, &opts, &contacts)
-                .map(|out| out.shape)
+                .map(|out| (out.shape, Some(out.report)))
                 .map_err(|source| UmbraError::Smooth {
                     file: String::new(),
                     source,
                 })
         }
-        _ => solid(a, b, op, variant),
+        _ => solid(a, b, op, variant).map(|m| (m, None)),
     })?;
-    Ok((Mesh::wrap(py, out)?, turned))
+    warn_if_undone(py, out.1.as_ref())?;
+    Ok((Mesh::wrap(py, out.0)?, turned))
 }
 
 /// Smooths a mesh (Appendix A) at ``tolerance``, by default 1e-9 times
@@ -160,7 +175,8 @@ pub fn smooth<'py>(
         };
         smoothed(mesh, variant, tol)
     })?;
-    Mesh::wrap(py, out)
+    warn_if_undone(py, Some(&out.report))?;
+    Mesh::wrap(py, out.shape)
 }
 
 /// The union of every mesh of ``meshes`` in one call
@@ -238,7 +254,7 @@ pub fn csg<'py>(
         .map_err(|e| error(format!("tree: not JSON data: {e}")))?
         .extract()?;
     let smooth = smooth.filter(|&t| t != 0.0);
-    let out = run(py, || -> Result<PolygonMesh, String> {
+    let out = run(py, || -> Result<MaybeSmoothed, String> {
         let smooth_error = |source| {
             UmbraError::Smooth {
                 file: String::new(),
@@ -246,7 +262,7 @@ pub fn csg<'py>(
             }
             .to_string()
         };
-        let opts = smooth.map(SmoothOptions::new);
+        let opts = smooth.map(|t| SmoothOptions::new(t).guarded());
         if let Some(o) = &opts {
             o.validate().map_err(smooth_error)?;
         }
@@ -257,15 +273,16 @@ pub fn csg<'py>(
         };
         let result = evaluate_csg(&node, options).map_err(|e| e.to_string())?;
         let Some(opts) = opts else {
-            return Ok(result.mesh);
+            return Ok((result.mesh, None));
         };
         // As the command line does: near the gathered contacts when they
         // reach the tolerance, else the whole mesh.
         smooth_csg_result(&result, variant(triangulate), &opts)
-            .map(|(out, _)| out.shape)
+            .map(|(out, _)| (out.shape, Some(out.report)))
             .map_err(smooth_error)
     })?;
-    Mesh::wrap(py, out)
+    warn_if_undone(py, out.1.as_ref())?;
+    Mesh::wrap(py, out.0)
 }
 
 /// Panics inside an operation, for the test that no panic crosses into

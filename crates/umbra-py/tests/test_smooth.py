@@ -1,7 +1,8 @@
 """Smoothing from Python (Appendix A): the stacked cubes of figures
 5.1-5.2 become one closed box, the raw Boolean is kept when asked, a
 triangle mesh stays triangles, bad tolerances raise UmbraError, and
-operands are left untouched."""
+operands are left untouched; smoothing that would leave intersecting
+facet pairs the raw Boolean does not have is undone, with a warning."""
 
 import pickle
 
@@ -64,3 +65,22 @@ def test_smooth_function_merges_a_gap_and_keeps_triangles():
     smoothed = umbra.smooth(tri)
     assert isinstance(smoothed.faces, np.ndarray) and smoothed.faces.shape[1] == 3
     assert abs(smoothed.volume() - tri.volume()) < 1e-12
+
+
+@pytest.mark.parametrize(
+    "turn, triangulate",
+    [({"rotate": [0, 0, 7.5]}, False), ({"rotate": [90, 0, 0], "translate": [5e-8, 0, 0]}, True)],
+)
+def test_smoothing_that_would_leave_intersections_is_undone_with_a_warning(turn, triangulate):
+    # A 24-segment sphere minus its copy turned (and moved by 5e-8):
+    # smoothing at the default tolerance would leave more intersecting
+    # facet pairs or pinches than the raw result has, so it is undone,
+    # with a warning, and the raw result comes back.
+    copy = {"sphere": {"radius": 10, "segments": 24}}
+    copy.update(turn)
+    tree = {"op": "difference", "children": [{"sphere": {"radius": 10, "segments": 24}}, copy]}
+    raw = umbra.csg(tree, triangulate=triangulate)
+    with pytest.warns(UserWarning, match="smoothing undone"):
+        out = umbra.csg(tree, triangulate=triangulate, smooth=2e-8)
+    assert out == raw
+    assert out.check()["topologically_valid"]

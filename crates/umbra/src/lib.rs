@@ -132,7 +132,7 @@ pub use simplify_2d::{
 };
 pub use smooth::{
     smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, smooth_triangles_near,
-    SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed,
+    MeshDefects, Reverted, SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed,
 };
 pub use smoothing::{
     default_boolean_set_tolerance, default_mesh_tolerance, default_set_tolerance,

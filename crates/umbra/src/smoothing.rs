@@ -2,7 +2,13 @@
 //! tolerance rule front ends use when the user gives none, and smoothing
 //! of a 3D result in the variant it came from (a triangle-variant result
 //! stays a triangle mesh). Smoothing stays an explicit call in the library:
-//! no Boolean of this crate smooths on its own.
+//! no Boolean of this crate smooths on its own. The front ends (command
+//! line, Python) smooth 3D results with [`SmoothOptions::guarded`]: a
+//! result with more intersecting facet pairs than the mesh had where
+//! smoothing changed it, or as many and more non-manifold or open edges
+//! and non-manifold vertices, is dropped for the mesh as it was, and the
+//! report says so
+//! ([`smooth::SmoothReport::reverted`]).
 
 use crate::ops::{as_triangle_mesh, MeshVariant};
 use crate::CsgResult;
@@ -87,7 +93,8 @@ pub fn default_boolean_set_tolerance(
 /// it by internal edges (section 4.8) and smooths those triangles, so the
 /// triangles returned are the ones smoothing cleaned (a polygon mesh
 /// smoothed first and triangulated afterwards can fold where a smoothed
-/// facet is no longer flat).
+/// facet is no longer flat). Guarded when `options.guard` is set (see
+/// the module header).
 pub fn smooth_solid(
     mesh: &PolygonMesh,
     variant: MeshVariant,

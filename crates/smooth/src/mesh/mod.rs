@@ -22,6 +22,7 @@
 mod cancel;
 mod crack;
 mod geom;
+mod guard;
 mod index;
 mod plane;
 mod region;
@@ -75,6 +76,19 @@ pub fn smooth_mesh(
     mesh.check_topology()?;
     mesh.validate_coordinates()?;
     let (shape, report) = run(mesh, options)?;
+    if options.guard && report.counts != SmoothCounts::default() {
+        let all = |n: usize| vec![true; n];
+        if let Some(back) = guard::judge(
+            &report,
+            || guard::defects_near_mesh(&shape, &all(shape.facets.len())),
+            || guard::defects_near_mesh(mesh, &all(mesh.facets.len())),
+        ) {
+            return Ok(Smoothed {
+                shape: mesh.clone(),
+                report: back,
+            });
+        }
+    }
     #[cfg(debug_assertions)]
     sanity_check_mesh(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })
@@ -338,5 +352,6 @@ fn report(
         distortion_bound: bound,
         max_displacement: moved,
         epsilon: bound,
+        reverted: None,
     }
 }

@@ -21,6 +21,7 @@
 //! smoothing is redone, and after [`MAX_GROWTHS`] growths the whole mesh
 //! is smoothed.
 
+use crate::mesh::guard;
 use crate::mesh::index::{grown_box, BoxIndex, IdBox};
 use crate::mesh::run_with;
 use crate::mesh::triangles::triangulate_result;
@@ -592,6 +593,20 @@ pub fn smooth_mesh_near(
         half_edges: f.iter().map(|&(s, e)| rename(s, e)).collect(),
     }));
     let shape = PolygonMesh::new(vertices, facets);
+    if options.guard {
+        let kept = shape.facets.len() - region_out.len();
+        let changed: Vec<bool> = (0..shape.facets.len()).map(|f| f >= kept).collect();
+        if let Some(back) = guard::judge(
+            &report,
+            || guard::defects_near_mesh(&shape, &changed),
+            || guard::defects_near_mesh(mesh, &region),
+        ) {
+            return Ok(Smoothed {
+                shape: mesh.clone(),
+                report: back,
+            });
+        }
+    }
     #[cfg(debug_assertions)]
     crate::sanity_check_mesh(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })
@@ -647,6 +662,20 @@ pub fn smooth_triangles_near(
         .par_iter_mut()
         .for_each(|t| *t = t.map(|v| map[v as usize]));
     let shape = TriangleMesh::new(vertices, triangles);
+    if options.guard {
+        let kept = shape.triangles.len() - region_out.len();
+        let changed: Vec<bool> = (0..shape.triangles.len()).map(|t| t >= kept).collect();
+        if let Some(back) = guard::judge(
+            &report,
+            || guard::defects_near_triangles(&shape, &changed),
+            || guard::defects_near_triangles(mesh, &region),
+        ) {
+            return Ok(Smoothed {
+                shape: mesh.clone(),
+                report: back,
+            });
+        }
+    }
     #[cfg(debug_assertions)]
     crate::sanity_check_triangles(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })

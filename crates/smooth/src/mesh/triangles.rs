@@ -197,6 +197,19 @@ pub fn smooth_triangles(
     mesh.validate_coordinates()?;
     let (poly, mut report) = run(&mesh.to_polygon_mesh(), options)?;
     let shape = triangulate_result(&poly, &mut report, options.tolerance);
+    if options.guard && report.counts != crate::SmoothCounts::default() {
+        let all = |n: usize| vec![true; n];
+        if let Some(back) = crate::mesh::guard::judge(
+            &report,
+            || crate::mesh::guard::defects_near_triangles(&shape, &all(shape.triangles.len())),
+            || crate::mesh::guard::defects_near_triangles(mesh, &all(mesh.triangles.len())),
+        ) {
+            return Ok(Smoothed {
+                shape: mesh.clone(),
+                report: back,
+            });
+        }
+    }
     #[cfg(debug_assertions)]
     crate::sanity_check_triangles(&shape, options.tolerance)?;
     Ok(Smoothed { shape, report })

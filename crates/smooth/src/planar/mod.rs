@@ -177,6 +177,7 @@ fn smooth_in_range(
             distortion_bound,
             max_displacement,
             epsilon: distortion_bound,
+            reverted: None,
         },
     })
 }

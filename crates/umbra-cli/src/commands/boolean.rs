@@ -283,7 +283,7 @@ impl BooleanArgs {
         );
         let mesh = if tol > 0.0 {
             let start = Instant::now();
-            let opts = SmoothOptions::new(tol);
+            let opts = SmoothOptions::new(tol).guarded();
             let smoothed = smooth_solid_near(&out.mesh, variant, &opts, &contacts).map_err(
                 |source| UmbraError::Smooth {
                     file: String::new(),

@@ -94,7 +94,7 @@ pub fn smooth_result(
         umbra::MeshVariant::PolygonMesh
     };
     let start = std::time::Instant::now();
-    let options = umbra::SmoothOptions::new(tol);
+    let options = umbra::SmoothOptions::new(tol).guarded();
     let (smoothed, near) =
         umbra::smooth_csg_result(&result, variant, &options).map_err(|source| {
             umbra::UmbraError::Smooth {

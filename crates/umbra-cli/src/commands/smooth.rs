@@ -67,7 +67,7 @@ impl SmoothArgs {
             MeshVariant::PolygonMesh
         };
         let start = Instant::now();
-        let result = smooth_solid(&mesh, variant, &SmoothOptions::new(tol));
+        let result = smooth_solid(&mesh, variant, &SmoothOptions::new(tol).guarded());
         let total = millis_since(start);
         let smoothed = result.map_err(|source| smooth_error(&self.input, source))?;
         let out_file = self.out.output.display().to_string();
@@ -148,8 +148,12 @@ fn smooth_error(file: &Path, source: umbra::SmoothError) -> UmbraError {
     }
 }
 
-/// One clause for a summary line: tolerance, adjustments, bound.
+/// One clause for a summary line: tolerance, adjustments, bound; or, when
+/// the guard undid smoothing, what it would have left.
 pub fn summary(r: &SmoothReport) -> String {
+    if let Some(undone) = &r.reverted {
+        return format!("at tolerance {:e}, {undone}", r.tolerance);
+    }
     format!(
         "smoothed at tolerance {:e}: {} adjustments, distortion bound {:e}{}",
         r.tolerance,
