@@ -653,3 +653,31 @@ fn check_reports_validity_and_crossings() {
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("huge.wkt") && err.contains("exceeds"), "{err}");
 }
+
+/// The first lines of `umbra --help` name every extension the format
+/// dispatch accepts (`FileKind::ALL`, which `FileKind::from_path` reads
+/// by), 3D glTF and 3MF included.
+#[test]
+fn the_top_level_help_lists_every_supported_format() {
+    let o = umbra(["--help"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let help = String::from_utf8(o.stdout).unwrap();
+    let about = help.split("Usage:").next().unwrap();
+    // The words of the description, without the punctuation around them.
+    let words: Vec<&str> = about
+        .split_whitespace()
+        .map(|w| w.trim_matches(|c| "();,".contains(c)).trim_end_matches('.'))
+        .collect();
+    for kind in umbra::FileKind::ALL {
+        let ext = format!(".{}", kind.extension());
+        let path = PathBuf::from(format!("x{ext}"));
+        assert_eq!(umbra::FileKind::from_path(&path).unwrap(), kind);
+        assert!(words.contains(&ext.as_str()), "{ext} missing from: {about}");
+    }
+    assert!(
+        about.contains(
+            "2D: .wkt .geojson (.svg written only); 3D: .obj .off .stl .ply .3mf .glb .gltf."
+        ),
+        "{about}"
+    );
+}

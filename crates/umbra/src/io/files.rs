@@ -48,8 +48,10 @@ pub enum FileKind {
     Gltf,
 }
 
-const SUPPORTED: &str =
-    "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .3mf .glb .gltf (3D)";
+/// The list of supported extensions that errors end with.
+fn supported() -> String {
+    format!("supported: {}", FileKind::supported_extensions())
+}
 
 impl FileKind {
     /// Every kind, in the order of the list of supported extensions.
@@ -96,12 +98,53 @@ impl FileKind {
         }
         let detail = match ext {
             Some(e) if e == "png" => {
-                format!("'.png' is a picture: pictures are written by `umbra render` ({SUPPORTED})")
+                format!(
+                    "'.png' is a picture: pictures are written by `umbra render` ({})",
+                    supported()
+                )
             }
-            Some(e) => format!("unknown extension '.{e}' ({SUPPORTED})"),
-            None => format!("no file extension ({SUPPORTED})"),
+            Some(e) => format!("unknown extension '.{e}' ({})", supported()),
+            None => format!("no file extension ({})", supported()),
         };
         Err(UmbraError::UnsupportedFileType { file, detail })
+    }
+
+    /// Every supported extension by dimension, generated from
+    /// [`FileKind::ALL`] (the table [`FileKind::from_path`] dispatches by):
+    /// what a front end lists as the formats it reads and writes.
+    ///
+    /// ```
+    /// use umbra::FileKind;
+    /// assert_eq!(
+    ///     FileKind::supported_extensions(),
+    ///     "2D: .wkt .geojson (.svg written only); 3D: .obj .off .stl .ply .3mf .glb .gltf"
+    /// );
+    /// ```
+    pub fn supported_extensions() -> String {
+        let list = |keep: &dyn Fn(FileKind) -> bool| {
+            FileKind::ALL
+                .into_iter()
+                .filter(|&k| keep(k))
+                .map(|k| format!(".{}", k.extension()))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        let planar_read = list(&|k| !k.is_mesh() && k.can_read());
+        let planar_written = list(&|k| !k.is_mesh() && !k.can_read());
+        let mesh_read = list(&|k| k.is_mesh() && k.can_read());
+        let mesh_written = list(&|k| k.is_mesh() && !k.can_read());
+        let only = |l: String| {
+            if l.is_empty() {
+                l
+            } else {
+                format!(" ({l} written only)")
+            }
+        };
+        format!(
+            "2D: {planar_read}{}; 3D: {mesh_read}{}",
+            only(planar_written),
+            only(mesh_written)
+        )
     }
 
     /// The extension, without the dot (`"3mf"`).
@@ -212,7 +255,7 @@ fn wrong_dimension(path: &Path, want: &str) -> UmbraError {
 pub(crate) fn wrong_dimension_of(file: &str, want: &str) -> UmbraError {
     UmbraError::UnsupportedFileType {
         file: file.to_string(),
-        detail: format!("expected a {want} file here ({SUPPORTED})"),
+        detail: format!("expected a {want} file here ({})", supported()),
     }
 }
 
@@ -221,9 +264,10 @@ fn write_only(path: &Path, kind: FileKind) -> UmbraError {
     UmbraError::UnsupportedFileType {
         file: path.display().to_string(),
         detail: format!(
-            "'.{}' ({}) can be written but not read ({SUPPORTED})",
+            "'.{}' ({}) can be written but not read ({})",
             kind.extension(),
-            kind.name()
+            kind.name(),
+            supported()
         ),
     }
 }
