@@ -4,7 +4,9 @@
 //! format of triangles only), by the files' extensions.
 
 use super::smooth::summary;
-use super::{invalid_result, millis_since, orientation, tolerance_arg, warn_orphans};
+use super::{
+    invalid_result, millis_since, orientation, tolerance_arg, warn_f32_defects, warn_orphans,
+};
 use crate::errors::{self, usage};
 use crate::files::OutputArgs;
 use crate::stdout::outln;
@@ -295,8 +297,16 @@ impl BooleanArgs {
         } else {
             out.mesh
         };
-        let bytes = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
-        self.out.write(&bytes, &report)?;
+        // The report describes the file: for a format of `f32`
+        // coordinates, the mesh as rounded and repaired.
+        let encoded = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
+        if let Some(rounded) = &encoded.rounded {
+            report = report.rounded_to_f32(out_file.clone(), rounded);
+        }
+        self.out.write(&encoded.bytes, &report)?;
+        if let Some(rounded) = &encoded.rounded {
+            warn_f32_defects(&rounded.report, out_path);
+        }
         let smoothing = report
             .smoothing
             .as_ref()

@@ -138,6 +138,21 @@ pub fn warn_orphans(orphans: usize, out_path: &std::path::Path) {
     }
 }
 
+/// Warns on standard error when rounding a mesh to the `f32` coordinates
+/// of its format (binary STL, glTF) left intersecting facet pairs or
+/// coinciding vertices in the file written (features thinner than the
+/// `f32` spacing, which have no faithful `f32` form).
+pub fn warn_f32_defects(rounding: &umbra::F32Rounding, out_path: &std::path::Path) {
+    if rounding.pairs_left > 0 || rounding.collisions_left > 0 {
+        crate::stdout::error_line(&format!(
+            "warning: {}: rounding to f32 left {} intersecting facet pair(s) and {} pair(s) of coinciding vertices (features thinner than the f32 spacing); write .obj, .off, .ply, .3mf or --ascii .stl to keep every f64",
+            out_path.display(),
+            rounding.pairs_left,
+            rounding.collisions_left
+        ));
+    }
+}
+
 /// The error for a result that is not topologically valid (a bug of the
 /// algorithm: its output always satisfies the closure constraints).
 pub fn invalid_result() -> anyhow::Error {

@@ -361,8 +361,8 @@ pub fn write_mesh_with(
     options: MeshWriteOptions,
 ) -> Result<(), UmbraError> {
     let kind = FileKind::from_path(path)?;
-    let bytes = crate::encode_mesh_with(kind, mesh, options, &path.display().to_string())?;
-    write_bytes(path, &bytes)
+    let encoded = crate::encode_mesh_with(kind, mesh, options, &path.display().to_string())?;
+    write_bytes(path, &encoded.bytes)
 }
 
 /// An error of a writer about `<output>`, renamed to `file`.
