@@ -17,7 +17,7 @@ use std::time::Instant;
 use umbra::{
     boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
     default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, read_polygon_set, regularized_operand, smooth_polygon_set, smooth_solid_near,
+    read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near,
     turned_outward,
     Boolean2Report,
     Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
@@ -151,8 +151,8 @@ impl BooleanArgs {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let a = read_polygon_set(a_path, options)?;
-        let b = read_polygon_set(b_path, options)?;
+        let a = super::read_set(a_path, options)?;
+        let b = super::read_set(b_path, options)?;
         let inputs = Operands {
             a: SetCounts::of_set(a_path.display().to_string(), &a),
             b: SetCounts::of_set(b_path.display().to_string(), &b),

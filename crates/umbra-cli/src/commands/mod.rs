@@ -128,6 +128,24 @@ pub fn millis_since(start: std::time::Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
 }
 
+/// Reads a 2D file ([`umbra::read_polygon_set_counted`]) and warns on
+/// standard error, naming it, about the points and lines skipped from its
+/// collections (GEOS and shapely overlays return them beside polygons).
+pub fn read_set(
+    path: &std::path::Path,
+    options: umbra::ReadOptions,
+) -> Result<umbra::PolygonSet2, umbra::UmbraError> {
+    let read = umbra::read_polygon_set_counted(path, options)?;
+    if read.skipped_non_areal > 0 {
+        crate::stdout::error_line(&format!(
+            "warning: {}: {} non-areal part(s) (points, lines) skipped; only polygons are read",
+            path.display(),
+            read.skipped_non_areal
+        ));
+    }
+    Ok(read.set)
+}
+
 /// Warns on standard error about holes written as exteriors.
 pub fn warn_orphans(orphans: usize, out_path: &std::path::Path) {
     if orphans > 0 {

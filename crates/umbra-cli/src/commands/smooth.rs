@@ -11,7 +11,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     as_triangle_mesh, default_mesh_tolerance, default_set_tolerance, encode_mesh_with,
-    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid, FileKind,
+    encode_polygon_set, read_mesh, smooth_polygon_set, smooth_solid, FileKind,
     MeshCounts, MeshReadOptions, MeshVariant, ReadOptions, SetCounts, SmoothFileReport,
     SmoothOptions, SmoothReport, UmbraError,
 };
@@ -115,7 +115,7 @@ impl SmoothArgs {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let set = read_polygon_set(&self.input, options)?;
+        let set = super::read_set(&self.input, options)?;
         let tol = self.tol.unwrap_or_else(|| default_set_tolerance(&set));
         let start = Instant::now();
         let result = smooth_polygon_set(&set, &SmoothOptions::new(tol));

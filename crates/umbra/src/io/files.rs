@@ -5,14 +5,16 @@
 //! `.off`, `.stl`, `.ply`, `.3mf` and `.glb` are 3D meshes (read and
 //! written).
 
-use super::geojson::read_geojson_file;
+use super::geojson::read_geojson_file_counted;
 use super::gltf_read::read_gltf_bytes;
 use super::mesh_text::{read_mesh_text, MeshReadOptions};
 use super::ply::read_ply_bytes;
+use super::rings::PolygonSetRead;
 use super::stl::read_stl_bytes;
 use super::text::{decode, read_bytes, write_bytes};
 use super::threemf_read::read_3mf_bytes;
-use crate::{read_wkt_file, ReadOptions, RingOrientation, UmbraError};
+use super::wkt::read_wkt_file_counted;
+use crate::{ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
 
@@ -273,14 +275,30 @@ fn write_only(path: &Path, kind: FileKind) -> UmbraError {
 }
 
 /// Reads a 2D polygon set from a file whose format is decided by its
-/// extension.
+/// extension. The points and lines of a collection are skipped; see
+/// [`read_polygon_set_counted`] for how many.
 pub fn read_polygon_set(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    match FileKind::from_path(path)? {
-        FileKind::Wkt => read_wkt_file(path, options),
-        FileKind::GeoJson => read_geojson_file(path, options),
-        FileKind::Svg => Err(write_only(path, FileKind::Svg)),
-        _ => Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
-    }
+    read_polygon_set_counted(path, options).map(|r| r.set)
+}
+
+/// Reads a 2D polygon set from a file whose format is decided by its
+/// extension, with the number of non-areal parts (points, lines) skipped
+/// from its collections, for a front end to warn about. A file with no
+/// polygonal part at all is [`UmbraError::UnsupportedGeometry`].
+pub fn read_polygon_set_counted(
+    path: &Path,
+    options: ReadOptions,
+) -> Result<PolygonSetRead, UmbraError> {
+    let (set, skipped_non_areal) = match FileKind::from_path(path)? {
+        FileKind::Wkt => read_wkt_file_counted(path, options)?,
+        FileKind::GeoJson => read_geojson_file_counted(path, options)?,
+        FileKind::Svg => return Err(write_only(path, FileKind::Svg)),
+        _ => return Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
+    };
+    Ok(PolygonSetRead {
+        set,
+        skipped_non_areal,
+    })
 }
 
 /// Writes a 2D polygon set to a file whose format is decided by its
