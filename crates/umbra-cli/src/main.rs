@@ -41,13 +41,28 @@ use clap::Parser;
 use std::process::ExitCode;
 use umbra::UmbraError;
 
-/// Topologically robust Boolean operations on polygon sets and polyhedra
-/// (plain f64 arithmetic). `.wkt`/`.geojson` files are 2D, `.obj`/`.off`/`.stl`/`.ply` 3D.
+/// The command line: its description ([`about`]) lists the formats.
 #[derive(Parser, Debug)]
-#[command(name = "umbra", version, propagate_version = true)]
+#[command(
+    name = "umbra",
+    version,
+    propagate_version = true,
+    about = about(),
+    long_about = None
+)]
 struct Cli {
     #[command(subcommand)]
     command: commands::Command,
+}
+
+/// The first lines of `umbra --help`: what the tool does and every file
+/// extension it reads or writes, from the table the format dispatch uses
+/// ([`umbra::FileKind::supported_extensions`]).
+fn about() -> String {
+    format!(
+        "Topologically robust Boolean operations on polygon sets and polyhedra (plain f64 arithmetic). The file extension decides the format: {}.",
+        umbra::FileKind::supported_extensions()
+    )
 }
 
 fn main() -> ExitCode {

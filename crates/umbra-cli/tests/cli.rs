@@ -340,9 +340,9 @@ fn bad_input_exits_1_with_one_line_naming_the_file() {
             write(
                 &dir,
                 "gc.wkt",
-                "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)), LINESTRING (0 0, 1 1))",
+                "GEOMETRYCOLLECTION (LINESTRING (0 0, 1 1), POINT (1 1))",
             ),
-            "LINESTRING",
+            "member 1 is a LINESTRING",
         ),
         (
             write(&dir, "nan.wkt", "POLYGON ((0 0, NaN 0, 1 1, 0 0))"),
@@ -652,4 +652,99 @@ fn check_reports_validity_and_crossings() {
     let err = stderr(&o);
     assert_eq!(err.lines().count(), 1, "{err}");
     assert!(err.contains("huge.wkt") && err.contains("exceeds"), "{err}");
+}
+
+/// The first lines of `umbra --help` name every extension the format
+/// dispatch accepts (`FileKind::ALL`, which `FileKind::from_path` reads
+/// by), 3D glTF and 3MF included.
+#[test]
+fn the_top_level_help_lists_every_supported_format() {
+    let o = umbra(["--help"]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let help = String::from_utf8(o.stdout).unwrap();
+    let about = help.split("Usage:").next().unwrap();
+    // The words of the description, without the punctuation around them.
+    let words: Vec<&str> = about
+        .split_whitespace()
+        .map(|w| w.trim_matches(|c| "();,".contains(c)).trim_end_matches('.'))
+        .collect();
+    for kind in umbra::FileKind::ALL {
+        let ext = format!(".{}", kind.extension());
+        let path = PathBuf::from(format!("x{ext}"));
+        assert_eq!(umbra::FileKind::from_path(&path).unwrap(), kind);
+        assert!(words.contains(&ext.as_str()), "{ext} missing from: {about}");
+    }
+    assert!(
+        about.contains(
+            "2D: .wkt .geojson (.svg written only); 3D: .obj .off .stl .ply .3mf .glb .gltf."
+        ),
+        "{about}"
+    );
+}
+
+/// The points and lines of a WKT `GEOMETRYCOLLECTION` and the line
+/// features of a GeoJSON `FeatureCollection` (what GEOS and shapely
+/// overlays return beside polygons) are skipped with one warning per file
+/// naming how many; the polygons are read (4x4 union 4x4 overlapping by
+/// 2x2: area 28). A file of lines alone is still refused (exit 1).
+#[test]
+fn points_and_lines_beside_polygons_are_skipped_with_a_warning() {
+    let dir = temp_dir("non-areal");
+    let a = write(
+        &dir,
+        "a.wkt",
+        "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)), LINESTRING (4 0, 9 0), POINT EMPTY)",
+    );
+    let b = write(
+        &dir,
+        "b.geojson",
+        r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": {"type": "Polygon", "coordinates": [[[2, 2], [6, 2], [6, 6], [2, 6], [2, 2]]]}},
+            {"type": "Feature", "geometry": {"type": "LineString", "coordinates": [[0, 0], [1, 1]]}}]}"#,
+    );
+    let out = dir.join("u.wkt");
+    let report = dir.join("u.json");
+    let o = umbra([
+        "boolean".as_ref(),
+        "union".as_ref(),
+        a.as_os_str(),
+        b.as_os_str(),
+        "-o".as_ref(),
+        out.as_os_str(),
+        "--report".as_ref(),
+        report.as_os_str(),
+    ]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert_eq!(
+        stderr(&o),
+        format!(
+            "umbra: warning: {}: 2 non-areal part(s) (points, lines) skipped; only polygons are read\n\
+             umbra: warning: {}: 1 non-areal part(s) (points, lines) skipped; only polygons are read\n",
+            a.display(),
+            b.display()
+        )
+    );
+    let r: serde_json::Value = serde_json::from_slice(&std::fs::read(&report).unwrap()).unwrap();
+    assert_eq!(r["output"]["signed_area"], 28.0, "{r}");
+    assert_eq!(r["inputs"]["a"]["signed_area"], 16.0, "{r}");
+    assert_eq!(r["inputs"]["b"]["signed_area"], 16.0, "{r}");
+    assert_eq!(
+        std::fs::read_to_string(&out).unwrap(),
+        "POLYGON ((0 0, 4 0, 4 2, 6 2, 6 6, 2 6, 2 4, 0 4, 0 0))\n"
+    );
+    // Nothing areal at all: refused, naming the first part.
+    let lines = write(
+        &dir,
+        "lines.wkt",
+        "GEOMETRYCOLLECTION (LINESTRING (0 0, 1 1), POINT (2 2))",
+    );
+    let o = umbra(["check".as_ref(), lines.as_os_str()]);
+    assert_eq!(o.status.code(), Some(1));
+    assert_eq!(
+        stderr(&o),
+        format!(
+            "umbra: {}: unsupported geometry: GEOMETRYCOLLECTION member 1 is a LINESTRING (expected POLYGON or MULTIPOLYGON)\n",
+            lines.display()
+        )
+    );
 }

@@ -378,3 +378,203 @@ fn a_triangle_format_output_runs_the_triangle_variant() {
     let r = run(&dir.join("out_t.obj"), &["--triangulate"]);
     assert_eq!(r["variant"], "triangle mesh", "{r}");
 }
+
+/// `check --json` of `path`, parsed (the file as a reader sees it).
+fn check_json(path: &Path) -> serde_json::Value {
+    let c = umbra(["check".as_ref(), path.as_os_str(), "--json".as_ref()]);
+    assert!(c.status.success(), "{}", stderr(&c));
+    serde_json::from_slice(&c.stdout).unwrap()
+}
+
+/// Runs `umbra` with `args` and asserts success; its standard error.
+fn run_ok(args: &[&std::ffi::OsStr]) -> String {
+    let o = umbra(args);
+    assert!(o.status.success(), "{args:?}: {}", stderr(&o));
+    stderr(&o)
+}
+
+/// A 3D Boolean written to binary STL (`f32` coordinates) is reported as
+/// written: the output counts and volume of `--report` are those `umbra
+/// check` reads back from the file (the result rounded to `f32`, repaired
+/// and welded as the reader welds), the `f32_rounding` section says what
+/// rounding did, and `timings_ms.total` includes it. The same run to OFF
+/// (every f64 kept) has no such section.
+#[test]
+fn a_boolean_to_stl_is_reported_as_written() {
+    let dir = temp_dir("f32-report");
+    let a = dir.join("a.stl");
+    let b = dir.join("b.stl");
+    // Coordinates that are not f32 values: every result vertex moves.
+    std::fs::write(&a, box_stl([0.1, 0.2, 0.3], [1.1, 1.2, 1.3])).unwrap();
+    std::fs::write(&b, box_stl([0.55, 0.65, 0.75], [1.7, 1.8, 1.9])).unwrap();
+    let out = dir.join("u.stl");
+    let report = dir.join("u.json");
+    let err = run_ok(&[
+        "boolean".as_ref(),
+        "union".as_ref(),
+        a.as_os_str(),
+        b.as_os_str(),
+        "-o".as_ref(),
+        out.as_os_str(),
+        "--report".as_ref(),
+        report.as_os_str(),
+    ]);
+    assert_eq!(err, "", "no defect left, no warning");
+    let r = json(&report);
+    let c = check_json(&out);
+    assert_eq!(r["output"]["vertices"], 20, "{r}");
+    assert_eq!(r["output"]["vertices"], c["vertices"]);
+    assert_eq!(r["output"]["facets"], 36, "{r}");
+    assert_eq!(r["output"]["facets"], c["facets"]);
+    // Bit for bit the volume of the file, not of the f64 result
+    // (1 + 1.15^3 - 0.55^3 = 2.3545 before rounding).
+    assert_eq!(r["output"]["signed_volume"], c["signed_volume"], "{r} {c}");
+    assert_eq!(r["output"]["signed_volume"], 2.354499980866906, "{r}");
+    let f = &r["f32_rounding"];
+    assert_eq!(f["moved_vertices"], 20, "{r}");
+    assert_eq!(f["pairs_from_rounding"], 0, "{r}");
+    assert_eq!(f["pairs_left"], 0, "{r}");
+    assert_eq!(f["collisions_left"], 0, "{r}");
+    let t = &r["timings_ms"];
+    let (total, round) = (
+        t["total"].as_f64().unwrap(),
+        t["round_f32"].as_f64().unwrap(),
+    );
+    let smooth = t["smooth"].as_f64().unwrap();
+    assert!(round > 0.0 && total >= round + smooth, "{t}");
+
+    let off = dir.join("u.off");
+    let report = dir.join("off.json");
+    run_ok(&[
+        "boolean".as_ref(),
+        "union".as_ref(),
+        a.as_os_str(),
+        b.as_os_str(),
+        "-o".as_ref(),
+        off.as_os_str(),
+        "--report".as_ref(),
+        report.as_os_str(),
+    ]);
+    let r = json(&report);
+    assert!(r.get("f32_rounding").is_none(), "{r}");
+    assert!(r["timings_ms"].get("round_f32").is_none(), "{r}");
+    assert_eq!(
+        r["output"]["signed_volume"],
+        check_json(&off)["signed_volume"]
+    );
+}
+
+/// The CSG of the user's report, scaled down (a plate minus four
+/// countersink cones poking 1e-4 above its top: plain rounding folds 71
+/// facet pairs, which the corner pass repairs), and a sphere minus a copy
+/// shifted by 1e-6, unsmoothed, whose f64 result has two vertices at one
+/// point (valid there; one vertex once an STL reader welds them): the
+/// report describes the STL as `check` reads it, vertex for vertex.
+#[test]
+fn a_csg_to_stl_is_reported_as_written() {
+    let dir = temp_dir("f32-csg");
+    let cone = |x: f64, y: f64| {
+        format!(
+            r#"{{"cylinder": {{"radius": 2, "radius_top": 5, "height": 3.0001, "segments": 16}}, "translate": [{x}, {y}, 7]}}"#
+        )
+    };
+    let plate = format!(
+        r#"{{"op": "difference", "children": [{{"box": {{"size": [80, 50, 10]}}}}, {}, {}, {}, {}]}}"#,
+        cone(8.0, 10.0),
+        cone(72.0, 10.0),
+        cone(8.0, 40.0),
+        cone(72.0, 40.0)
+    );
+    let spheres = r#"{"op": "difference", "children": [{"sphere": {"radius": 1, "segments": 12}}, {"sphere": {"radius": 1, "segments": 12}, "translate": [1e-6, 2e-6, 3e-6]}]}"#;
+    // (script, smoothing, vertices and facets written, pairs rounding made)
+    let cases = [
+        (plate.as_str(), None, 199, 394, 71),
+        (spheres, Some("0"), 124, 246, 15),
+    ];
+    for (i, (script, smooth, vertices, facets, pairs)) in cases.into_iter().enumerate() {
+        let path = dir.join(format!("s{i}.json"));
+        std::fs::write(&path, script).unwrap();
+        let out = dir.join(format!("s{i}.stl"));
+        let report = dir.join(format!("r{i}.json"));
+        let mut args: Vec<&std::ffi::OsStr> = vec![
+            "csg".as_ref(),
+            path.as_os_str(),
+            "-o".as_ref(),
+            out.as_os_str(),
+            "--report".as_ref(),
+            report.as_os_str(),
+            "--quiet".as_ref(),
+        ];
+        if let Some(t) = smooth {
+            args.extend([std::ffi::OsStr::new("--smooth"), t.as_ref()]);
+        }
+        let err = run_ok(&args);
+        assert_eq!(err, "", "{i}");
+        let r = json(&report);
+        let c = check_json(&out);
+        assert_eq!(r["vertices"], vertices, "{i}: {r}");
+        assert_eq!(r["vertices"], c["vertices"], "{i}");
+        assert_eq!(r["facets"], facets, "{i}: {r}");
+        assert_eq!(r["facets"], c["facets"], "{i}");
+        assert_eq!(r["volume"], c["signed_volume"], "{i}");
+        assert_eq!(r["topologically_valid"], true, "{i}");
+        let f = &r["f32_rounding"];
+        assert_eq!(f["pairs_from_rounding"], pairs, "{i}: {r}");
+        assert_eq!(f["pairs_left"], 0, "{i}: {r}");
+        assert_eq!(f["collisions_left"], 0, "{i}: {r}");
+        let t = &r["timings_ms"];
+        assert!(
+            t["total"].as_f64().unwrap() >= t["round_f32"].as_f64().unwrap(),
+            "{i}: {t}"
+        );
+    }
+}
+
+/// Where rounding to `f32` cannot remove every defect (a sphere minus a
+/// copy shifted by 3e-7, features below the f32 spacing), the report
+/// counts what is left and the command warns on standard error naming
+/// the file; written as OFF the same result has nothing to warn about.
+#[test]
+fn defects_left_by_f32_rounding_are_warned() {
+    let dir = temp_dir("f32-warn");
+    let script = dir.join("s.json");
+    std::fs::write(
+        &script,
+        r#"{"op": "difference", "children": [{"sphere": {"radius": 1, "segments": 24}}, {"sphere": {"radius": 1, "segments": 24}, "translate": [3e-7, 3e-7, 3e-7]}]}"#,
+    )
+    .unwrap();
+    let out = dir.join("s.stl");
+    let report = dir.join("r.json");
+    let err = run_ok(&[
+        "csg".as_ref(),
+        script.as_os_str(),
+        "-o".as_ref(),
+        out.as_os_str(),
+        "--report".as_ref(),
+        report.as_os_str(),
+        "--quiet".as_ref(),
+    ]);
+    assert_eq!(
+        err,
+        format!(
+            "umbra: warning: {}: rounding to f32 left 0 intersecting facet pair(s) and 1 pair(s) of coinciding vertices (features thinner than the f32 spacing); write .obj, .off, .ply, .3mf or --ascii .stl to keep every f64\n",
+            out.display()
+        )
+    );
+    let r = json(&report);
+    assert_eq!(r["f32_rounding"]["collisions_left"], 1, "{r}");
+    assert_eq!(r["f32_rounding"]["pairs_left"], 0, "{r}");
+    // The vertices that coincide are one in the file, and in the report.
+    assert_eq!(r["vertices"], 419, "{r}");
+    assert_eq!(r["vertices"], check_json(&out)["vertices"]);
+    let off = dir.join("s.off");
+    let err = run_ok(&[
+        "csg".as_ref(),
+        script.as_os_str(),
+        "-o".as_ref(),
+        off.as_os_str(),
+        "--triangulate".as_ref(),
+        "--quiet".as_ref(),
+    ]);
+    assert_eq!(err, "");
+}

@@ -6,13 +6,14 @@
 //! back-and-forth spikes: the written rings may differ from
 //! [`PolygonSet2::loops`] of the set as computed).
 
-use crate::io::{rename_output, wrong_dimension_of as wrong_dimension};
-use crate::report::SetCounts;
+use crate::io::{rename_output, welded, wrong_dimension_of as wrong_dimension};
+use crate::report::{MeshCounts, SetCounts};
 use crate::{
     layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_gltf, mesh_to_obj, mesh_to_off, mesh_to_ply,
     mesh_to_stl, polygon_set_to_svg, polygons_to_geojson, polygons_to_wkt, FileKind,
     MeshWriteOptions, RingOrientation, UmbraError,
 };
+use std::time::Instant;
 use topology::{PolygonMesh, PolygonSet2};
 
 /// A 2D result encoded for one file format.
@@ -102,38 +103,79 @@ pub fn encode_polygon_set(
     })
 }
 
+/// A 3D result encoded for one file format: the bytes and, where the
+/// format stores `f32` coordinates, the rounded mesh they hold, so that a
+/// front end reports what was written rather than what was computed.
+#[derive(Clone, Debug)]
+pub struct EncodedMesh {
+    /// The file's contents.
+    pub bytes: Vec<u8>,
+    /// For a format of `f32` coordinates (binary STL, glTF), the mesh
+    /// written ([`crate::round_to_f32`] of the mesh given, welded by exact
+    /// position as the format's reader welds it: its vertex and facet
+    /// counts and volume can differ); `None` when the mesh given was
+    /// written as it is.
+    pub rounded: Option<crate::RoundedMesh>,
+}
+
+impl EncodedMesh {
+    /// The mesh the file holds: the rounded mesh, or `given` (the mesh
+    /// that was encoded) when nothing was rounded.
+    pub fn written<'a>(&'a self, given: &'a PolygonMesh) -> &'a PolygonMesh {
+        self.rounded.as_ref().map_or(given, |r| &r.mesh)
+    }
+
+    /// The counts of what is written, under the name `file` (`given` is
+    /// the mesh that was encoded).
+    pub fn counts(&self, file: impl Into<String>, given: &PolygonMesh) -> MeshCounts {
+        MeshCounts::of_mesh(file, self.written(given))
+    }
+}
+
 /// Encodes `mesh` as `kind` exactly as [`crate::write_mesh`] writes it
-/// (STL and PLY in binary); errors name `file`.
+/// (STL and PLY in binary); errors name `file`. The bytes alone: see
+/// [`encode_mesh_with`] for the mesh they hold.
 pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec<u8>, UmbraError> {
-    encode_mesh_with(kind, mesh, MeshWriteOptions::default(), file)
+    encode_mesh_with(kind, mesh, MeshWriteOptions::default(), file).map(|e| e.bytes)
 }
 
 /// Encodes `mesh` as `kind` (OBJ, OFF, STL, PLY, 3MF or glTF)
 /// exactly as [`crate::write_mesh_with`] writes it; errors name `file`.
 /// Where the format stores `f32` coordinates (binary STL, glTF), the mesh
 /// is rounded by [`crate::round_to_f32`], which smooths away any facet
-/// intersection the rounding would create.
+/// intersection the rounding would create; the rounded mesh, the rounding
+/// report and its time come back in [`EncodedMesh::rounded`].
+///
+/// ```
+/// use umbra::{cuboid, encode_mesh_with, DVec3, FileKind, MeshWriteOptions};
+/// let cube = cuboid(DVec3::new(0.1, 0.2, 0.3), false).unwrap();
+/// let stl = encode_mesh_with(FileKind::Stl, &cube, MeshWriteOptions::default(), "c.stl").unwrap();
+/// let rounded = stl.rounded.as_ref().unwrap();
+/// assert_eq!(rounded.report.moved_vertices, 7); // 0.1, 0.2, 0.3 are not f32 values
+/// assert_eq!(stl.counts("c.stl", &cube).facets, 12);
+/// let off = encode_mesh_with(FileKind::Off, &cube, MeshWriteOptions::default(), "c.off").unwrap();
+/// assert!(off.rounded.is_none());
+/// assert_eq!(off.counts("c.off", &cube).facets, 6);
+/// ```
 pub fn encode_mesh_with(
     kind: FileKind,
     mesh: &PolygonMesh,
     options: MeshWriteOptions,
     file: &str,
-) -> Result<Vec<u8>, UmbraError> {
-    let rounded;
-    let mesh = if kind.stores_f32(options) {
-        rounded = crate::round_to_f32(mesh).mesh.to_polygon_mesh();
-        &rounded
-    } else {
-        mesh
-    };
+) -> Result<EncodedMesh, UmbraError> {
+    let start = Instant::now();
+    let rounded = kind.stores_f32(options).then(|| crate::round_to_f32(mesh));
+    let ms = start.elapsed().as_secs_f64() * 1e3;
+    let written_rounded = rounded.as_ref().map(|r| r.mesh.to_polygon_mesh());
+    let written = written_rounded.as_ref().unwrap_or(mesh);
     let bytes = match kind {
-        FileKind::Obj => Ok(mesh_to_obj(mesh).into_bytes()),
-        FileKind::Off => Ok(mesh_to_off(mesh).into_bytes()),
-        FileKind::Stl => mesh_to_stl(mesh, options.text),
-        FileKind::Ply => Ok(mesh_to_ply(mesh, options.text)),
-        FileKind::ThreeMf => mesh_to_3mf(mesh),
-        FileKind::Glb => mesh_to_glb(mesh),
-        FileKind::Gltf => mesh_to_gltf(mesh),
+        FileKind::Obj => Ok(mesh_to_obj(written).into_bytes()),
+        FileKind::Off => Ok(mesh_to_off(written).into_bytes()),
+        FileKind::Stl => mesh_to_stl(written, options.text),
+        FileKind::Ply => Ok(mesh_to_ply(written, options.text)),
+        FileKind::ThreeMf => mesh_to_3mf(written),
+        FileKind::Glb => mesh_to_glb(written),
+        FileKind::Gltf => mesh_to_gltf(written),
         FileKind::Wkt | FileKind::GeoJson | FileKind::Svg => {
             return Err(wrong_dimension(
                 file,
@@ -141,5 +183,15 @@ pub fn encode_mesh_with(
             ))
         }
     };
-    bytes.map_err(|e| rename_output(e, file))
+    let bytes = bytes.map_err(|e| rename_output(e, file))?;
+    // Both formats of `f32` coordinates are read back welded by exact
+    // position, so the mesh the file holds is the rounded one welded (a
+    // pair of vertices that coincide in the `f64` result, which the
+    // closure constraints allow, is one vertex there).
+    let rounded = rounded.map(|r| crate::RoundedMesh {
+        mesh: welded(&r.mesh).to_polygon_mesh(),
+        report: r.report,
+        ms,
+    });
+    Ok(EncodedMesh { bytes, rounded })
 }

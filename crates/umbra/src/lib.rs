@@ -104,7 +104,7 @@ pub use boolean_3d::{
     PreparedTriangles, TriangleOutput,
 };
 #[cfg(feature = "io")]
-pub use encode::{encode_mesh, encode_mesh_with, encode_polygon_set, EncodedPolygons};
+pub use encode::{encode_mesh, encode_mesh_with, encode_polygon_set, EncodedMesh, EncodedPolygons};
 pub use error::UmbraError;
 #[cfg(feature = "io")]
 pub use io::*;
@@ -125,7 +125,7 @@ pub use report::{
 pub use robust_arith::{
     orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,
 };
-pub use round_f32::{round_to_f32, F32Rounding, RoundedToF32};
+pub use round_f32::{round_to_f32, F32Rounding, RoundedMesh, RoundedToF32};
 pub use simplify_2d::{
     boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
     SimplifyError, SweepStats,

@@ -4,10 +4,13 @@
 //! so every front end reports the same fields with the same meaning.
 //!
 //! Counts describe shapes as files hold them ([`SetCounts`],
-//! [`MeshCounts`]); `timings_ms.total` ([`Timings`]) covers the operation
-//! alone, never file input or output.
+//! [`MeshCounts`]): a 3D result written to a format of `f32` coordinates
+//! is described as rounded ([`Boolean3Report::rounded_to_f32`], with the
+//! [`F32Rounding`] report). `timings_ms.total` ([`Timings`]) covers the
+//! operation and that rounding's repair, never file input or output.
 
 use crate::ops::{SolidOutput, Via};
+use crate::{F32Rounding, RoundedMesh};
 use boolean_2d::{BooleanOutput, Timings as BooleanTimings};
 use serde::Serialize;
 use simplify_2d::{FillRule, Simplified, SweepStats};
@@ -113,6 +116,10 @@ pub struct Timings {
     /// Smoothing of the result (Appendix A), when it ran.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smooth: Option<f64>,
+    /// Rounding the result to `f32` and repairing what rounding broke
+    /// ([`crate::round_to_f32`]), when it was written to such a format.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub round_f32: Option<f64>,
 }
 
 impl Timings {
@@ -135,6 +142,7 @@ impl Timings {
             construct: Some(t.construct),
             triangulate_inputs: None,
             smooth: None,
+            round_f32: None,
         }
     }
 }
@@ -372,7 +380,8 @@ pub struct Boolean3Report {
     pub inputs_triangulated: Operands<bool>,
     /// The operands.
     pub inputs: Operands<MeshCounts>,
-    /// The result.
+    /// The result as written (rounded, for a format of `f32`
+    /// coordinates).
     pub output: MeshCounts,
     /// Edge-facet intersection vertices.
     pub intersections: usize,
@@ -382,6 +391,10 @@ pub struct Boolean3Report {
     pub topology_error: Option<String>,
     /// What smoothing did, when the result was smoothed; `null` otherwise.
     pub smoothing: Option<SmoothReport>,
+    /// What rounding to `f32` did, when the result was written to a format
+    /// of `f32` coordinates (binary STL, glTF); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f32_rounding: Option<F32Rounding>,
     /// Milliseconds.
     pub timings_ms: Timings,
 }
@@ -409,6 +422,7 @@ impl Boolean3Report {
             topologically_valid,
             topology_error,
             smoothing: None,
+            f32_rounding: None,
             timings_ms: Timings {
                 triangulate_inputs: out.triangulate_ms,
                 ..Timings::total(out.total_ms)
@@ -434,6 +448,21 @@ impl Boolean3Report {
         self.timings_ms.total += smooth_ms;
         self
     }
+
+    /// The report once the result was rounded to `f32` for writing
+    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output counted
+    /// again as written under `output_file`, validity checked again, the
+    /// rounding report kept, `total` including the rounding.
+    pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
+        let (valid, error) = validity(rounded.mesh.check_topology());
+        self.output = MeshCounts::of_mesh(output_file, &rounded.mesh);
+        self.topologically_valid = valid;
+        self.topology_error = error;
+        self.f32_rounding = Some(rounded.report.clone());
+        self.timings_ms.round_f32 = Some(rounded.ms);
+        self.timings_ms.total += rounded.ms;
+        self
+    }
 }
 
 /// The report of smoothing a file (`umbra smooth`): `C` is [`SetCounts`]
@@ -456,7 +485,11 @@ pub struct SmoothFileReport<C> {
     pub epsilon: f64,
     /// What smoothing did.
     pub smoothing: SmoothReport,
-    /// Milliseconds: `total` is smoothing alone.
+    /// What rounding to `f32` did, when the result was written to a format
+    /// of `f32` coordinates (binary STL, glTF); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f32_rounding: Option<F32Rounding>,
+    /// Milliseconds: `total` is smoothing and any rounding to `f32`.
     pub timings_ms: Timings,
 }
 
@@ -478,11 +511,29 @@ impl<C> SmoothFileReport<C> {
             topology_error,
             epsilon: smoothed.report.epsilon,
             smoothing: smoothed.report.clone(),
+            f32_rounding: None,
             timings_ms: Timings {
                 smooth: Some(total_ms),
                 ..Timings::total(total_ms)
             },
         }
+    }
+}
+
+impl SmoothFileReport<MeshCounts> {
+    /// The report once the smoothed mesh was rounded to `f32` for writing
+    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output counted
+    /// again as written under `output_file`, validity checked again, the
+    /// rounding report kept, `total` including the rounding.
+    pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
+        let (valid, error) = validity(rounded.mesh.check_topology());
+        self.output = MeshCounts::of_mesh(output_file, &rounded.mesh);
+        self.topologically_valid = valid;
+        self.topology_error = error;
+        self.f32_rounding = Some(rounded.report.clone());
+        self.timings_ms.round_f32 = Some(rounded.ms);
+        self.timings_ms.total += rounded.ms;
+        self
     }
 }
 

@@ -630,3 +630,115 @@ proptest! {
         }
     }
 }
+
+/// `bytes`, a 3MF package, with every `<triangle .../>` of its model part
+/// removed (its vertices kept).
+fn three_mf_without_triangles(bytes: Vec<u8>) -> Vec<u8> {
+    use std::io::{Read, Write};
+    let mut zip = zip::ZipArchive::new(std::io::Cursor::new(bytes)).unwrap();
+    let mut out = zip::ZipWriter::new(std::io::Cursor::new(Vec::new()));
+    for i in 0..zip.len() {
+        let mut entry = zip.by_index(i).unwrap();
+        let name = entry.name().unwrap().to_string();
+        let mut text = String::new();
+        entry.read_to_string(&mut text).unwrap();
+        if name == "3D/3dmodel.model" {
+            text = text
+                .lines()
+                .filter(|l| !l.contains("<triangle "))
+                .collect::<Vec<_>>()
+                .join("\n");
+        }
+        out.start_file(name, zip::write::SimpleFileOptions::default())
+            .unwrap();
+        out.write_all(text.as_bytes()).unwrap();
+    }
+    out.finish().unwrap().into_inner()
+}
+
+/// A file of vertices without faces (a point cloud, an OBJ of lines) is
+/// no solid: every reader that can express it refuses it with one line
+/// naming the file and "no facets", where it used to read as an empty
+/// solid and make every result silently empty. A file of neither (what
+/// the writers write for the empty result of a Boolean, a binary STL of
+/// zero triangles) is still the empty solid.
+#[test]
+fn vertices_without_faces_are_refused_and_nothing_is_the_empty_solid() {
+    let dir = temp_dir("no-facets");
+    let points = PolygonMesh::new(
+        vec![[0.0, 0.0, 0.0], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
+        Vec::new(),
+    );
+    let ply_ascii = "ply\nformat ascii 1.0\nelement vertex 3\nproperty double x\nproperty double y\nproperty double z\nelement face 0\nproperty list uchar uint vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n";
+    let cases: Vec<(&str, Vec<u8>, &str)> = vec![
+        (
+            "lines.obj",
+            b"v 0 0 0\nv 1 0 0\nv 0 1 0\nl 1 2 3 1\n".to_vec(),
+            "malformed OBJ: no facets: 3 vertices but no faces",
+        ),
+        (
+            "points.obj",
+            mesh_to_obj(&points).into_bytes(),
+            "malformed OBJ: no facets: 3 vertices but no faces",
+        ),
+        (
+            "points.off",
+            b"OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n".to_vec(),
+            "malformed OFF: no facets: 3 vertices but no faces",
+        ),
+        (
+            "ascii.ply",
+            ply_ascii.as_bytes().to_vec(),
+            "malformed PLY: no facets: 3 vertices but no faces",
+        ),
+        (
+            "binary.ply",
+            mesh_to_ply(&points, false),
+            "malformed PLY: no facets: 3 vertices but no faces",
+        ),
+        (
+            "cube.3mf",
+            three_mf_without_triangles(mesh_to_3mf(&cube_quads()).unwrap()),
+            "malformed 3MF: no facets: 8 vertices but no triangles",
+        ),
+    ];
+    for (name, bytes, problem) in cases {
+        let path = dir.join(name);
+        std::fs::write(&path, &bytes).unwrap();
+        let want = format!(
+            "{}: {problem} (a solid needs facets; a file of neither is the empty solid)",
+            path.display()
+        );
+        for check in [true, false] {
+            let e = read_mesh(&path, MeshReadOptions::default(), check).unwrap_err();
+            assert_eq!(e.to_string(), want, "{name}");
+        }
+    }
+    assert!(parse_obj("v 1 2 3\n", "p.obj")
+        .unwrap_err()
+        .to_string()
+        .starts_with("p.obj: malformed OBJ: no facets: 1 vertices but no faces"));
+    assert!(parse_off("OFF\n1 0 0\n1 2 3\n", "p.off").is_err());
+    assert!(parse_ply(&mesh_to_ply(&points, true), "p.ply").is_err());
+
+    // Nothing at all is the empty solid, in every format that can say it.
+    let empty = PolygonMesh::default();
+    let nothing: Vec<(&str, Vec<u8>)> = vec![
+        ("empty.obj", mesh_to_obj(&empty).into_bytes()),
+        ("empty.off", mesh_to_off(&empty).into_bytes()),
+        ("empty.ply", mesh_to_ply(&empty, false)),
+        ("empty-ascii.ply", mesh_to_ply(&empty, true)),
+        ("empty.stl", mesh_to_stl(&empty, false).unwrap()),
+        ("empty-ascii.stl", mesh_to_stl(&empty, true).unwrap()),
+        ("empty.glb", mesh_to_glb(&empty).unwrap()),
+    ];
+    for (name, bytes) in nothing {
+        let path = dir.join(name);
+        std::fs::write(&path, &bytes).unwrap();
+        let m = read_mesh(&path, MeshReadOptions::default(), true).unwrap();
+        assert_eq!(m, PolygonMesh::default(), "{name}");
+    }
+    // A binary STL of zero triangles: its 84 bytes, count 0.
+    let stl = mesh_to_stl(&empty, false).unwrap();
+    assert_eq!((stl.len(), &stl[80..]), (84, &[0u8; 4][..]));
+}

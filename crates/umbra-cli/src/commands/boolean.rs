@@ -4,7 +4,9 @@
 //! format of triangles only), by the files' extensions.
 
 use super::smooth::summary;
-use super::{invalid_result, millis_since, orientation, tolerance_arg, warn_orphans};
+use super::{
+    invalid_result, millis_since, orientation, tolerance_arg, warn_f32_defects, warn_orphans,
+};
 use crate::errors::{self, usage};
 use crate::files::OutputArgs;
 use crate::stdout::outln;
@@ -15,7 +17,7 @@ use std::time::Instant;
 use umbra::{
     boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
     default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, read_polygon_set, regularized_operand, smooth_polygon_set, smooth_solid_near,
+    read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near,
     turned_outward,
     Boolean2Report,
     Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
@@ -149,8 +151,8 @@ impl BooleanArgs {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let a = read_polygon_set(a_path, options)?;
-        let b = read_polygon_set(b_path, options)?;
+        let a = super::read_set(a_path, options)?;
+        let b = super::read_set(b_path, options)?;
         let inputs = Operands {
             a: SetCounts::of_set(a_path.display().to_string(), &a),
             b: SetCounts::of_set(b_path.display().to_string(), &b),
@@ -295,8 +297,16 @@ impl BooleanArgs {
         } else {
             out.mesh
         };
-        let bytes = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
-        self.out.write(&bytes, &report)?;
+        // The report describes the file: for a format of `f32`
+        // coordinates, the mesh as rounded and repaired.
+        let encoded = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
+        if let Some(rounded) = &encoded.rounded {
+            report = report.rounded_to_f32(out_file.clone(), rounded);
+        }
+        self.out.write(&encoded.bytes, &report)?;
+        if let Some(rounded) = &encoded.rounded {
+            warn_f32_defects(&rounded.report, out_path);
+        }
         let smoothing = report
             .smoothing
             .as_ref()

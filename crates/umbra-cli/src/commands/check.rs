@@ -7,7 +7,7 @@ use crate::stdout::{error_line, outln, print};
 use std::path::PathBuf;
 use std::process::ExitCode;
 use umbra::{
-    check_mesh, check_polygon_set, read_mesh, read_polygon_set, CheckReport, FileKind, FileReport,
+    check_mesh, check_polygon_set, read_mesh, CheckReport, FileKind, FileReport,
     MeshCheckReport, MeshReadOptions, ReadOptions, UmbraError,
 };
 
@@ -61,7 +61,7 @@ impl CheckArgs {
                 orientation: orientation(self.keep_orientation),
                 validate_coordinates: false,
             };
-            let r = check_polygon_set(&read_polygon_set(&self.input, options)?);
+            let r = check_polygon_set(&super::read_set(&self.input, options)?);
             self.print_2d(&file, &r)?;
             (r.is_valid(), problem(&r.coordinate_error, &r.topology_error))
         };

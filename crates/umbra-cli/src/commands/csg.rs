@@ -2,7 +2,7 @@
 //! files and Booleans (the JSON form below) with the 3D Boolean, batched and
 //! in parallel, deterministic whatever the thread count.
 
-use super::{csg_options, millis_since, smooth_result, tolerance_arg};
+use super::{csg_options, millis_since, smooth_result, tolerance_arg, warn_f32_defects};
 use crate::files::OutputArgs;
 use crate::progress::Progress;
 use crate::stdout::outln;
@@ -86,10 +86,19 @@ impl CsgArgs {
         let result = result.with_context(|| self.script.display().to_string())?;
         let result = smooth_result(result, triangulate, self.smooth)?;
         let file = self.out.output.display().to_string();
-        let bytes = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
-        self.out.write(&bytes, &result.report)?;
+        // The report describes the file: for a format of `f32`
+        // coordinates, the mesh as rounded and repaired.
+        let encoded = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
+        let report = match &encoded.rounded {
+            Some(rounded) => result.report.rounded_to_f32(rounded),
+            None => result.report,
+        };
+        self.out.write(&encoded.bytes, &report)?;
+        if let Some(rounded) = &encoded.rounded {
+            warn_f32_defects(&rounded.report, &self.out.output);
+        }
         if !self.quiet {
-            let r = &result.report;
+            let r = &report;
             let near = if r.smoothed_near_contacts == Some(true) {
                 " near the contacts"
             } else {
@@ -117,7 +126,7 @@ impl CsgArgs {
                 r.volume
             )?;
         }
-        if result.report.topologically_valid {
+        if report.topologically_valid {
             Ok(ExitCode::SUCCESS)
         } else {
             Err(super::invalid_result())

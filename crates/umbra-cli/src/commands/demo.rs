@@ -12,8 +12,8 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    check_mesh, demo_plant, encode_mesh, evaluate_csg_with_progress, render_mesh,
-    DemoDetail, FileKind, RenderOptions,
+    check_mesh, demo_plant, encode_mesh_with, evaluate_csg_with_progress, render_mesh,
+    DemoDetail, FileKind, MeshWriteOptions, RenderOptions,
 };
 
 /// Build the demo model (a process plant of some hundreds of Booleans),
@@ -66,8 +66,16 @@ impl DemoArgs {
         let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
         for (name, kind) in MESHES {
             let path = self.output.join(name);
-            let bytes = encode_mesh(kind, &result.mesh, &path.display().to_string())?;
-            files.push((path, bytes));
+            let encoded = encode_mesh_with(
+                kind,
+                &result.mesh,
+                MeshWriteOptions::default(),
+                &path.display().to_string(),
+            )?;
+            if let Some(rounded) = &encoded.rounded {
+                super::warn_f32_defects(&rounded.report, &path);
+            }
+            files.push((path, encoded.bytes));
         }
         let picture = render_mesh(
             &result.mesh,

@@ -128,12 +128,45 @@ pub fn millis_since(start: std::time::Instant) -> f64 {
     start.elapsed().as_secs_f64() * 1e3
 }
 
+/// Reads a 2D file ([`umbra::read_polygon_set_counted`]) and warns on
+/// standard error, naming it, about the points and lines skipped from its
+/// collections (GEOS and shapely overlays return them beside polygons).
+pub fn read_set(
+    path: &std::path::Path,
+    options: umbra::ReadOptions,
+) -> Result<umbra::PolygonSet2, umbra::UmbraError> {
+    let read = umbra::read_polygon_set_counted(path, options)?;
+    if read.skipped_non_areal > 0 {
+        crate::stdout::error_line(&format!(
+            "warning: {}: {} non-areal part(s) (points, lines) skipped; only polygons are read",
+            path.display(),
+            read.skipped_non_areal
+        ));
+    }
+    Ok(read.set)
+}
+
 /// Warns on standard error about holes written as exteriors.
 pub fn warn_orphans(orphans: usize, out_path: &std::path::Path) {
     if orphans > 0 {
         crate::stdout::error_line(&format!(
             "warning: {}: {orphans} clockwise ring(s) lie inside no outer ring (inside-out result); rerun with --keep-orientation to keep their direction",
             out_path.display()
+        ));
+    }
+}
+
+/// Warns on standard error when rounding a mesh to the `f32` coordinates
+/// of its format (binary STL, glTF) left intersecting facet pairs or
+/// coinciding vertices in the file written (features thinner than the
+/// `f32` spacing, which have no faithful `f32` form).
+pub fn warn_f32_defects(rounding: &umbra::F32Rounding, out_path: &std::path::Path) {
+    if rounding.pairs_left > 0 || rounding.collisions_left > 0 {
+        crate::stdout::error_line(&format!(
+            "warning: {}: rounding to f32 left {} intersecting facet pair(s) and {} pair(s) of coinciding vertices (features thinner than the f32 spacing); write .obj, .off, .ply, .3mf or --ascii .stl to keep every f64",
+            out_path.display(),
+            rounding.pairs_left,
+            rounding.collisions_left
         ));
     }
 }

@@ -6,7 +6,7 @@ use crate::files::{refuse_overlaps, write_all};
 use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use umbra::{
-    read_mesh, read_polygon_set, render_mesh, render_mesh_svg, render_polygons,
+    read_mesh, render_mesh, render_mesh_svg, render_polygons,
     render_polygons_svg, FileKind, MeshReadOptions, ReadOptions, RenderError, RenderOptions,
     Style, View,
 };
@@ -142,7 +142,7 @@ impl RenderArgs {
                 orientation: super::orientation(self.keep_orientation),
                 ..ReadOptions::default()
             };
-            let set = read_polygon_set(&self.input, options)?;
+            let set = super::read_set(&self.input, options)?;
             match picture {
                 Picture::Png => render_polygons(&set, &opts).and_then(|i| i.to_png()),
                 Picture::Svg => render_polygons_svg(&set, &opts).map(String::into_bytes),

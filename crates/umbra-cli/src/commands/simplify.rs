@@ -10,7 +10,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    encode_polygon_set, read_polygon_set, simplify, FileKind, FillRule, ReadOptions, SetCounts,
+    encode_polygon_set, simplify, FileKind, FillRule, ReadOptions, SetCounts,
     SimplifyReport,
 };
 
@@ -77,7 +77,7 @@ impl SimplifyArgs {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let set = read_polygon_set(in_path, options)?;
+        let set = super::read_set(in_path, options)?;
         let rule = self.rule.rule();
         let start = Instant::now();
         let result = simplify(&set, rule);

@@ -11,7 +11,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     as_triangle_mesh, default_mesh_tolerance, default_set_tolerance, encode_mesh_with,
-    encode_polygon_set, read_mesh, read_polygon_set, smooth_polygon_set, smooth_solid, FileKind,
+    encode_polygon_set, read_mesh, smooth_polygon_set, smooth_solid, FileKind,
     MeshCounts, MeshReadOptions, MeshVariant, ReadOptions, SetCounts, SmoothFileReport,
     SmoothOptions, SmoothReport, UmbraError,
 };
@@ -71,20 +71,28 @@ impl SmoothArgs {
         let total = millis_since(start);
         let smoothed = result.map_err(|source| smooth_error(&self.input, source))?;
         let out_file = self.out.output.display().to_string();
-        let bytes = encode_mesh_with(
+        let encoded = encode_mesh_with(
             out_kind,
             &smoothed.shape,
             self.out.mesh_options(),
             &out_file,
         )?;
-        let report = SmoothFileReport::new(
+        let mut report = SmoothFileReport::new(
             MeshCounts::of_mesh(self.input.display().to_string(), &mesh),
-            MeshCounts::of_mesh(out_file, &smoothed.shape),
+            MeshCounts::of_mesh(out_file.clone(), &smoothed.shape),
             &smoothed,
             smoothed.shape.check_topology(),
             total,
         );
-        self.out.write(&bytes, &report)?;
+        // The report describes the file: for a format of `f32`
+        // coordinates, the mesh as rounded and repaired.
+        if let Some(rounded) = &encoded.rounded {
+            report = report.rounded_to_f32(out_file, rounded);
+        }
+        self.out.write(&encoded.bytes, &report)?;
+        if let Some(rounded) = &encoded.rounded {
+            super::warn_f32_defects(&rounded.report, &self.out.output);
+        }
         outln!(
             "smooth ({}): {} -> {} vertices, {} -> {} facets; {}; volume {} -> {}; {:.3} ms -> {}",
             variant.name(),
@@ -107,7 +115,7 @@ impl SmoothArgs {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let set = read_polygon_set(&self.input, options)?;
+        let set = super::read_set(&self.input, options)?;
         let tol = self.tol.unwrap_or_else(|| default_set_tolerance(&set));
         let start = Instant::now();
         let result = smooth_polygon_set(&set, &SmoothOptions::new(tol));

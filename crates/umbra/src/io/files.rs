@@ -5,14 +5,16 @@
 //! `.off`, `.stl`, `.ply`, `.3mf` and `.glb` are 3D meshes (read and
 //! written).
 
-use super::geojson::read_geojson_file;
+use super::geojson::read_geojson_file_counted;
 use super::gltf_read::read_gltf_bytes;
 use super::mesh_text::{read_mesh_text, MeshReadOptions};
 use super::ply::read_ply_bytes;
+use super::rings::PolygonSetRead;
 use super::stl::read_stl_bytes;
 use super::text::{decode, read_bytes, write_bytes};
 use super::threemf_read::read_3mf_bytes;
-use crate::{read_wkt_file, ReadOptions, RingOrientation, UmbraError};
+use super::wkt::read_wkt_file_counted;
+use crate::{ReadOptions, RingOrientation, UmbraError};
 use std::path::Path;
 use topology::{PolygonMesh, PolygonSet2};
 
@@ -48,8 +50,10 @@ pub enum FileKind {
     Gltf,
 }
 
-const SUPPORTED: &str =
-    "supported: .wkt .geojson (2D), .svg (2D, write only), .obj .off .stl .ply .3mf .glb .gltf (3D)";
+/// The list of supported extensions that errors end with.
+fn supported() -> String {
+    format!("supported: {}", FileKind::supported_extensions())
+}
 
 impl FileKind {
     /// Every kind, in the order of the list of supported extensions.
@@ -96,12 +100,53 @@ impl FileKind {
         }
         let detail = match ext {
             Some(e) if e == "png" => {
-                format!("'.png' is a picture: pictures are written by `umbra render` ({SUPPORTED})")
+                format!(
+                    "'.png' is a picture: pictures are written by `umbra render` ({})",
+                    supported()
+                )
             }
-            Some(e) => format!("unknown extension '.{e}' ({SUPPORTED})"),
-            None => format!("no file extension ({SUPPORTED})"),
+            Some(e) => format!("unknown extension '.{e}' ({})", supported()),
+            None => format!("no file extension ({})", supported()),
         };
         Err(UmbraError::UnsupportedFileType { file, detail })
+    }
+
+    /// Every supported extension by dimension, generated from
+    /// [`FileKind::ALL`] (the table [`FileKind::from_path`] dispatches by):
+    /// what a front end lists as the formats it reads and writes.
+    ///
+    /// ```
+    /// use umbra::FileKind;
+    /// assert_eq!(
+    ///     FileKind::supported_extensions(),
+    ///     "2D: .wkt .geojson (.svg written only); 3D: .obj .off .stl .ply .3mf .glb .gltf"
+    /// );
+    /// ```
+    pub fn supported_extensions() -> String {
+        let list = |keep: &dyn Fn(FileKind) -> bool| {
+            FileKind::ALL
+                .into_iter()
+                .filter(|&k| keep(k))
+                .map(|k| format!(".{}", k.extension()))
+                .collect::<Vec<_>>()
+                .join(" ")
+        };
+        let planar_read = list(&|k| !k.is_mesh() && k.can_read());
+        let planar_written = list(&|k| !k.is_mesh() && !k.can_read());
+        let mesh_read = list(&|k| k.is_mesh() && k.can_read());
+        let mesh_written = list(&|k| k.is_mesh() && !k.can_read());
+        let only = |l: String| {
+            if l.is_empty() {
+                l
+            } else {
+                format!(" ({l} written only)")
+            }
+        };
+        format!(
+            "2D: {planar_read}{}; 3D: {mesh_read}{}",
+            only(planar_written),
+            only(mesh_written)
+        )
     }
 
     /// The extension, without the dot (`"3mf"`).
@@ -212,7 +257,7 @@ fn wrong_dimension(path: &Path, want: &str) -> UmbraError {
 pub(crate) fn wrong_dimension_of(file: &str, want: &str) -> UmbraError {
     UmbraError::UnsupportedFileType {
         file: file.to_string(),
-        detail: format!("expected a {want} file here ({SUPPORTED})"),
+        detail: format!("expected a {want} file here ({})", supported()),
     }
 }
 
@@ -221,22 +266,39 @@ fn write_only(path: &Path, kind: FileKind) -> UmbraError {
     UmbraError::UnsupportedFileType {
         file: path.display().to_string(),
         detail: format!(
-            "'.{}' ({}) can be written but not read ({SUPPORTED})",
+            "'.{}' ({}) can be written but not read ({})",
             kind.extension(),
-            kind.name()
+            kind.name(),
+            supported()
         ),
     }
 }
 
 /// Reads a 2D polygon set from a file whose format is decided by its
-/// extension.
+/// extension. The points and lines of a collection are skipped; see
+/// [`read_polygon_set_counted`] for how many.
 pub fn read_polygon_set(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    match FileKind::from_path(path)? {
-        FileKind::Wkt => read_wkt_file(path, options),
-        FileKind::GeoJson => read_geojson_file(path, options),
-        FileKind::Svg => Err(write_only(path, FileKind::Svg)),
-        _ => Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
-    }
+    read_polygon_set_counted(path, options).map(|r| r.set)
+}
+
+/// Reads a 2D polygon set from a file whose format is decided by its
+/// extension, with the number of non-areal parts (points, lines) skipped
+/// from its collections, for a front end to warn about. A file with no
+/// polygonal part at all is [`UmbraError::UnsupportedGeometry`].
+pub fn read_polygon_set_counted(
+    path: &Path,
+    options: ReadOptions,
+) -> Result<PolygonSetRead, UmbraError> {
+    let (set, skipped_non_areal) = match FileKind::from_path(path)? {
+        FileKind::Wkt => read_wkt_file_counted(path, options)?,
+        FileKind::GeoJson => read_geojson_file_counted(path, options)?,
+        FileKind::Svg => return Err(write_only(path, FileKind::Svg)),
+        _ => return Err(wrong_dimension(path, "2D (.wkt, .geojson)")),
+    };
+    Ok(PolygonSetRead {
+        set,
+        skipped_non_areal,
+    })
 }
 
 /// Writes a 2D polygon set to a file whose format is decided by its
@@ -317,8 +379,8 @@ pub fn write_mesh_with(
     options: MeshWriteOptions,
 ) -> Result<(), UmbraError> {
     let kind = FileKind::from_path(path)?;
-    let bytes = crate::encode_mesh_with(kind, mesh, options, &path.display().to_string())?;
-    write_bytes(path, &bytes)
+    let encoded = crate::encode_mesh_with(kind, mesh, options, &path.display().to_string())?;
+    write_bytes(path, &encoded.bytes)
 }
 
 /// An error of a writer about `<output>`, renamed to `file`.

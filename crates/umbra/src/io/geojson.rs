@@ -2,7 +2,12 @@
 //!
 //! Read: a `Polygon`, `MultiPolygon`, `GeometryCollection` of those, a
 //! `Feature` with such a geometry (or a `null` one, skipped) or a
-//! `FeatureCollection` of features. Positions may carry a third number
+//! `FeatureCollection` of features. Points and lines (`Point`,
+//! `MultiPoint`, `LineString`, `MultiLineString`, as GEOS and shapely
+//! overlays return beside polygons, or features of another layer) are
+//! skipped and counted ([`crate::PolygonSetRead::skipped_non_areal`]), as
+//! the WKT reader skips them; a document with no polygonal part at all is
+//! refused. Positions may carry a third number
 //! (altitude, RFC 7946 section 3.1.1), which is ignored. Rings are taken by
 //! role or as written, exactly as for WKT ([`crate::ReadOptions`]).
 //!
@@ -11,7 +16,7 @@
 //! dissertation's interior-on-the-left convention). Coordinates are printed
 //! in the shortest form that reads back to the same `f64`.
 
-use super::rings::{build_set, strip_closing, validate_polygons};
+use super::rings::{build_set, strip_closing, validate_polygons, NonAreal};
 use crate::{layout_polygons, Polygons, ReadOptions, RingOrientation, UmbraError};
 use robust_arith::Point2;
 use serde_json::Value;
@@ -29,8 +34,13 @@ fn malformed(file: &str, message: impl Into<String>) -> UmbraError {
 }
 
 /// Reads GeoJSON text into polygons of open rings; `file` names the source
-/// in errors.
+/// in errors. Points and lines are skipped (see the module docs).
 pub fn parse_geojson_polygons(text: &str, file: &str) -> Result<Polygons, UmbraError> {
+    parse_geojson_polygons_counted(text, file).map(|(polygons, _)| polygons)
+}
+
+/// [`parse_geojson_polygons`] and the number of non-areal parts skipped.
+fn parse_geojson_polygons_counted(text: &str, file: &str) -> Result<(Polygons, usize), UmbraError> {
     let text = text.strip_prefix('\u{feff}').unwrap_or(text);
     if text.trim().is_empty() {
         return Err(UmbraError::Empty {
@@ -41,8 +51,9 @@ pub fn parse_geojson_polygons(text: &str, file: &str) -> Result<Polygons, UmbraE
     // exhaust the stack.
     let value: Value = serde_json::from_str(text).map_err(|e| malformed(file, e.to_string()))?;
     let mut polygons = Polygons::new();
-    collect(&value, file, &mut polygons, "the document")?;
-    Ok(polygons)
+    let mut skipped = NonAreal::default();
+    collect(&value, file, &mut polygons, &mut skipped, "the document")?;
+    skipped.finish(polygons, file)
 }
 
 /// Reads GeoJSON text into a polygon set. Errors name the source as
@@ -58,26 +69,47 @@ pub fn parse_geojson_polygons(text: &str, file: &str) -> Result<Polygons, UmbraE
 /// assert_eq!(set.signed_area(), 4.0);
 /// ```
 pub fn read_geojson_str(text: &str, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    parse_set(text, "<string>", options)
+    parse_set(text, "<string>", options).map(|(set, _)| set)
 }
 
-/// Reads a GeoJSON file into a polygon set; errors name the file.
+/// Reads a GeoJSON file into a polygon set; errors name the file. Points
+/// and lines are skipped (see the module docs).
 pub fn read_geojson_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
+    read_geojson_file_counted(path, options).map(|(set, _)| set)
+}
+
+/// [`read_geojson_file`] and the number of non-areal parts skipped.
+pub(crate) fn read_geojson_file_counted(
+    path: &Path,
+    options: ReadOptions,
+) -> Result<(PolygonSet2, usize), UmbraError> {
     let file = path.display().to_string();
     let text = super::files::read_text(path, FORMAT)?;
     parse_set(&text, &file, options)
 }
 
-fn parse_set(text: &str, file: &str, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    let polygons = parse_geojson_polygons(text, file)?;
+/// Parses, validates and builds; the set and the non-areal parts skipped.
+fn parse_set(
+    text: &str,
+    file: &str,
+    options: ReadOptions,
+) -> Result<(PolygonSet2, usize), UmbraError> {
+    let (polygons, skipped) = parse_geojson_polygons_counted(text, file)?;
     if options.validate_coordinates {
         validate_polygons(&polygons, file)?;
     }
-    build_set(&polygons, options.orientation, file)
+    Ok((build_set(&polygons, options.orientation, file)?, skipped))
 }
 
-/// Appends the polygons of one GeoJSON object.
-fn collect(v: &Value, file: &str, out: &mut Polygons, what: &str) -> Result<(), UmbraError> {
+/// Appends the polygons of one GeoJSON object and skips its points and
+/// lines.
+fn collect(
+    v: &Value,
+    file: &str,
+    out: &mut Polygons,
+    skipped: &mut NonAreal,
+    what: &str,
+) -> Result<(), UmbraError> {
     let obj = v
         .as_object()
         .ok_or_else(|| malformed(file, format!("{what} is not a JSON object")))?;
@@ -100,18 +132,24 @@ fn collect(v: &Value, file: &str, out: &mut Polygons, what: &str) -> Result<(), 
     match kind {
         "FeatureCollection" => {
             for (i, f) in array("features")?.iter().enumerate() {
-                collect(f, file, out, &format!("feature {}", i + 1))?;
+                collect(f, file, out, skipped, &format!("feature {}", i + 1))?;
             }
         }
         "Feature" => {
             let g = member("geometry")?;
             if !g.is_null() {
-                collect(g, file, out, &format!("the geometry of {what}"))?;
+                collect(g, file, out, skipped, &format!("the geometry of {what}"))?;
             }
         }
         "GeometryCollection" => {
             for (i, g) in array("geometries")?.iter().enumerate() {
-                collect(g, file, out, &format!("geometry {} of {what}", i + 1))?;
+                collect(
+                    g,
+                    file,
+                    out,
+                    skipped,
+                    &format!("geometry {} of {what}", i + 1),
+                )?;
             }
         }
         "Polygon" => {
@@ -130,10 +168,7 @@ fn collect(v: &Value, file: &str, out: &mut Polygons, what: &str) -> Result<(), 
             }
         }
         "Point" | "MultiPoint" | "LineString" | "MultiLineString" => {
-            return Err(UmbraError::UnsupportedGeometry {
-                file: file.to_string(),
-                found: format!("GeoJSON {kind} in {what}"),
-            });
+            skipped.skip(|| format!("GeoJSON {kind} in {what}"));
         }
         other => {
             return Err(malformed(
@@ -295,6 +330,47 @@ mod tests {
         let out = write_geojson_string(&set, RingOrientation::ByRole).unwrap();
         let back = read_geojson_str(&out, ReadOptions::keep_orientation()).unwrap();
         assert_eq!(back.signed_area(), 13.0);
+    }
+
+    /// Points and lines in a collection or as features beside polygons,
+    /// empty or not, are skipped and counted (as the WKT reader does); a
+    /// document of nothing else is refused, naming the first.
+    #[test]
+    fn points_and_lines_are_skipped_beside_polygons() {
+        let text = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": {"type": "GeometryCollection", "geometries": [
+                {"type": "Polygon", "coordinates": [
+                    [[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]],
+                    [[1, 1], [1, 3], [3, 3], [3, 1], [1, 1]]]},
+                {"type": "LineString", "coordinates": [[4, 0], [9, 0]]},
+                {"type": "Point", "coordinates": []},
+                {"type": "GeometryCollection", "geometries": [
+                    {"type": "MultiPoint", "coordinates": [[1, 1], [2, 2]]}]}]}},
+            {"type": "Feature", "geometry": {"type": "LineString", "coordinates": []}},
+            {"type": "Feature", "geometry": {"type": "MultiLineString", "coordinates": [[[0, 0], [1, 1]]]}},
+            {"type": "Feature", "geometry": {"type": "MultiPolygon", "coordinates": [
+                [[[10, 0], [11, 0], [11, 2], [10, 2], [10, 0]]]]}}]}"#;
+        let (set, skipped) = parse_set(text, "x.geojson", ReadOptions::default()).unwrap();
+        assert_eq!(set.signed_area(), 16.0 - 4.0 + 2.0);
+        assert_eq!(set.vertex_count(), 12);
+        assert_eq!(skipped, 5);
+        let only_lines = r#"{"type": "FeatureCollection", "features": [
+            {"type": "Feature", "geometry": {"type": "LineString", "coordinates": []}},
+            {"type": "Feature", "geometry": {"type": "Point", "coordinates": [1, 2]}}]}"#;
+        assert_eq!(
+            parse_set(only_lines, "x.geojson", ReadOptions::default())
+                .unwrap_err()
+                .to_string(),
+            "x.geojson: unsupported geometry: GeoJSON LineString in the geometry of feature 1 (expected POLYGON or MULTIPOLYGON)"
+        );
+        // A collection of nothing is the empty set, without a skip.
+        let (set, skipped) = parse_set(
+            r#"{"type": "GeometryCollection", "geometries": []}"#,
+            "x.geojson",
+            ReadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!((set.is_empty(), skipped), (true, 0));
     }
 
     #[test]

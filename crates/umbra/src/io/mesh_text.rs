@@ -22,7 +22,7 @@
 //! loops is written as its triangulation by internal edges only (section
 //! 4.8), which keeps the mesh closed.
 
-use super::origin::{finish, Origins};
+use super::origin::{finish, refuse_vertices_alone, Origins};
 use super::text::{parse_number, shorten, strip_bom};
 use crate::UmbraError;
 use boolean_3d::triangulate_facet;
@@ -208,6 +208,7 @@ pub(crate) fn parse_obj_with_origins(
             file: file.to_string(),
         });
     }
+    refuse_vertices_alone(vertices.len(), facets.len(), &origins, file, F)?;
     Ok((PolygonMesh::new(vertices, facets), origins))
 }
 
@@ -355,6 +356,7 @@ pub(crate) fn parse_off_with_origins(
         facets.push(Facet::from_loop(&loop_));
         origins.face_places.push(n as u32);
     }
+    refuse_vertices_alone(vertices.len(), facets.len(), &origins, file, F)?;
     Ok((PolygonMesh::new(vertices, facets), origins))
 }
 

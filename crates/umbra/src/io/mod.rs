@@ -25,8 +25,8 @@ mod wkt;
 mod wkt_diagnose;
 
 pub use files::{
-    read_mesh, read_polygon_set, write_mesh, write_mesh_with, write_polygon_set, FileKind,
-    MeshWriteOptions,
+    read_mesh, read_polygon_set, read_polygon_set_counted, write_mesh, write_mesh_with,
+    write_polygon_set, FileKind, MeshWriteOptions,
 };
 pub(crate) use files::{rename_output, wrong_dimension_of};
 pub use geo::{from_geo, to_geo};
@@ -38,11 +38,12 @@ pub use gltf::{mesh_to_glb, mesh_to_gltf};
 pub use gltf_read::parse_glb;
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
 pub use ply::{mesh_to_ply, parse_ply};
-pub use rings::{layout_polygons, PolygonLayout, Polygons, RingOrientation};
+pub use rings::{layout_polygons, PolygonLayout, PolygonSetRead, Polygons, RingOrientation};
 pub use stl::{mesh_to_stl, parse_stl};
 pub use svg::polygon_set_to_svg;
 pub use threemf::mesh_to_3mf;
 pub use threemf_read::parse_3mf;
+pub(crate) use weld::welded;
 pub use wkt::{
     parse_wkt_polygons, polygons_to_wkt, read_wkt_file, read_wkt_str, write_wkt_file,
     write_wkt_string, ReadOptions,

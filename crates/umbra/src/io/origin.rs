@@ -118,6 +118,32 @@ pub(crate) fn describe(error: &TopologyError, mesh: &PolygonMesh, origins: &Orig
     }
 }
 
+/// Refuses a file of vertices without a single face (a point cloud, an
+/// OBJ of lines): [`UmbraError::Malformed`] naming the file, "no facets",
+/// instead of an empty solid that would make every operation on it
+/// silently empty. A file of neither vertices nor faces is the empty
+/// solid, which the writers write for an empty result. (STL and glTF
+/// cannot say it: their vertices are the corners of their triangles.)
+pub(crate) fn refuse_vertices_alone(
+    vertices: usize,
+    faces: usize,
+    origins: &Origins,
+    file: &str,
+    format: &'static str,
+) -> Result<(), UmbraError> {
+    if vertices == 0 || faces > 0 {
+        return Ok(());
+    }
+    Err(UmbraError::Malformed {
+        file: file.to_string(),
+        format,
+        message: format!(
+            "no facets: {vertices} vertices but no {}s (a solid needs facets; a file of neither is the empty solid)",
+            origins.face_word
+        ),
+    })
+}
+
 /// Validates the coordinates (if `options` asks) and checks the closure
 /// constraints of section 4.2 (if `check`), reporting a violation in the
 /// file's terms as [`UmbraError::InvalidMesh`].

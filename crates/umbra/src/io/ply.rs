@@ -22,7 +22,7 @@
 //! as its triangulation, section 4.8). Binary little endian by default.
 
 use super::mesh_text::{faces, MeshReadOptions};
-use super::origin::{finish, Origins};
+use super::origin::{finish, refuse_vertices_alone, Origins};
 use super::text::{is_infinity_literal, overflow_message, push_f64, shorten};
 use crate::UmbraError;
 use ply_rs_bw::parser::{Parser, Reader};
@@ -521,6 +521,7 @@ pub(crate) fn parse_ply_with_origins(
     }
     // A header with a vertex element of count 0 is the empty mesh (what
     // the writer writes for an empty result).
+    refuse_vertices_alone(vertices.len(), facets.len(), &origins, file, FORMAT)?;
     Ok((PolygonMesh::new(vertices, facets), origins))
 }
 

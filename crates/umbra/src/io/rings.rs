@@ -35,6 +35,53 @@ pub enum RingOrientation {
 /// closing duplicate (the last point joins back to the first).
 pub type Polygons = Vec<Vec<Vec<Point2>>>;
 
+/// A polygon set read from a file, and what the reader skipped
+/// ([`crate::read_polygon_set_counted`]).
+#[derive(Clone, Debug, PartialEq)]
+pub struct PolygonSetRead {
+    /// The set of the file's polygonal parts.
+    pub set: PolygonSet2,
+    /// Parts without area (points, multipoints, lines, multilines, empty
+    /// or not) skipped from a collection (a WKT or GeoJSON
+    /// `GeometryCollection`, a GeoJSON `FeatureCollection`), as GEOS and
+    /// shapely overlays return beside their polygons. A file with no
+    /// polygonal part at all is refused instead.
+    pub skipped_non_areal: usize,
+}
+
+/// The non-areal parts (points, lines) a 2D reader skipped: counted for
+/// a warning, and the first named for the error when nothing areal is
+/// left (a file of lines or points alone is no polygon file).
+#[derive(Debug, Default)]
+pub(crate) struct NonAreal {
+    /// Parts skipped.
+    pub count: usize,
+    /// The first, as an [`UmbraError::UnsupportedGeometry`] names it.
+    pub first: Option<String>,
+}
+
+impl NonAreal {
+    /// Skips the part described by `found`.
+    pub fn skip(&mut self, found: impl FnOnce() -> String) {
+        self.count += 1;
+        if self.first.is_none() {
+            self.first = Some(found());
+        }
+    }
+
+    /// `polygons` and the count skipped, or the error naming the first
+    /// part skipped when there is no polygon (not even an empty one).
+    pub fn finish(self, polygons: Polygons, file: &str) -> Result<(Polygons, usize), UmbraError> {
+        match self.first {
+            Some(found) if polygons.is_empty() => Err(UmbraError::UnsupportedGeometry {
+                file: file.to_string(),
+                found,
+            }),
+            _ => Ok((polygons, self.count)),
+        }
+    }
+}
+
 /// Removes the closing duplicate of a ring (a last point equal to the
 /// first), which is not a separate vertex.
 pub(crate) fn strip_closing(ring: &mut Vec<Point2>) {

@@ -87,7 +87,7 @@
 //! expand.
 
 use super::mesh_text::MeshReadOptions;
-use super::origin::{finish, Origins};
+use super::origin::{finish, refuse_vertices_alone, Origins};
 use super::text::{decode, parse_number, shorten};
 use crate::UmbraError;
 use robust_arith::Point3;
@@ -1152,6 +1152,13 @@ fn expand(models: &[Model], file: &str) -> Result<(TriangleMesh, Origins), Umbra
             &mut out,
         )?;
     }
+    refuse_vertices_alone(
+        out.vertices.len(),
+        out.triangles.len(),
+        &out.origins,
+        file,
+        FORMAT,
+    )?;
     let mesh = TriangleMesh::new(out.vertices, out.triangles);
     Ok((mesh, out.origins))
 }

@@ -10,6 +10,7 @@
 use super::origin::Origins;
 use robust_arith::Point3;
 use std::collections::HashMap;
+use topology::TriangleMesh;
 
 /// Welds triangle corners by exact position (see the module docs); the
 /// place of a vertex is that of the first triangle naming it.
@@ -52,4 +53,19 @@ impl Welder {
         self.triangles.push(t);
         self.origins.face_places.push(place);
     }
+}
+
+/// The mesh a reader that welds (STL, glTF) makes of `mesh`'s triangles
+/// written in order: corners welded by exact position, unreferenced
+/// vertices gone. A corner naming no vertex is skipped with its triangle
+/// (no writer writes one).
+pub(crate) fn welded(mesh: &TriangleMesh) -> TriangleMesh {
+    let mut welder = Welder::new(mesh.vertices.len(), "triangle");
+    for (place, t) in mesh.triangles.iter().enumerate() {
+        let [Some(&a), Some(&b), Some(&c)] = t.map(|v| mesh.vertices.get(v as usize)) else {
+            continue;
+        };
+        welder.triangle([a, b, c], u32::try_from(place).unwrap_or(u32::MAX));
+    }
+    TriangleMesh::new(welder.vertices, welder.triangles)
 }

@@ -1,5 +1,10 @@
 //! WKT input and output of [`PolygonSet2`] (`POLYGON`, `MULTIPOLYGON`).
 //!
+//! A `GEOMETRYCOLLECTION` is read for its polygonal members; its points
+//! and lines (which GEOS and shapely overlays return beside polygons) are
+//! skipped and counted ([`crate::PolygonSetRead::skipped_non_areal`]), and
+//! a file with no polygonal part at all is refused.
+//!
 //! Parsing uses the `wkt` crate after a structural pre-scan (balanced
 //! parentheses, one geometry per file, bounded nesting) so that truncated
 //! files and trailing text are reported instead of silently dropped.
@@ -10,7 +15,9 @@
 //! Coordinates are written in Rust's shortest round-trip formatting, so a
 //! write followed by a read gives the same `f64` values bit for bit.
 
-use super::rings::{build_set, layout_polygons, strip_closing, validate_polygons, Polygons};
+use super::rings::{
+    build_set, layout_polygons, strip_closing, validate_polygons, NonAreal, Polygons,
+};
 use super::text::strip_bom;
 use super::wkt_diagnose::{diagnose, find_overflow};
 use crate::{RingOrientation, UmbraError};
@@ -66,11 +73,20 @@ impl ReadOptions {
 /// assert_eq!(set.vertex_count(), 4);
 /// ```
 pub fn read_wkt_str(text: &str, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    parse_wkt(text, "<string>", options)
+    parse_wkt(text, "<string>", options).map(|(set, _)| set)
 }
 
-/// Reads a WKT file into a polygon set; errors name the file.
+/// Reads a WKT file into a polygon set; errors name the file. The points
+/// and lines of a collection are skipped (see the module docs).
 pub fn read_wkt_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
+    read_wkt_file_counted(path, options).map(|(set, _)| set)
+}
+
+/// [`read_wkt_file`] and the number of non-areal parts skipped.
+pub(crate) fn read_wkt_file_counted(
+    path: &Path,
+    options: ReadOptions,
+) -> Result<(PolygonSet2, usize), UmbraError> {
     let file = path.display().to_string();
     let bytes = std::fs::read(path).map_err(|source| UmbraError::Io {
         file: file.clone(),
@@ -82,8 +98,25 @@ pub fn read_wkt_file(path: &Path, options: ReadOptions) -> Result<PolygonSet2, U
 }
 
 /// Reads WKT text into polygons of open rings (no closing duplicates),
-/// without building a set; `file` names the source in errors.
+/// without building a set; `file` names the source in errors. The points
+/// and lines of a collection are skipped (see the module docs).
+///
+/// ```
+/// use umbra::parse_wkt_polygons;
+/// let p = parse_wkt_polygons(
+///     "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 0 1, 0 0)), LINESTRING (0 0, 5 5), POINT EMPTY)",
+///     "x.wkt",
+/// ).unwrap();
+/// assert_eq!(p, vec![vec![vec![[0.0, 0.0], [1.0, 0.0], [0.0, 1.0]]]]);
+/// let e = parse_wkt_polygons("LINESTRING (0 0, 5 5)", "x.wkt").unwrap_err().to_string();
+/// assert_eq!(e, "x.wkt: unsupported geometry: LINESTRING (expected POLYGON or MULTIPOLYGON)");
+/// ```
 pub fn parse_wkt_polygons(text: &str, file: &str) -> Result<Polygons, UmbraError> {
+    parse_wkt_polygons_counted(text, file).map(|(polygons, _)| polygons)
+}
+
+/// [`parse_wkt_polygons`] and the number of non-areal parts skipped.
+fn parse_wkt_polygons_counted(text: &str, file: &str) -> Result<(Polygons, usize), UmbraError> {
     let text = strip_bom(text);
     let blanked = blank_srid(text, file)?;
     let text = blanked.as_deref().unwrap_or(text);
@@ -104,17 +137,22 @@ pub fn parse_wkt_polygons(text: &str, file: &str) -> Result<Polygons, UmbraError
         message: diagnose(text).unwrap_or_else(|| explain_parse_error(text, msg)),
     })?;
     let mut polygons = Polygons::new();
-    collect_polygons(&geometry, file, "", &mut polygons)?;
-    Ok(polygons)
+    let mut skipped = NonAreal::default();
+    collect_polygons(&geometry, "", &mut polygons, &mut skipped);
+    skipped.finish(polygons, file)
 }
 
-/// Parses, validates and builds.
-fn parse_wkt(text: &str, file: &str, options: ReadOptions) -> Result<PolygonSet2, UmbraError> {
-    let polygons = parse_wkt_polygons(text, file)?;
+/// Parses, validates and builds; the set and the non-areal parts skipped.
+fn parse_wkt(
+    text: &str,
+    file: &str,
+    options: ReadOptions,
+) -> Result<(PolygonSet2, usize), UmbraError> {
+    let (polygons, skipped) = parse_wkt_polygons_counted(text, file)?;
     if options.validate_coordinates {
         validate_polygons(&polygons, file)?;
     }
-    build_set(&polygons, options.orientation, file)
+    Ok((build_set(&polygons, options.orientation, file)?, skipped))
 }
 
 /// The text with an extended-WKT `SRID=n;` prefix replaced by as many
@@ -255,30 +293,27 @@ fn kind(geometry: &Wkt<f64>) -> &'static str {
     }
 }
 
-/// Appends the polygons of `geometry`; `context` says where a collection
-/// member sits, for messages.
+/// Appends the polygons of `geometry` and skips its points and lines;
+/// `context` says where a collection member sits, for messages.
 fn collect_polygons(
     geometry: &Wkt<f64>,
-    file: &str,
     context: &str,
     out: &mut Polygons,
-) -> Result<(), UmbraError> {
-    let unsupported = |found: String| UmbraError::UnsupportedGeometry {
-        file: file.to_string(),
-        found,
-    };
+    skipped: &mut NonAreal,
+) {
     match geometry {
         Wkt::Polygon(p) => out.push(open_rings(p)),
         Wkt::MultiPolygon(mp) => out.extend(mp.polygons().iter().map(open_rings)),
         Wkt::GeometryCollection(gc) => {
             for (i, member) in gc.geometries().iter().enumerate() {
                 let ctx = format!("{context}GEOMETRYCOLLECTION member {} is a ", i + 1);
-                collect_polygons(member, file, &ctx, out)?;
+                collect_polygons(member, &ctx, out, skipped);
             }
         }
-        other => return Err(unsupported(format!("{context}{}", kind(other)))),
+        Wkt::Point(_) | Wkt::LineString(_) | Wkt::MultiPoint(_) | Wkt::MultiLineString(_) => {
+            skipped.skip(|| format!("{context}{}", kind(geometry)));
+        }
     }
-    Ok(())
 }
 
 /// The rings of a WKT polygon without their closing duplicates, in the
@@ -455,6 +490,33 @@ mod tests {
         }
     }
 
+    /// A collection's points and lines (GEOS and shapely overlays return
+    /// them beside polygons), empty or not, nested or not, are skipped and
+    /// counted; its polygons are read.
+    #[test]
+    fn collections_keep_their_polygons_and_skip_points_and_lines() {
+        let text = "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0), (1 1, 3 1, 3 3, 1 3, 1 1)), LINESTRING (4 0, 9 0), POINT (7 7), POINT EMPTY, GEOMETRYCOLLECTION (MULTIPOLYGON (((10 0, 11 0, 11 2, 10 2, 10 0))), MULTILINESTRING ((0 0, 1 1)), MULTIPOINT ((1 1), (2 2))), LINESTRING EMPTY)";
+        let (set, skipped) = parse_wkt(text, "x.wkt", ReadOptions::default()).unwrap();
+        assert_eq!(set.signed_area(), 16.0 - 4.0 + 2.0);
+        assert_eq!(set.vertex_count(), 12);
+        assert_eq!(skipped, 6);
+        let (set, skipped) = parse_wkt(
+            "MULTIPOLYGON (((0 0, 1 0, 0 1, 0 0)))",
+            "x.wkt",
+            ReadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!((set.signed_area(), skipped), (0.5, 0));
+        // An empty polygon beside a line is an empty set, not an error.
+        let (set, skipped) = parse_wkt(
+            "GEOMETRYCOLLECTION (POLYGON EMPTY, LINESTRING (0 0, 1 1))",
+            "x.wkt",
+            ReadOptions::default(),
+        )
+        .unwrap();
+        assert_eq!((set.is_empty(), skipped), (true, 1));
+    }
+
     #[test]
     fn bad_text_is_named_and_explained() {
         let cases = [
@@ -462,9 +524,11 @@ mod tests {
             ("   \n", "empty"),
             ("POINT (1 2)", "POINT"),
             ("LINESTRING (0 0, 1 1)", "LINESTRING"),
+            ("POINT EMPTY", "unsupported geometry: POINT"),
+            ("LINESTRING Z EMPTY", "unsupported geometry: LINESTRING"),
             (
-                "GEOMETRYCOLLECTION (POLYGON ((0 0, 1 0, 1 1, 0 0)), POINT (1 1))",
-                "member 2 is a POINT",
+                "GEOMETRYCOLLECTION (POINT (1 1), GEOMETRYCOLLECTION (LINESTRING EMPTY))",
+                "unsupported geometry: GEOMETRYCOLLECTION member 1 is a POINT",
             ),
             ("POLYGON ((0 0, 1 0, 1", "truncated"),
             (

@@ -15,6 +15,7 @@ use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
 use super::tree::{path_string, CsgNode, CsgShape, MAX_DEPTH};
 use crate::nary::reduce_op;
+use crate::{F32Rounding, RoundedMesh};
 use boolean_3d::{
     boolean_mesh, boolean_mesh_with_contacts, boolean_triangles, boolean_triangles_with_contacts,
     triangulate_mesh, BooleanOp, Contacts,
@@ -116,6 +117,11 @@ pub struct CsgReport {
     /// when the result was not smoothed.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smoothed_near_contacts: Option<bool>,
+    /// What rounding to `f32` did, when the result was written to a format
+    /// of `f32` coordinates ([`CsgReport::rounded_to_f32`]); absent
+    /// otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub f32_rounding: Option<F32Rounding>,
     /// Wall-clock milliseconds: `total` is the whole evaluation.
     pub timings_ms: CsgTimings,
     /// One entry per node, in tree order (pre-order).
@@ -123,6 +129,20 @@ pub struct CsgReport {
 }
 
 impl CsgReport {
+    /// Describes `mesh` as the output: counts, validity, manifoldness,
+    /// volume and bounds.
+    fn describe(&mut self, mesh: &PolygonMesh) {
+        let topology = mesh.check_topology();
+        self.vertices = mesh.vertices.len();
+        self.facets = mesh.facets.len();
+        self.half_edges = mesh.half_edge_count();
+        self.topologically_valid = topology.is_ok();
+        self.topology_error = topology.err().map(|e| e.to_string());
+        self.non_manifold_edges = non_manifold_edge_count(mesh);
+        self.volume = topology::mesh_signed_volume(mesh);
+        self.bounds = mesh.bounding_box();
+    }
+
     /// The report once the result was smoothed in `smooth_ms` (only near
     /// the contacts when `near`): the output described again (counts,
     /// validity, manifoldness, volume, bounds), the smoothing report kept,
@@ -134,19 +154,22 @@ impl CsgReport {
         near: bool,
     ) -> Self {
         self.smoothed_near_contacts = Some(near);
-        let mesh = &smoothed.shape;
-        let topology = mesh.check_topology();
-        self.vertices = mesh.vertices.len();
-        self.facets = mesh.facets.len();
-        self.half_edges = mesh.half_edge_count();
-        self.topologically_valid = topology.is_ok();
-        self.topology_error = topology.err().map(|e| e.to_string());
-        self.non_manifold_edges = non_manifold_edge_count(mesh);
-        self.volume = topology::mesh_signed_volume(mesh);
-        self.bounds = mesh.bounding_box();
+        self.describe(&smoothed.shape);
         self.smoothing = Some(smoothed.report.clone());
         self.timings_ms.smooth = Some(smooth_ms);
         self.timings_ms.total += smooth_ms;
+        self
+    }
+
+    /// The report once the result was rounded to `f32` for writing
+    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output
+    /// described as written (counts, validity, manifoldness, volume,
+    /// bounds), the rounding report kept, `total` including the rounding.
+    pub fn rounded_to_f32(mut self, rounded: &RoundedMesh) -> Self {
+        self.describe(&rounded.mesh);
+        self.f32_rounding = Some(rounded.report.clone());
+        self.timings_ms.round_f32 = Some(rounded.ms);
+        self.timings_ms.total += rounded.ms;
         self
     }
 }
@@ -155,11 +178,15 @@ impl CsgReport {
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
 pub struct CsgTimings {
     /// The whole evaluation (parsing and file I/O excluded), smoothing
-    /// included when it ran.
+    /// and rounding to `f32` included when they ran.
     pub total: f64,
     /// Smoothing of the result, when it ran.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smooth: Option<f64>,
+    /// Rounding the result to `f32` and repairing it for a format of
+    /// `f32` coordinates ([`crate::round_to_f32`]), when it ran.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub round_f32: Option<f64>,
 }
 
 /// The result of an evaluation.
@@ -630,9 +657,11 @@ pub fn evaluate_csg_with_progress(
         bounds,
         smoothing: None,
         smoothed_near_contacts: None,
+        f32_rounding: None,
         timings_ms: CsgTimings {
             total: start.elapsed().as_secs_f64() * 1e3,
             smooth: None,
+            round_f32: None,
         },
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };
