@@ -15,8 +15,78 @@
 //! meshes are the same, so the comparison near it is the comparison of
 //! the whole meshes.
 
+use crate::mesh::region::Facets;
 use crate::{MeshDefects, Reverted, SmoothReport};
-use topology::{ManifoldReport, PolygonMesh, TriangleMesh};
+use rayon::prelude::*;
+use rustc_hash::FxHashMap;
+use topology::{ManifoldReport, Point3, PolygonMesh, TriangleMesh};
+
+/// A facet as the sorted list of its half-edges' end positions (bit
+/// patterns): equal for the same facet in two meshes whatever the vertex
+/// numbering and the order of its half-edges.
+fn key<F: Facets + ?Sized>(pos: &[Point3], facets: &F, f: usize) -> Vec<[u64; 6]> {
+    let bits = |v: u32| pos[v as usize].map(f64::to_bits);
+    let mut k: Vec<[u64; 6]> = facets
+        .half_edges(f)
+        .map(|(s, e)| {
+            let (a, b) = (bits(s), bits(e));
+            [a[0], a[1], a[2], b[0], b[1], b[2]]
+        })
+        .collect();
+    k.sort_unstable();
+    k
+}
+
+/// The keys of the facets `f` with `mask[f]`, computed in parallel (each
+/// a sort of a facet's half-edges).
+fn keys<F: Facets + ?Sized>(
+    pos: &[Point3],
+    facets: &F,
+    mask: &[bool],
+) -> Vec<(usize, Vec<[u64; 6]>)> {
+    let ids: Vec<usize> = (0..facets.count()).filter(|&f| mask[f]).collect();
+    ids.into_par_iter()
+        .map(|f| (f, key(pos, facets, f)))
+        .collect()
+}
+
+/// The facets smoothing changed: of the candidates `before_in` of the
+/// input and `after_in` of the result, those with no equal facet (same
+/// half-edges at the same positions, counted with multiplicity) on the
+/// other side. Unchanged facets are the same in both meshes, so the
+/// defects that differ all touch these.
+pub(crate) fn changed<B: Facets + ?Sized, A: Facets + ?Sized>(
+    before: (&[Point3], &B, &[bool]),
+    after: (&[Point3], &A, &[bool]),
+) -> (Vec<bool>, Vec<bool>) {
+    let (bp, bf, bin) = before;
+    let (ap, af, ain) = after;
+    let before_keys = keys(bp, bf, bin);
+    let after_keys = keys(ap, af, ain);
+    let mut count: FxHashMap<&[[u64; 6]], i64> = FxHashMap::default();
+    for (_, k) in &before_keys {
+        *count.entry(k.as_slice()).or_default() += 1;
+    }
+    // Matched facets of the result take one count each; what is left
+    // over on the input side is the input's changed facets.
+    let mut after_changed = vec![false; af.count()];
+    for (f, k) in &after_keys {
+        match count.get_mut(k.as_slice()) {
+            Some(c) if *c > 0 => *c -= 1,
+            _ => after_changed[*f] = true,
+        }
+    }
+    let mut before_changed = vec![false; bf.count()];
+    for (f, k) in &before_keys {
+        if let Some(c) = count.get_mut(k.as_slice()) {
+            if *c > 0 {
+                *c -= 1;
+                before_changed[*f] = true;
+            }
+        }
+    }
+    (before_changed, after_changed)
+}
 
 /// The counts of a manifold report and a pair list.
 fn defects(pairs: Option<Vec<[u32; 2]>>, manifold: Option<ManifoldReport>) -> MeshDefects {
@@ -30,7 +100,7 @@ fn defects(pairs: Option<Vec<[u32; 2]>>, manifold: Option<ManifoldReport>) -> Me
 }
 
 /// The defects of a polygon mesh near the facets `f` with `focus[f]`.
-pub(crate) fn defects_near_mesh(mesh: &PolygonMesh, focus: &[bool]) -> MeshDefects {
+fn defects_near_mesh(mesh: &PolygonMesh, focus: &[bool]) -> MeshDefects {
     defects(
         topology::self_intersecting_pairs_near(mesh, focus),
         mesh.manifold_report_near(focus),
@@ -38,10 +108,54 @@ pub(crate) fn defects_near_mesh(mesh: &PolygonMesh, focus: &[bool]) -> MeshDefec
 }
 
 /// The defects of a triangle mesh near the triangles `t` with `focus[t]`.
-pub(crate) fn defects_near_triangles(mesh: &TriangleMesh, focus: &[bool]) -> MeshDefects {
+fn defects_near_triangles(mesh: &TriangleMesh, focus: &[bool]) -> MeshDefects {
     defects(
         topology::self_intersecting_triangle_pairs_near(mesh, focus),
         mesh.manifold_report_near(focus),
+    )
+}
+
+/// The guard on a polygon mesh smoothed into `result`: the candidates
+/// `input_in` of the input became the candidates `result_in` of the
+/// result (the region and what replaced it, or everything).
+pub(crate) fn guard_mesh(
+    report: &SmoothReport,
+    input: (&PolygonMesh, &[bool]),
+    result: (&PolygonMesh, &[bool]),
+) -> Option<SmoothReport> {
+    let ((i, i_in), (r, r_in)) = (input, result);
+    let (before, after) = changed(
+        (&i.vertices, i.facets.as_slice(), i_in),
+        (&r.vertices, r.facets.as_slice(), r_in),
+    );
+    if !after.contains(&true) {
+        return None;
+    }
+    judge(
+        report,
+        || defects_near_mesh(r, &after),
+        || defects_near_mesh(i, &before),
+    )
+}
+
+/// [`guard_mesh`] on triangle meshes.
+pub(crate) fn guard_triangles(
+    report: &SmoothReport,
+    input: (&TriangleMesh, &[bool]),
+    result: (&TriangleMesh, &[bool]),
+) -> Option<SmoothReport> {
+    let ((i, i_in), (r, r_in)) = (input, result);
+    let (before, after) = changed(
+        (&i.vertices, i.triangles.as_slice(), i_in),
+        (&r.vertices, r.triangles.as_slice(), r_in),
+    );
+    if !after.contains(&true) {
+        return None;
+    }
+    judge(
+        report,
+        || defects_near_triangles(r, &after),
+        || defects_near_triangles(i, &before),
     )
 }
 
@@ -49,7 +163,7 @@ pub(crate) fn defects_near_triangles(mesh: &TriangleMesh, focus: &[bool]) -> Mes
 /// input handed back) when the result's defects near what changed
 /// (`smoothed`) are worse than the input's there (`input`, computed only
 /// when the result has any).
-pub(crate) fn judge(
+fn judge(
     report: &SmoothReport,
     smoothed: impl FnOnce() -> MeshDefects,
     input: impl FnOnce() -> MeshDefects,
@@ -134,5 +248,50 @@ mod tests {
         };
         assert!(judge(&r, || more, || pinch).is_some());
         assert_eq!(undone.counts.vertices_merged, 4);
+    }
+
+    #[test]
+    fn changed_facets_are_found_by_position_whatever_the_numbering() {
+        let before_pos = [
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+        ];
+        let before: Vec<[u32; 3]> = vec![[0, 2, 1], [0, 1, 3], [1, 2, 3], [0, 3, 2], [0, 1, 3]];
+        // The same positions numbered backwards; the third triangle moved
+        // to a new vertex, one copy of the doubled one gone.
+        let after_pos = [
+            [0.0, 0.0, 1.0],
+            [0.0, 1.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [0.0, 0.0, 0.0],
+            [1.0, 1.0, 1.0],
+        ];
+        let after: Vec<[u32; 3]> = vec![[3, 1, 2], [2, 0, 3], [2, 1, 4], [0, 1, 3]];
+        let all = |n: usize| vec![true; n];
+        let (b, a) = changed(
+            (&before_pos, before.as_slice(), &all(5)),
+            (&after_pos, after.as_slice(), &all(4)),
+        );
+        assert_eq!(a, vec![false, false, true, false]);
+        assert_eq!(b.iter().filter(|&&c| c).count(), 2);
+        assert!(b[2] && (b[1] ^ b[4]));
+        // Outside the candidates nothing is looked at.
+        let (b, a) = changed(
+            (
+                &before_pos,
+                before.as_slice(),
+                &[false, false, true, false, false],
+            ),
+            (&after_pos, after.as_slice(), &[false, false, true, false]),
+        );
+        assert_eq!(
+            (b, a),
+            (
+                vec![false, false, true, false, false],
+                vec![false, false, true, false]
+            )
+        );
     }
 }

@@ -78,10 +78,10 @@ pub fn smooth_mesh(
     let (shape, report) = run(mesh, options)?;
     if options.guard && report.counts != SmoothCounts::default() {
         let all = |n: usize| vec![true; n];
-        if let Some(back) = guard::judge(
+        if let Some(back) = guard::guard_mesh(
             &report,
-            || guard::defects_near_mesh(&shape, &all(shape.facets.len())),
-            || guard::defects_near_mesh(mesh, &all(mesh.facets.len())),
+            (mesh, &all(mesh.facets.len())),
+            (&shape, &all(shape.facets.len())),
         ) {
             return Ok(Smoothed {
                 shape: mesh.clone(),

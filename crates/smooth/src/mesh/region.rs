@@ -42,7 +42,7 @@ pub const REACH: f64 = 8.0;
 pub const MAX_GROWTHS: usize = 3;
 
 /// The facets of a mesh, as the region code reads them.
-trait Facets: Sync {
+pub(crate) trait Facets: Sync {
     /// The number of facets.
     fn count(&self) -> usize;
     /// The start vertices of facet `f`'s half-edges.
@@ -595,12 +595,8 @@ pub fn smooth_mesh_near(
     let shape = PolygonMesh::new(vertices, facets);
     if options.guard {
         let kept = shape.facets.len() - region_out.len();
-        let changed: Vec<bool> = (0..shape.facets.len()).map(|f| f >= kept).collect();
-        if let Some(back) = guard::judge(
-            &report,
-            || guard::defects_near_mesh(&shape, &changed),
-            || guard::defects_near_mesh(mesh, &region),
-        ) {
+        let replaced: Vec<bool> = (0..shape.facets.len()).map(|f| f >= kept).collect();
+        if let Some(back) = guard::guard_mesh(&report, (mesh, &region), (&shape, &replaced)) {
             return Ok(Smoothed {
                 shape: mesh.clone(),
                 report: back,
@@ -664,12 +660,8 @@ pub fn smooth_triangles_near(
     let shape = TriangleMesh::new(vertices, triangles);
     if options.guard {
         let kept = shape.triangles.len() - region_out.len();
-        let changed: Vec<bool> = (0..shape.triangles.len()).map(|t| t >= kept).collect();
-        if let Some(back) = guard::judge(
-            &report,
-            || guard::defects_near_triangles(&shape, &changed),
-            || guard::defects_near_triangles(mesh, &region),
-        ) {
+        let replaced: Vec<bool> = (0..shape.triangles.len()).map(|t| t >= kept).collect();
+        if let Some(back) = guard::guard_triangles(&report, (mesh, &region), (&shape, &replaced)) {
             return Ok(Smoothed {
                 shape: mesh.clone(),
                 report: back,

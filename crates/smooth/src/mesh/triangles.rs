@@ -199,10 +199,10 @@ pub fn smooth_triangles(
     let shape = triangulate_result(&poly, &mut report, options.tolerance);
     if options.guard && report.counts != crate::SmoothCounts::default() {
         let all = |n: usize| vec![true; n];
-        if let Some(back) = crate::mesh::guard::judge(
+        if let Some(back) = crate::mesh::guard::guard_triangles(
             &report,
-            || crate::mesh::guard::defects_near_triangles(&shape, &all(shape.triangles.len())),
-            || crate::mesh::guard::defects_near_triangles(mesh, &all(mesh.triangles.len())),
+            (mesh, &all(mesh.triangles.len())),
+            (&shape, &all(shape.triangles.len())),
         ) {
             return Ok(Smoothed {
                 shape: mesh.clone(),

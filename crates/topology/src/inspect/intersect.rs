@@ -484,22 +484,22 @@ fn pairs_near_with(
     if !vertices.iter().flatten().all(|x| x.is_finite()) {
         return None;
     }
-    let boxes: Vec<[Point3; 2]> = (0..count)
-        .into_par_iter()
-        .map_init(Vec::new, |buf, f| {
-            buf.clear();
-            corners(f, buf);
-            let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
-            for &v in buf.iter() {
-                let p = vertices[v as usize];
-                for k in 0..3 {
-                    b[0][k] = b[0][k].min(p[k]);
-                    b[1][k] = b[1][k].max(p[k]);
-                }
+    // Facet boxes are computed where they are needed, not kept for the
+    // whole mesh: the focus is usually a few facets of a large mesh, and
+    // a box per facet of a 2M-triangle mesh is 96 MB to fill.
+    let box_of = |f: usize, buf: &mut Vec<u32>| {
+        buf.clear();
+        corners(f, buf);
+        let mut b = [[f64::INFINITY; 3], [f64::NEG_INFINITY; 3]];
+        for &v in buf.iter() {
+            let p = vertices[v as usize];
+            for k in 0..3 {
+                b[0][k] = b[0][k].min(p[k]);
+                b[1][k] = b[1][k].max(p[k]);
             }
-            b
-        })
-        .collect();
+        }
+        b
+    };
     // The facets whose boxes meet a box of `ring` (a facet mask); a ring
     // of every facet is its own growth (no hierarchy to build: the case of
     // a mesh whose every vertex moved).
@@ -507,11 +507,10 @@ fn pairs_near_with(
         if ring.iter().all(|&r| r) {
             return ring.to_vec();
         }
-        let inner: Vec<[Point3; 2]> = boxes
-            .iter()
-            .zip(ring)
-            .filter(|(_, &r)| r)
-            .map(|(b, _)| *b)
+        let mut buf = Vec::new();
+        let inner: Vec<[Point3; 2]> = (0..count)
+            .filter(|&f| ring[f])
+            .map(|f| box_of(f, &mut buf))
             .collect();
         let bvh = Bvh::new(&inner);
         let (lo, hi) = inner.iter().fold(
@@ -524,13 +523,15 @@ fn pairs_near_with(
             },
         );
         let all = [lo, hi];
-        boxes
-            .par_iter()
-            .zip(ring.par_iter())
-            .map(|(b, &r)| {
-                r || (b[0][0] <= b[1][0]
-                    && super::bvh::overlap(b, &all)
-                    && bvh.any_overlap(&inner, b))
+        ring.par_iter()
+            .enumerate()
+            .map_init(Vec::new, |buf, (f, &r)| {
+                r || {
+                    let b = box_of(f, buf);
+                    b[0][0] <= b[1][0]
+                        && super::bvh::overlap(&b, &all)
+                        && bvh.any_overlap(&inner, &b)
+                }
             })
             .collect()
     };

@@ -2,6 +2,7 @@
 //! each way, and the facets around every vertex forming one fan.
 
 use crate::{PolygonMesh, TopologyError, TriangleMesh};
+use rayon::prelude::*;
 use std::collections::HashMap;
 
 /// The use of one edge (an unordered vertex pair `a < b`, or `a == b` for
@@ -137,7 +138,7 @@ impl PolygonMesh {
 fn report_near(
     positions: &[crate::Point3],
     count: usize,
-    corners: impl Fn(usize, &mut Vec<u32>),
+    corners: impl Fn(usize, &mut Vec<u32>) + Sync,
     facet: impl Fn(usize) -> crate::Facet,
     focus: &[bool],
 ) -> ManifoldReport {
@@ -152,14 +153,16 @@ fn report_near(
     }
     // Every facet with a corner at a focus vertex: all the half-edges of
     // the edges counted and all the corners of the vertices counted.
-    let mut star = PolygonMesh::default();
-    for f in 0..count {
-        buf.clear();
-        corners(f, &mut buf);
-        if buf.iter().any(|&v| near[v as usize]) {
-            star.facets.push(facet(f));
-        }
-    }
+    let star_ids: Vec<usize> = (0..count)
+        .into_par_iter()
+        .map_init(Vec::new, |buf, f| {
+            buf.clear();
+            corners(f, buf);
+            buf.iter().any(|&v| near[v as usize]).then_some(f)
+        })
+        .flatten()
+        .collect();
+    let star = PolygonMesh::new(Vec::new(), star_ids.into_iter().map(facet).collect());
     let touches = |e: &EdgeUse| near[e.a as usize] || near[e.b as usize];
     let (_, open, non_manifold) = edge_census(&star);
     let mut edges = std::collections::HashSet::new();
