@@ -57,10 +57,7 @@ impl Facet {
     /// when the facet satisfies facet boundary closure; half-edges that
     /// cannot be chained are returned as open chains.
     pub fn loops(&self) -> Vec<Vec<u32>> {
-        let mut outgoing: HashMap<u32, Vec<usize>> = HashMap::new();
-        for (i, h) in self.half_edges.iter().enumerate().rev() {
-            outgoing.entry(h.start).or_default().push(i);
-        }
+        let mut outgoing = self.outgoing();
         let mut used = vec![false; self.half_edges.len()];
         let mut loops = Vec::new();
         for first in 0..self.half_edges.len() {
@@ -120,10 +117,7 @@ impl Facet {
     /// ```
     pub fn loops_in_plane(&self, positions: &[Point3]) -> Vec<Vec<u32>> {
         let n = positions.len() as u32;
-        let mut outgoing: HashMap<u32, Vec<usize>> = HashMap::new();
-        for (i, h) in self.half_edges.iter().enumerate().rev() {
-            outgoing.entry(h.start).or_default().push(i);
-        }
+        let outgoing = self.outgoing();
         let in_range = self.half_edges.iter().all(|h| h.start < n && h.end < n);
         if !in_range || outgoing.values().all(|l| l.len() == 1) {
             return self.loops();
@@ -189,6 +183,16 @@ impl Facet {
             loops.push(ring);
         }
         loops
+    }
+
+    /// The half-edges leaving each vertex, by index, the last stored first
+    /// (so that popping from the end takes them in stored order).
+    fn outgoing(&self) -> HashMap<u32, Vec<usize>> {
+        let mut outgoing: HashMap<u32, Vec<usize>> = HashMap::new();
+        for (i, h) in self.half_edges.iter().enumerate().rev() {
+            outgoing.entry(h.start).or_default().push(i);
+        }
+        outgoing
     }
 
     /// The two coordinate axes of the projection that sees the facet from

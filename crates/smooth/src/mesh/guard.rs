@@ -99,63 +99,62 @@ fn defects(pairs: Option<Vec<[u32; 2]>>, manifold: Option<ManifoldReport>) -> Me
     }
 }
 
-/// The defects of a polygon mesh near the facets `f` with `focus[f]`.
-fn defects_near_mesh(mesh: &PolygonMesh, focus: &[bool]) -> MeshDefects {
-    defects(
-        topology::self_intersecting_pairs_near(mesh, focus),
-        mesh.manifold_report_near(focus),
-    )
+/// A mesh the guard inspects: its positions and facets, and its defects
+/// near a focus (the exact tests of `topology`).
+pub(crate) trait Guarded {
+    /// The facets as the region code reads them.
+    type Facets: Facets + ?Sized;
+    /// The positions and the facets.
+    fn parts(&self) -> (&[Point3], &Self::Facets);
+    /// The defects near the facets `f` with `focus[f]`.
+    fn defects_near(&self, focus: &[bool]) -> MeshDefects;
 }
 
-/// The defects of a triangle mesh near the triangles `t` with `focus[t]`.
-fn defects_near_triangles(mesh: &TriangleMesh, focus: &[bool]) -> MeshDefects {
-    defects(
-        topology::self_intersecting_triangle_pairs_near(mesh, focus),
-        mesh.manifold_report_near(focus),
-    )
+impl Guarded for PolygonMesh {
+    type Facets = [topology::Facet];
+    fn parts(&self) -> (&[Point3], &Self::Facets) {
+        (&self.vertices, &self.facets)
+    }
+    fn defects_near(&self, focus: &[bool]) -> MeshDefects {
+        defects(
+            topology::self_intersecting_pairs_near(self, focus),
+            self.manifold_report_near(focus),
+        )
+    }
 }
 
-/// The guard on a polygon mesh smoothed into `result`: the candidates
-/// `input_in` of the input became the candidates `result_in` of the
-/// result (the region and what replaced it, or everything).
-pub(crate) fn guard_mesh(
+impl Guarded for TriangleMesh {
+    type Facets = [[u32; 3]];
+    fn parts(&self) -> (&[Point3], &Self::Facets) {
+        (&self.vertices, &self.triangles)
+    }
+    fn defects_near(&self, focus: &[bool]) -> MeshDefects {
+        defects(
+            topology::self_intersecting_triangle_pairs_near(self, focus),
+            self.manifold_report_near(focus),
+        )
+    }
+}
+
+/// The guard on a mesh smoothed into `result`: the candidates `input_in`
+/// of the input became the candidates `result_in` of the result (the
+/// region and what replaced it, or everything). `Some` (the report of the
+/// input handed back) when the result is worse.
+pub(crate) fn guard<M: Guarded>(
     report: &SmoothReport,
-    input: (&PolygonMesh, &[bool]),
-    result: (&PolygonMesh, &[bool]),
+    input: (&M, &[bool]),
+    result: (&M, &[bool]),
 ) -> Option<SmoothReport> {
     let ((i, i_in), (r, r_in)) = (input, result);
-    let (before, after) = changed(
-        (&i.vertices, i.facets.as_slice(), i_in),
-        (&r.vertices, r.facets.as_slice(), r_in),
-    );
+    let ((ip, ifacets), (rp, rfacets)) = (i.parts(), r.parts());
+    let (before, after) = changed((ip, ifacets, i_in), (rp, rfacets, r_in));
     if !after.contains(&true) {
         return None;
     }
     judge(
         report,
-        || defects_near_mesh(r, &after),
-        || defects_near_mesh(i, &before),
-    )
-}
-
-/// [`guard_mesh`] on triangle meshes.
-pub(crate) fn guard_triangles(
-    report: &SmoothReport,
-    input: (&TriangleMesh, &[bool]),
-    result: (&TriangleMesh, &[bool]),
-) -> Option<SmoothReport> {
-    let ((i, i_in), (r, r_in)) = (input, result);
-    let (before, after) = changed(
-        (&i.vertices, i.triangles.as_slice(), i_in),
-        (&r.vertices, r.triangles.as_slice(), r_in),
-    );
-    if !after.contains(&true) {
-        return None;
-    }
-    judge(
-        report,
-        || defects_near_triangles(r, &after),
-        || defects_near_triangles(i, &before),
+        || r.defects_near(&after),
+        || i.defects_near(&before),
     )
 }
 

@@ -78,7 +78,7 @@ pub fn smooth_mesh(
     let (shape, report) = run(mesh, options)?;
     if options.guard && report.counts != SmoothCounts::default() {
         let all = |n: usize| vec![true; n];
-        if let Some(back) = guard::guard_mesh(
+        if let Some(back) = guard::guard(
             &report,
             (mesh, &all(mesh.facets.len())),
             (&shape, &all(shape.facets.len())),

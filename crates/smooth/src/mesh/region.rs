@@ -596,7 +596,7 @@ pub fn smooth_mesh_near(
     if options.guard {
         let kept = shape.facets.len() - region_out.len();
         let replaced: Vec<bool> = (0..shape.facets.len()).map(|f| f >= kept).collect();
-        if let Some(back) = guard::guard_mesh(&report, (mesh, &region), (&shape, &replaced)) {
+        if let Some(back) = guard::guard(&report, (mesh, &region), (&shape, &replaced)) {
             return Ok(Smoothed {
                 shape: mesh.clone(),
                 report: back,
@@ -661,7 +661,7 @@ pub fn smooth_triangles_near(
     if options.guard {
         let kept = shape.triangles.len() - region_out.len();
         let replaced: Vec<bool> = (0..shape.triangles.len()).map(|t| t >= kept).collect();
-        if let Some(back) = guard::guard_triangles(&report, (mesh, &region), (&shape, &replaced)) {
+        if let Some(back) = guard::guard(&report, (mesh, &region), (&shape, &replaced)) {
             return Ok(Smoothed {
                 shape: mesh.clone(),
                 report: back,

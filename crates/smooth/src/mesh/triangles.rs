@@ -199,7 +199,7 @@ pub fn smooth_triangles(
     let shape = triangulate_result(&poly, &mut report, options.tolerance);
     if options.guard && report.counts != crate::SmoothCounts::default() {
         let all = |n: usize| vec![true; n];
-        if let Some(back) = crate::mesh::guard::guard_triangles(
+        if let Some(back) = crate::mesh::guard::guard(
             &report,
             (mesh, &all(mesh.triangles.len())),
             (&shape, &all(shape.triangles.len())),
