@@ -10,14 +10,15 @@ use pyo3::prelude::*;
 use pyo3::types::PyTuple;
 use std::path::PathBuf;
 use umbra::{
-    layout_polygons, read_mesh, read_polygon_set, write_mesh_with, write_polygon_set, FileKind,
-    MeshReadOptions, MeshWriteOptions, ReadOptions,
+    layout_polygons, read_mesh, read_polygon_set_counted, write_mesh_with, write_polygon_set,
+    FileKind, MeshReadOptions, MeshWriteOptions, ReadOptions,
 };
 
 /// What a file held.
 enum Content {
     Mesh(umbra::PolygonMesh),
-    Polygons(umbra::Polygons),
+    /// The polygons and the warning about parts skipped, if any.
+    Polygons(umbra::Polygons, Option<String>),
 }
 
 /// Reads a file: `("mesh", Mesh)` or `("polygons", list)`.
@@ -40,10 +41,11 @@ pub fn read<'py>(
                 orientation: orientation(keep_orientation),
                 validate_coordinates: true,
             };
-            let set = read_polygon_set(&path, options)?;
+            let read = read_polygon_set_counted(&path, options)?;
             let file = path.display().to_string();
-            layout_polygons(&set, orientation(keep_orientation), &file)
-                .map(|l| Content::Polygons(l.polygons))
+            let warning = read.warning(&file);
+            layout_polygons(&read.set, orientation(keep_orientation), &file)
+                .map(|l| Content::Polygons(l.polygons, warning))
         }
     })?;
     match content {
@@ -54,13 +56,18 @@ pub fn read<'py>(
                 Mesh::wrap(py, m)?.into_any(),
             ],
         ),
-        Content::Polygons(p) => PyTuple::new(
-            py,
-            [
-                "polygons".into_pyobject(py)?.into_any(),
-                polygons_to_py(py, &p)?,
-            ],
-        ),
+        Content::Polygons(p, warning) => {
+            if let Some(w) = warning {
+                crate::warn_user(py, &w)?;
+            }
+            PyTuple::new(
+                py,
+                [
+                    "polygons".into_pyobject(py)?.into_any(),
+                    polygons_to_py(py, &p)?,
+                ],
+            )
+        }
     }
 }
 

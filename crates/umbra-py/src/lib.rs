@@ -115,6 +115,15 @@ fn pool() -> Option<Arc<rayon::ThreadPool>> {
     }
 }
 
+/// Raises a `UserWarning` with `message` in the caller's frame (a
+/// message with a NUL byte is cut there).
+pub(crate) fn warn_user(py: Python<'_>, message: &str) -> PyResult<()> {
+    let text = message.split('\0').next().unwrap_or_default();
+    let message = std::ffi::CString::new(text).unwrap_or_default();
+    let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
+    PyErr::warn(py, category.as_any(), &message, 1)
+}
+
 /// Runs `work` with the GIL released, on this process's pool (`pool`),
 /// and any panic caught: the result, or an `UmbraError` (the
 /// work's own error as its one-line message, a panic as an internal error).

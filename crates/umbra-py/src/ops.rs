@@ -20,12 +20,10 @@ type MaybeSmoothed = (PolygonMesh, Option<SmoothReport>);
 /// A `UserWarning` when the smoothing guard handed the mesh back as it
 /// was (`SmoothReport::reverted`), with the command line's sentence.
 fn warn_if_undone(py: Python<'_>, report: Option<&SmoothReport>) -> PyResult<()> {
-    if let Some(undone) = report.and_then(|r| r.reverted.as_ref()) {
-        let message = std::ffi::CString::new(undone.to_string()).unwrap_or_default();
-        let category = py.get_type::<pyo3::exceptions::PyUserWarning>();
-        PyErr::warn(py, category.as_any(), &message, 1)?;
+    match report.and_then(|r| r.reverted.as_ref()) {
+        Some(undone) => crate::warn_user(py, &undone.to_string()),
+        None => Ok(()),
     }
-    Ok(())
 }
 
 /// The operation named `op`: every name of the facade (`union`,

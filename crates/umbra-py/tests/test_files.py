@@ -225,3 +225,30 @@ def test_paths_may_be_bytes(tmp_path):
     path = os.fsencode(tmp_path / "cube.obj")
     umbra.write(cube(), path)
     assert umbra.read(path) == cube()
+
+
+@pytest.mark.parametrize("ext", ["wkt", "geojson"])
+def test_points_and_lines_beside_polygons_are_skipped_with_a_warning(tmp_path, ext, monkeypatch):
+    # What GEOS and shapely overlays return: a collection of a polygon, a
+    # line and a point. The polygon is read; the other two are skipped,
+    # with the command line's warning.
+    monkeypatch.setattr(umbra, "_shapely", lambda: None)
+    path = tmp_path / f"mixed.{ext}"
+    if ext == "wkt":
+        path.write_text(
+            "GEOMETRYCOLLECTION (POLYGON ((0 0, 4 0, 4 4, 0 4, 0 0)), "
+            "LINESTRING (0 0, 9 9), POINT (5 5))"
+        )
+    else:
+        path.write_text(
+            '{"type": "GeometryCollection", "geometries": ['
+            '{"type": "Polygon", "coordinates": [[[0, 0], [4, 0], [4, 4], [0, 4], [0, 0]]]},'
+            '{"type": "LineString", "coordinates": [[0, 0], [9, 9]]},'
+            '{"type": "Point", "coordinates": [5, 5]}]}'
+        )
+    with pytest.warns(UserWarning, match="2 non-areal part"):
+        back = umbra.read(path)
+    assert len(back) == 1 and len(back[0]) == 1
+    ring = np.asarray(back[0][0])
+    x, y = ring[:, 0], ring[:, 1]
+    assert abs(0.5 * abs(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1))) - 16.0) < 1e-12

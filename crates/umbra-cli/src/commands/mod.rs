@@ -136,12 +136,8 @@ pub fn read_set(
     options: umbra::ReadOptions,
 ) -> Result<umbra::PolygonSet2, umbra::UmbraError> {
     let read = umbra::read_polygon_set_counted(path, options)?;
-    if read.skipped_non_areal > 0 {
-        crate::stdout::error_line(&format!(
-            "warning: {}: {} non-areal part(s) (points, lines) skipped; only polygons are read",
-            path.display(),
-            read.skipped_non_areal
-        ));
+    if let Some(warning) = read.warning(&path.display().to_string()) {
+        crate::stdout::error_line(&format!("warning: {warning}"));
     }
     Ok(read.set)
 }

@@ -128,7 +128,11 @@ def read(path: PathLike, *, check: bool = True, keep_orientation: bool = False) 
     Polygons (.wkt .geojson) return a shapely geometry when shapely is
     installed, else the plain form (a list of polygons, each a list of
     (k, 2) rings). Rings are read by role (exteriors counter-clockwise,
-    holes clockwise) unless ``keep_orientation``.
+    holes clockwise) unless ``keep_orientation``. Points and lines in a
+    collection (as GEOS and shapely overlays return beside polygons) are
+    skipped with a ``UserWarning``; a file of no polygon at all raises.
+    A mesh file with vertices but no faces raises; one of neither is the
+    empty solid.
     """
     kind, value = _umbra.read(os.fsdecode(path), check=check, keep_orientation=keep_orientation)
     if kind == "polygons" and _shapely() is not None:

@@ -49,6 +49,28 @@ pub struct PolygonSetRead {
     pub skipped_non_areal: usize,
 }
 
+impl PolygonSetRead {
+    /// The warning a front end gives about the parts skipped from `file`,
+    /// `None` when nothing was skipped.
+    ///
+    /// ```
+    /// use umbra::{PolygonSet2, PolygonSetRead};
+    /// let read = PolygonSetRead { set: PolygonSet2::default(), skipped_non_areal: 2 };
+    /// assert_eq!(
+    ///     read.warning("a.wkt").unwrap(),
+    ///     "a.wkt: 2 non-areal part(s) (points, lines) skipped; only polygons are read"
+    /// );
+    /// ```
+    pub fn warning(&self, file: &str) -> Option<String> {
+        (self.skipped_non_areal > 0).then(|| {
+            format!(
+                "{file}: {} non-areal part(s) (points, lines) skipped; only polygons are read",
+                self.skipped_non_areal
+            )
+        })
+    }
+}
+
 /// The non-areal parts (points, lines) a 2D reader skipped: counted for
 /// a warning, and the first named for the error when nothing areal is
 /// left (a file of lines or points alone is no polygon file).
