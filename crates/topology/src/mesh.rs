@@ -57,9 +57,27 @@ impl Facet {
     /// when the facet satisfies facet boundary closure; half-edges that
     /// cannot be chained are returned as open chains.
     pub fn loops(&self) -> Vec<Vec<u32>> {
-        let mut outgoing = self.outgoing();
+        // The first unused half-edge leaving the vertex, until the start.
+        self.trace(&self.outgoing(), |_, at, first, free| {
+            (at != self.half_edges[first].start)
+                .then(|| free.first().copied())
+                .flatten()
+        })
+    }
+
+    /// Chains the half-edges into loops: from each unused half-edge
+    /// `first` in order, a loop goes on by `choose(prev, at, first, free)`
+    /// at each vertex `at` it reaches from `prev`, where `free` are the
+    /// unused half-edges leaving `at` in stored order; `Some(i)` takes
+    /// half-edge `i`, `None` ends the loop (closed when `at` is its start).
+    fn trace(
+        &self,
+        outgoing: &HashMap<u32, Vec<usize>>,
+        mut choose: impl FnMut(u32, u32, usize, &[usize]) -> Option<usize>,
+    ) -> Vec<Vec<u32>> {
         let mut used = vec![false; self.half_edges.len()];
         let mut loops = Vec::new();
+        let mut free = Vec::new();
         for first in 0..self.half_edges.len() {
             if used[first] {
                 continue;
@@ -67,22 +85,18 @@ impl Facet {
             used[first] = true;
             let start = self.half_edges[first].start;
             let mut ring = vec![start];
+            let mut prev = start;
             let mut at = self.half_edges[first].end;
-            while at != start {
-                let next = outgoing.get_mut(&at).and_then(|l| {
-                    while let Some(&i) = l.last() {
-                        if used[i] {
-                            l.pop();
-                        } else {
-                            return Some(i);
-                        }
-                    }
-                    None
-                });
-                match next {
+            loop {
+                free.clear();
+                if let Some(list) = outgoing.get(&at) {
+                    free.extend(list.iter().copied().filter(|&i| !used[i]));
+                }
+                match choose(prev, at, first, &free) {
                     Some(i) => {
                         used[i] = true;
                         ring.push(at);
+                        prev = at;
                         at = self.half_edges[i].end;
                     }
                     None => break,
@@ -141,55 +155,29 @@ impl Facet {
                 a
             }
         };
-        let mut used = vec![false; self.half_edges.len()];
-        let mut loops = Vec::new();
-        for first in 0..self.half_edges.len() {
-            if used[first] {
-                continue;
-            }
-            used[first] = true;
-            let start = self.half_edges[first].start;
-            let mut ring = vec![start];
-            let mut prev = start;
-            let mut at = self.half_edges[first].end;
-            loop {
-                let list = outgoing.get(&at).map(Vec::as_slice).unwrap_or(&[]);
-                // Back at the start, closing the loop (by `first`) is one
-                // of the choices.
-                let closing = (at == start).then_some(first);
-                let here = flat(at);
-                let back = flat(prev);
-                let r = [back[0] - here[0], back[1] - here[1]];
-                let turn = |k: usize| {
-                    let e = flat(self.half_edges[k].end);
-                    clockwise(r, [e[0] - here[0], e[1] - here[1]])
-                };
-                let next = list
-                    .iter()
-                    .copied()
-                    .filter(|&i| !used[i])
-                    .chain(closing)
-                    .min_by(|&i, &j| turn(i).total_cmp(&turn(j)).then(i.cmp(&j)));
-                match next {
-                    Some(i) if Some(i) != closing => {
-                        used[i] = true;
-                        ring.push(at);
-                        prev = at;
-                        at = self.half_edges[i].end;
-                    }
-                    _ => break,
-                }
-            }
-            loops.push(ring);
-        }
-        loops
+        self.trace(&outgoing, |prev, at, first, free| {
+            // Back at the start, closing the loop (by `first`) is one of
+            // the choices.
+            let closing = (at == self.half_edges[first].start).then_some(first);
+            let here = flat(at);
+            let back = flat(prev);
+            let r = [back[0] - here[0], back[1] - here[1]];
+            let turn = |k: usize| {
+                let e = flat(self.half_edges[k].end);
+                clockwise(r, [e[0] - here[0], e[1] - here[1]])
+            };
+            free.iter()
+                .copied()
+                .chain(closing)
+                .min_by(|&i, &j| turn(i).total_cmp(&turn(j)).then(i.cmp(&j)))
+                .filter(|&i| Some(i) != closing)
+        })
     }
 
-    /// The half-edges leaving each vertex, by index, the last stored first
-    /// (so that popping from the end takes them in stored order).
+    /// The half-edges leaving each vertex, by index, in stored order.
     fn outgoing(&self) -> HashMap<u32, Vec<usize>> {
         let mut outgoing: HashMap<u32, Vec<usize>> = HashMap::new();
-        for (i, h) in self.half_edges.iter().enumerate().rev() {
+        for (i, h) in self.half_edges.iter().enumerate() {
             outgoing.entry(h.start).or_default().push(i);
         }
         outgoing

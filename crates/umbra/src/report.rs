@@ -454,15 +454,36 @@ impl Boolean3Report {
     /// again as written under `output_file`, validity checked again, the
     /// rounding report kept, `total` including the rounding.
     pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
-        let (valid, error) = validity(rounded.mesh.check_topology());
-        self.output = MeshCounts::of_mesh(output_file, &rounded.mesh);
-        self.topologically_valid = valid;
-        self.topology_error = error;
-        self.f32_rounding = Some(rounded.report.clone());
-        self.timings_ms.round_f32 = Some(rounded.ms);
-        self.timings_ms.total += rounded.ms;
+        record_rounding(
+            rounded,
+            output_file.into(),
+            &mut self.output,
+            (&mut self.topologically_valid, &mut self.topology_error),
+            &mut self.f32_rounding,
+            &mut self.timings_ms,
+        );
         self
     }
+}
+
+/// What rounding to `f32` for writing puts in a 3D report, shared by the
+/// report types that have these fields: the output counted again as
+/// written under `output_file`, validity checked again, the rounding
+/// report kept, `total` including the rounding.
+fn record_rounding(
+    rounded: &RoundedMesh,
+    output_file: String,
+    output: &mut MeshCounts,
+    validity_of: (&mut bool, &mut Option<String>),
+    f32_rounding: &mut Option<F32Rounding>,
+    timings: &mut Timings,
+) {
+    let (valid, error) = validity(rounded.mesh.check_topology());
+    *output = MeshCounts::of_mesh(output_file, &rounded.mesh);
+    (*validity_of.0, *validity_of.1) = (valid, error);
+    *f32_rounding = Some(rounded.report.clone());
+    timings.round_f32 = Some(rounded.ms);
+    timings.total += rounded.ms;
 }
 
 /// The report of smoothing a file (`umbra smooth`): `C` is [`SetCounts`]
@@ -526,13 +547,14 @@ impl SmoothFileReport<MeshCounts> {
     /// again as written under `output_file`, validity checked again, the
     /// rounding report kept, `total` including the rounding.
     pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
-        let (valid, error) = validity(rounded.mesh.check_topology());
-        self.output = MeshCounts::of_mesh(output_file, &rounded.mesh);
-        self.topologically_valid = valid;
-        self.topology_error = error;
-        self.f32_rounding = Some(rounded.report.clone());
-        self.timings_ms.round_f32 = Some(rounded.ms);
-        self.timings_ms.total += rounded.ms;
+        record_rounding(
+            rounded,
+            output_file.into(),
+            &mut self.output,
+            (&mut self.topologically_valid, &mut self.topology_error),
+            &mut self.f32_rounding,
+            &mut self.timings_ms,
+        );
         self
     }
 }
