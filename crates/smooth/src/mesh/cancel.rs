@@ -6,12 +6,13 @@
 //! keeps facet and shape boundary closure (section 4.2).
 
 use crate::mesh::geom::{dot, lerp, point_segment};
-use crate::mesh::index::{grown_box, opposed_pairs_where, IdBox};
+use crate::mesh::index::{grown_box, opposed_pairs_where, BoxIndex, IdBox};
 use crate::mesh::plane::{best_fit_plane, facet_normal, Plane};
 use crate::mesh::structure::Work;
 use crate::SmoothCounts;
 use rayon::prelude::*;
-use std::collections::{HashMap, HashSet};
+use std::collections::btree_map::Entry;
+use std::collections::{BTreeMap, HashMap, HashSet};
 use topology::{HalfEdge, Point3};
 
 /// Removes the facet's zero-length half-edges (each balances itself) and
@@ -64,9 +65,18 @@ pub(crate) fn cancel_in_facet(f: &mut Vec<HalfEdge>, counts: &mut SmoothCounts) 
 
 /// [`cancel_in_facet`] on every facet.
 pub(crate) fn cancel_all(w: &mut Work, counts: &mut SmoothCounts) {
-    for (f, changed) in w.facets.iter_mut().zip(w.changed.iter_mut()) {
-        if cancel_in_facet(f, counts) {
+    cancel_all_marking(w, counts, &mut []);
+}
+
+/// [`cancel_all`], also setting `marks[f]` for every facet `f` it changes
+/// (`marks` may be shorter than the facet list, even empty).
+pub(crate) fn cancel_all_marking(w: &mut Work, counts: &mut SmoothCounts, marks: &mut [bool]) {
+    for (f, (facet, changed)) in w.facets.iter_mut().zip(w.changed.iter_mut()).enumerate() {
+        if cancel_in_facet(facet, counts) {
             *changed = true;
+            if let Some(m) = marks.get_mut(f) {
+                *m = true;
+            }
         }
     }
 }
@@ -198,6 +208,7 @@ fn in_interior(
 }
 
 /// The outcome of one facet pair.
+#[derive(Clone, Copy, PartialEq, Eq, Debug)]
 enum PairResult {
     Nothing,
     Partial,
@@ -354,13 +365,28 @@ fn cancel_pair(
 /// boxes, grown by `delta`, meet. The candidates are found once per pass
 /// by the bounding-volume hierarchy (`index.rs`); a swap only moves half-edges between the two facets, and
 /// a facet only loses region, so its box stays within the one indexed.
-/// Returns the number of pairs that changed.
+///
+/// With `only`, the pass looks only at the pairs with a facet marked
+/// there: the facets the previous pass (and the half-edge cancellation
+/// after it) changed. That is exact, not a heuristic: a pair of facets
+/// neither of which changed since the previous pass was a candidate there
+/// with the same normals and boxes, and [`cancel_pair`] (which reads only
+/// the two facets and the positions, and no vertex moves in this phase)
+/// found nothing to do with them then, so it finds nothing now.
+///
+/// Returns the number of pairs that changed, whether the budget stopped
+/// the pass, and which facets the pass changed. A pass over the marked
+/// facets' pairs that ends over the budget reports it at its end (a pass
+/// over all pairs would have at its next pair, which may have been after
+/// its last change, so the report may then count one pass fewer; the
+/// shape is the same).
 pub(crate) fn facet_cancellation_pass(
     w: &mut Work,
     delta: f64,
     counts: &mut SmoothCounts,
     mut over_budget: impl FnMut(&SmoothCounts) -> bool,
-) -> (u64, bool) {
+    only: Option<&[bool]>,
+) -> (u64, bool, Vec<bool>) {
     let mut boxes = Vec::new();
     let mut normals: Vec<Option<Point3>> = vec![None; w.facets.len()];
     for (i, f) in w.facets.iter().enumerate() {
@@ -378,58 +404,126 @@ pub(crate) fn facet_cancellation_pass(
             id: i as u32,
         });
     }
-    // The planes `cancel_pair` would compute for facets no pair of this
-    // pass has changed yet, for its first test in the parallel join: a
-    // pair with no half-edge of either facet within `delta` of the other's
-    // plane, or only one, is one `cancel_pair` leaves as it is (`maybe`
-    // is false; [`swappable`]).
-    let planes: Vec<Option<Plane>> = (0..w.facets.len())
-        .into_par_iter()
-        .map(|i| normals[i].and(best_fit_plane(&w.pos, &w.facets[i])))
-        .collect();
     let pos = &w.pos;
     let facets = &w.facets;
-    // Only facets facing opposite ways can cancel: the pairs come by
-    // normal direction, not from every pair of meeting boxes.
-    let filter = |i: u32, j: u32| {
-        let (i, j) = (i as usize, j as usize);
-        match (normals[i], normals[j]) {
-            (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => {
-                let maybe = match (planes[i], planes[j]) {
-                    (Some(p1), Some(p2)) => {
-                        dot(p1.normal, p2.normal) < 0.0
-                            && swappable(pos, &p2, &facets[i], None, delta)
-                                + swappable(pos, &p1, &facets[j], Some(&facets[i]), delta)
-                                >= 2
-                    }
-                    _ => false,
-                };
-                Some((i, j, maybe))
-            }
-            _ => None,
+    // The `maybe` test of a pair (i, j), i < j, given its two planes: a
+    // pair with no half-edge of either facet within `delta` of the other's
+    // plane, or only one, is one `cancel_pair` leaves as it is (`maybe` is
+    // false; [`swappable`]).
+    let maybe = |i: usize, j: usize, p1: Option<Plane>, p2: Option<Plane>| match (p1, p2) {
+        (Some(p1), Some(p2)) => {
+            dot(p1.normal, p2.normal) < 0.0
+                && swappable(pos, &p2, &facets[i], None, delta)
+                    + swappable(pos, &p1, &facets[j], Some(&facets[i]), delta)
+                    >= 2
         }
+        _ => false,
     };
-    let mut pairs: Vec<(usize, usize, bool)> = opposed_pairs_where(&boxes, &normals, filter);
-    pairs.sort_unstable();
+    let plane = |i: usize| normals[i].and(best_fit_plane(pos, &facets[i]));
     let mut touched = vec![false; w.facets.len()];
     let mut changed = 0;
-    for (i, j, maybe) in pairs {
-        if over_budget(counts) {
-            return (changed, true);
-        }
-        if !maybe && !touched[i] && !touched[j] {
-            continue; // `cancel_pair` would find nothing (see above)
-        }
-        match cancel_pair(w, i, j, delta, counts) {
-            PairResult::Nothing => {}
-            PairResult::Partial | PairResult::Full => {
+    let Some(marked) = only else {
+        // The planes `cancel_pair` would compute for facets no pair of
+        // this pass has changed yet, for the `maybe` test in the parallel
+        // join.
+        let planes: Vec<Option<Plane>> = (0..w.facets.len()).into_par_iter().map(plane).collect();
+        // Only facets facing opposite ways can cancel: the pairs come by
+        // normal direction, not from every pair of meeting boxes.
+        let filter = |i: u32, j: u32| {
+            let (i, j) = (i as usize, j as usize);
+            match (normals[i], normals[j]) {
+                (Some(ni), Some(nj)) if dot(ni, nj) < 0.0 => {
+                    Some((i, j, maybe(i, j, planes[i], planes[j])))
+                }
+                _ => None,
+            }
+        };
+        let mut pairs: Vec<(usize, usize, bool)> = opposed_pairs_where(&boxes, &normals, filter);
+        pairs.sort_unstable();
+        for (i, j, maybe) in pairs {
+            if over_budget(counts) {
+                return (changed, true, touched);
+            }
+            if !maybe && !touched[i] && !touched[j] {
+                continue; // `cancel_pair` would find nothing (see above)
+            }
+            if cancel_pair(w, i, j, delta, counts) != PairResult::Nothing {
                 changed += 1;
                 touched[i] = true;
                 touched[j] = true;
             }
         }
+        return (changed, false, touched);
+    };
+    // Over the marked facets: the pass over all pairs, in the same order,
+    // leaving out the pairs it would find nothing in. Those are the pairs
+    // it reaches while neither facet has changed since the previous pass
+    // (see above). So the queue starts with the marked facets' pairs, and
+    // a facet that this pass changes brings its pairs that come later in
+    // the order. The candidates are those of the full pass: meeting boxes
+    // and a negative dot product of the normals (which implies opposed
+    // signs on some axis), both as at the start of the pass.
+    let slot: Vec<Option<usize>> = {
+        let mut slot = vec![None; w.facets.len()];
+        for (k, b) in boxes.iter().enumerate() {
+            slot[b.id as usize] = Some(k);
+        }
+        slot
+    };
+    let index = BoxIndex::new(boxes.clone());
+    let pairs_of = |f: usize, out: &mut Vec<(usize, usize)>| {
+        let (Some(k), Some(nf)) = (slot[f], normals[f]) else {
+            return;
+        };
+        let q = &boxes[k];
+        index.visit(&q.lo, &q.hi, |id| {
+            let g = id as usize;
+            if g != f && normals[g].is_some_and(|ng| dot(nf, ng) < 0.0) {
+                out.push((f.min(g), f.max(g)));
+            }
+        });
+    };
+    let mut activated: Vec<bool> = (0..w.facets.len())
+        .map(|f| marked.get(f).copied().unwrap_or(false))
+        .collect();
+    let mut queue: BTreeMap<(usize, usize), bool> = BTreeMap::new();
+    let mut found = Vec::new();
+    for f in (0..w.facets.len()).filter(|&f| activated[f]) {
+        pairs_of(f, &mut found);
     }
-    (changed, false)
+    for (i, j) in found.drain(..) {
+        if let Entry::Vacant(v) = queue.entry((i, j)) {
+            v.insert(maybe(i, j, plane(i), plane(j)));
+        }
+    }
+    while let Some(((i, j), maybe)) = queue.pop_first() {
+        if over_budget(counts) {
+            return (changed, true, touched);
+        }
+        if !maybe && !touched[i] && !touched[j] {
+            continue;
+        }
+        if cancel_pair(w, i, j, delta, counts) == PairResult::Nothing {
+            continue;
+        }
+        changed += 1;
+        touched[i] = true;
+        touched[j] = true;
+        for f in [i, j] {
+            if !activated[f] {
+                activated[f] = true;
+                pairs_of(f, &mut found);
+            }
+        }
+        // A changed facet's pairs are never skipped, whatever `maybe`.
+        for p in found.drain(..).filter(|&p| p > (i, j)) {
+            queue.entry(p).or_insert(false);
+        }
+    }
+    // A pass over all pairs would stop at its next pair once over the
+    // budget; this one says so at its end (the shape is the same; the
+    // report may count one pass fewer).
+    (changed, over_budget(counts), touched)
 }
 
 #[cfg(test)]

@@ -6,10 +6,13 @@
 //! phases terminate (see the algorithm note `docs/algorithms/smooth.md`).
 
 use crate::mesh::geom::{dist2, lerp, point_segment, segment_segment};
-use crate::mesh::index::{grown_box, near_segment_pairs_where, BoxIndex, IdBox};
+use crate::mesh::index::{
+    grown_box, near_segment_pairs_marked, near_segment_pairs_where, BoxIndex, IdBox,
+};
 use crate::mesh::structure::{Origin, Work};
 use crate::{merge_vertices, SmoothCounts};
 use rayon::prelude::*;
+use rustc_hash::FxHashSet;
 use std::collections::HashMap;
 use topology::Point3;
 
@@ -100,19 +103,34 @@ fn split_with_roots(
 /// vertex within `delta` or merged with an earlier created one. An edge
 /// is split only into strictly shorter edges and at a point within `1.5
 /// delta` of its root; a crack point failing that for either edge is not
-/// created. Returns the number of edge pairs cracked.
+/// created.
+///
+/// With `only`, just the pairs with an edge in that set are tested: the
+/// edges made (or given a root) since the previous call. That is exact:
+/// a pair of edges neither of which changed since then has the same end
+/// points and roots, so the same test result; if it passed then and was
+/// not split, its crack point was snapped to the earliest accepted point
+/// within `delta` (`merge_vertices`), which is still the earliest now
+/// (existing vertices come first, and the vertices created since are
+/// later in order than it or were accepted after it), and neither edge
+/// may split there, as before; such a point, never accepted, changes no
+/// other point's snapping.
+///
+/// Returns the number of edge pairs cracked and the edges the splits made
+/// (or gave a root).
 pub(crate) fn crack_between_edges(
     w: &mut Work,
     delta: f64,
     counts: &mut SmoothCounts,
     roots: &mut Roots,
-) -> u64 {
+    only: Option<&FxHashSet<(u32, u32)>>,
+) -> (u64, Vec<(u32, u32)>) {
     if delta <= 0.0 {
-        return 0; // exact crossings are the Boolean's business
+        return (0, Vec::new()); // exact crossings are the Boolean's business
     }
     let edges = w.edges();
     if edges.len() < 2 {
-        return 0;
+        return (0, Vec::new());
     }
     let reach = 1.5 * delta;
     let d2max = delta * delta;
@@ -153,11 +171,16 @@ pub(crate) fn crack_between_edges(
         }
         Some((i, j, p, [pa, pb, pc, pd]))
     };
-    let mut found: Vec<(usize, usize, Point3, [Point3; 4])> =
-        near_segment_pairs_where(&ends, delta, filter);
+    let mut found: Vec<(usize, usize, Point3, [Point3; 4])> = match only {
+        None => near_segment_pairs_where(&ends, delta, filter),
+        Some(set) => {
+            let marked: Vec<bool> = edges.iter().map(|e| set.contains(e)).collect();
+            near_segment_pairs_marked(&ends, delta, &marked, filter)
+        }
+    };
     found.sort_by_key(|f| (f.0, f.1));
     if found.is_empty() {
-        return 0;
+        return (0, Vec::new());
     }
     // Snap: existing referenced vertices first (pairwise farther than
     // delta apart after merging, so they stay), then the crack points in
@@ -226,8 +249,19 @@ pub(crate) fn crack_between_edges(
         }
     }
     counts.edges_cracked_between_edges += cracked;
-    split_with_roots(w, roots, splits);
-    cracked
+    let subs = split_with_roots(w, roots, splits);
+    (cracked, subs)
+}
+
+/// What [`crack_by_vertex`] did.
+#[derive(Default)]
+pub(crate) struct ByVertex {
+    /// The rounds that split something.
+    pub rounds: u32,
+    /// Whether the budget stopped it before a fixpoint.
+    pub budget_hit: bool,
+    /// The edges its splits made (or gave a root).
+    pub made: Vec<(u32, u32)>,
 }
 
 /// An edge's crack candidates: (parameter along the edge, squared
@@ -242,18 +276,28 @@ type Candidates = Vec<(f64, f64, u32)>;
 /// when the chain's sub-edges are all shorter than the edge, else the
 /// nearest one. Each split replaces an edge by strictly shorter edges
 /// between vertices of a fixed set: the multiset of edge lengths decreases,
-/// so the rounds end. Returns the number of rounds that split something;
-/// stops early (returning `true` as second value) when `budget` says so.
+/// so the rounds end. Stops early, before a fixpoint, when `budget` says
+/// so.
+///
+/// With `since = (changed, first_new)`, the previous call ended at a
+/// fixpoint, after which the edges in `changed` were made (or given a
+/// root) and the vertices from `first_new` on were created: every other
+/// edge was found to have no candidate among the vertices before
+/// `first_new`, none of which has moved, so its first-round candidates are
+/// looked for among the new vertices only (exact, and cheap when they are
+/// few).
 pub(crate) fn crack_by_vertex(
     w: &mut Work,
     delta: f64,
     counts: &mut SmoothCounts,
     mut over_budget: impl FnMut(&SmoothCounts) -> bool,
     roots: &mut Roots,
+    since: Option<(&FxHashSet<(u32, u32)>, u32)>,
     mut after_round: impl FnMut(&Work) -> Result<(), crate::SmoothError>,
-) -> Result<(u32, bool), crate::SmoothError> {
+) -> Result<ByVertex, crate::SmoothError> {
+    let mut made = Vec::new();
     if delta <= 0.0 {
-        return Ok((0, false));
+        return Ok(ByVertex::default());
     }
     let d2max = delta * delta;
     let referenced = w.referenced();
@@ -267,12 +311,33 @@ pub(crate) fn crack_by_vertex(
             .map(|&(p, id)| IdBox { lo: p, hi: p, id })
             .collect(),
     );
+    // The vertices created since the previous fixpoint, when given.
+    let fresh = since.map(|(_, first_new)| {
+        BoxIndex::new(
+            points
+                .iter()
+                .filter(|&&(_, id)| id >= first_new)
+                .map(|&(p, id)| IdBox { lo: p, hi: p, id })
+                .collect(),
+        )
+    });
     let mut todo = w.edges();
     let mut rounds = 0;
     while !todo.is_empty() {
         if over_budget(counts) {
-            return Ok((rounds, true));
+            return Ok(ByVertex {
+                rounds,
+                budget_hit: true,
+                made,
+            });
         }
+        // In the first round after a fixpoint, an unchanged edge looks
+        // among the new vertices only.
+        let first_round = rounds == 0;
+        let index_of = |e: &(u32, u32)| match (since, &fresh) {
+            (Some((changed, _)), Some(fresh)) if first_round && !changed.contains(e) => fresh,
+            _ => &index,
+        };
         let mut splits: HashMap<(u32, u32), Vec<u32>> = HashMap::new();
         let mut inserted = 0u64;
         // The candidate vertices of each edge: those in its grown box
@@ -288,7 +353,7 @@ pub(crate) fn crack_by_vertex(
                 let l2 = dist2(pa, pb);
                 let (lo, hi) = grown_box([pa, pb], delta);
                 let mut cands: Candidates = Vec::new();
-                index.visit(&lo, &hi, |v| {
+                index_of(&(a, b)).visit(&lo, &hi, |v| {
                     if v == a || v == b {
                         return;
                     }
@@ -336,10 +401,15 @@ pub(crate) fn crack_by_vertex(
         let mut next = split_with_roots(w, roots, splits);
         next.sort_unstable();
         next.dedup();
+        made.extend_from_slice(&next);
         todo = next;
         after_round(w)?;
     }
-    Ok((rounds, false))
+    Ok(ByVertex {
+        rounds,
+        budget_hit: false,
+        made,
+    })
 }
 
 #[cfg(test)]

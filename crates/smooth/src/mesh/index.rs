@@ -334,6 +334,85 @@ impl BoxIndex {
     }
 }
 
+/// The boxes of [`near_segment_pairs_where`]: one per segment, or one per
+/// piece of a long segment, grown by `margin`; each box's segment
+/// (`owner`), and whether each segment has one box (`whole`).
+struct SegmentBoxes {
+    boxes: Vec<IdBox>,
+    owner: Vec<u32>,
+    whole: Vec<bool>,
+}
+
+impl SegmentBoxes {
+    fn new(ends: &[(Point3, Point3)], margin: f64) -> SegmentBoxes {
+        let len = |&(a, b): &(Point3, Point3)| {
+            (0..3)
+                .map(|k| (b[k] - a[k]) * (b[k] - a[k]))
+                .sum::<f64>()
+                .sqrt()
+        };
+        let mut lengths: Vec<f64> = ends.iter().map(len).filter(|l| l.is_finite()).collect();
+        let mut piece = if lengths.is_empty() {
+            0.0
+        } else {
+            let mid = lengths.len() / 2;
+            2.0 * *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
+        };
+        if piece > 0.0 {
+            let count =
+                |piece: f64| -> f64 { lengths.iter().map(|l| (l / piece).ceil().max(1.0)).sum() };
+            let most = 4.0 * ends.len() as f64;
+            while count(piece) > most {
+                piece *= 2.0;
+            }
+        }
+        let mut boxes = Vec::with_capacity(ends.len());
+        let mut owner: Vec<u32> = Vec::with_capacity(ends.len());
+        let mut whole: Vec<bool> = Vec::with_capacity(ends.len());
+        for (i, e) in ends.iter().enumerate() {
+            let l = len(e);
+            let k = if piece > 0.0 && l > piece && l.is_finite() {
+                ((l / piece).ceil() as usize).clamp(1, 256)
+            } else {
+                1
+            };
+            whole.push(k == 1);
+            let (a, b) = *e;
+            if k == 1 {
+                let (lo, hi) = grown_box([a, b], margin);
+                let id = boxes.len() as u32;
+                boxes.push(IdBox { lo, hi, id });
+                owner.push(i as u32);
+                continue;
+            }
+            // `a + (b - a) t` is within a few ulps of the true point; the
+            // slack covers it, so the pieces' boxes cover the segment.
+            let mag = (0..3)
+                .map(|c| a[c].abs().max(b[c].abs()))
+                .fold(0.0, f64::max);
+            let slack = margin + 1e-12 * mag;
+            let at = |t: f64| -> Point3 { std::array::from_fn(|c| a[c] + (b[c] - a[c]) * t) };
+            for m in 0..k {
+                let p = if m == 0 { a } else { at(m as f64 / k as f64) };
+                let q = if m + 1 == k {
+                    b
+                } else {
+                    at((m + 1) as f64 / k as f64)
+                };
+                let (lo, hi) = grown_box([p, q], slack);
+                let id = boxes.len() as u32;
+                boxes.push(IdBox { lo, hi, id });
+                owner.push(i as u32);
+            }
+        }
+        SegmentBoxes {
+            boxes,
+            owner,
+            whole,
+        }
+    }
+}
+
 /// `f(i, j)` for pairs of ids `i < j` of segments `ends[i]` and `ends[j]`
 /// whose boxes grown by `margin` meet, each pair once, keeping the `Some`
 /// answers in no particular order (the callers sort): every pair of
@@ -352,66 +431,11 @@ pub(crate) fn near_segment_pairs_where<T: Send>(
     margin: f64,
     f: impl Fn(u32, u32) -> Option<T> + Sync,
 ) -> Vec<T> {
-    let len = |&(a, b): &(Point3, Point3)| {
-        (0..3)
-            .map(|k| (b[k] - a[k]) * (b[k] - a[k]))
-            .sum::<f64>()
-            .sqrt()
-    };
-    let mut lengths: Vec<f64> = ends.iter().map(len).filter(|l| l.is_finite()).collect();
-    let mut piece = if lengths.is_empty() {
-        0.0
-    } else {
-        let mid = lengths.len() / 2;
-        2.0 * *lengths.select_nth_unstable_by(mid, f64::total_cmp).1
-    };
-    if piece > 0.0 {
-        let count =
-            |piece: f64| -> f64 { lengths.iter().map(|l| (l / piece).ceil().max(1.0)).sum() };
-        let most = 4.0 * ends.len() as f64;
-        while count(piece) > most {
-            piece *= 2.0;
-        }
-    }
-    let mut boxes = Vec::with_capacity(ends.len());
-    let mut owner: Vec<u32> = Vec::with_capacity(ends.len());
-    let mut whole: Vec<bool> = Vec::with_capacity(ends.len());
-    for (i, e) in ends.iter().enumerate() {
-        let l = len(e);
-        let k = if piece > 0.0 && l > piece && l.is_finite() {
-            ((l / piece).ceil() as usize).clamp(1, 256)
-        } else {
-            1
-        };
-        whole.push(k == 1);
-        let (a, b) = *e;
-        if k == 1 {
-            let (lo, hi) = grown_box([a, b], margin);
-            let id = boxes.len() as u32;
-            boxes.push(IdBox { lo, hi, id });
-            owner.push(i as u32);
-            continue;
-        }
-        // `a + (b - a) t` is within a few ulps of the true point; the
-        // slack covers it, so the pieces' boxes cover the segment.
-        let mag = (0..3)
-            .map(|c| a[c].abs().max(b[c].abs()))
-            .fold(0.0, f64::max);
-        let slack = margin + 1e-12 * mag;
-        let at = |t: f64| -> Point3 { std::array::from_fn(|c| a[c] + (b[c] - a[c]) * t) };
-        for m in 0..k {
-            let p = if m == 0 { a } else { at(m as f64 / k as f64) };
-            let q = if m + 1 == k {
-                b
-            } else {
-                at((m + 1) as f64 / k as f64)
-            };
-            let (lo, hi) = grown_box([p, q], slack);
-            let id = boxes.len() as u32;
-            boxes.push(IdBox { lo, hi, id });
-            owner.push(i as u32);
-        }
-    }
+    let SegmentBoxes {
+        boxes,
+        owner,
+        whole,
+    } = SegmentBoxes::new(ends, margin);
     // Answers are few (the pairs that do come close); boxed, they keep
     // the join's output small, as the split pairs are many.
     enum Found<T> {
@@ -442,6 +466,51 @@ pub(crate) fn near_segment_pairs_where<T: Send>(
     split.dedup();
     out.par_extend(split.par_iter().filter_map(|&(i, j)| f(i, j)));
     out
+}
+
+/// [`near_segment_pairs_where`] restricted to the pairs with a segment
+/// marked in `marked`: the same `Some` answers of `f` (each pair once, as
+/// `i < j`) for exactly those pairs, found by querying the marked
+/// segments' boxes instead of joining all boxes, so the cost follows the
+/// marked segments.
+pub(crate) fn near_segment_pairs_marked<T: Send>(
+    ends: &[(Point3, Point3)],
+    margin: f64,
+    marked: &[bool],
+    f: impl Fn(u32, u32) -> Option<T> + Sync,
+) -> Vec<T> {
+    let SegmentBoxes { boxes, owner, .. } = SegmentBoxes::new(ends, margin);
+    let queries: Vec<IdBox> = boxes
+        .iter()
+        .filter(|b| {
+            marked
+                .get(owner[b.id as usize] as usize)
+                .copied()
+                .unwrap_or(false)
+        })
+        .copied()
+        .collect();
+    if queries.is_empty() {
+        return Vec::new();
+    }
+    let index = BoxIndex::new(boxes);
+    let mut pairs: Vec<(u32, u32)> = queries
+        .par_iter()
+        .flat_map_iter(|q| {
+            let mut hits = Vec::new();
+            let i = owner[q.id as usize];
+            index.visit(&q.lo, &q.hi, |id| {
+                let j = owner[id as usize];
+                if i != j {
+                    hits.push((i.min(j), i.max(j)));
+                }
+            });
+            hits
+        })
+        .collect();
+    pairs.par_sort_unstable();
+    pairs.dedup();
+    pairs.par_iter().filter_map(|&(i, j)| f(i, j)).collect()
 }
 
 /// `f(i, j)` for the pairs of ids `i < j` of boxes that meet and whose

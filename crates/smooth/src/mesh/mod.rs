@@ -38,6 +38,7 @@ use crate::mesh::geom::{dist2, point_segment};
 use crate::mesh::structure::{Origin, Work};
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use robust_arith::UNIT_ROUNDOFF;
+use rustc_hash::FxHashSet;
 use topology::{Point3, PolygonMesh};
 
 /// Smooths a polygon mesh (Appendix A): merges vertices within
@@ -235,6 +236,19 @@ fn run_in_range(
     options: &SmoothOptions,
     closed: bool,
 ) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
+    phases(mesh, options, closed, true)
+}
+
+/// [`run_in_range`], with the later passes of cracking and facet
+/// cancellation looking only at what changed since the previous pass
+/// (`incremental`, what smoothing runs) or at everything (what the tests
+/// compare it with: the results are the same).
+fn phases(
+    mesh: &PolygonMesh,
+    options: &SmoothOptions,
+    closed: bool,
+    incremental: bool,
+) -> Result<(PolygonMesh, SmoothReport), SmoothError> {
     let delta = options.tolerance;
     let budget = options.budget_for(mesh.vertices.len(), mesh.half_edge_count());
     let over_budget = |c: &SmoothCounts| c.adjustments() >= budget;
@@ -251,15 +265,43 @@ fn run_in_range(
 
     // Phase 2: edge cracking between edges, then by vertex to a
     // fixpoint, repeated until neither cracks anything.
+    // After the first of each, a cracking pass looks only at what changed
+    // since the previous one (exact: `crack_between_edges` and
+    // `crack_by_vertex` say why): the edges made since, and for cracking
+    // by vertex the vertices created since its last fixpoint.
     let mut roots = crack::Roots::default();
+    let mut since_between: Option<FxHashSet<(u32, u32)>> = None;
+    let mut since_fixpoint: Option<(FxHashSet<(u32, u32)>, u32)> = None;
     loop {
-        let cracked = crack::crack_between_edges(&mut w, delta, &mut counts, &mut roots);
+        let (cracked, made) = crack::crack_between_edges(
+            &mut w,
+            delta,
+            &mut counts,
+            &mut roots,
+            since_between.as_ref(),
+        );
         passes += 1;
         debug_check(&w, "edge cracking between edges", closed)?;
-        let (rounds, hit) =
-            crack::crack_by_vertex(&mut w, delta, &mut counts, over_budget, &mut roots, |w| {
-                debug_check(w, "edge cracking by vertex", closed)
-            })?;
+        if let Some((changed, _)) = since_fixpoint.as_mut() {
+            changed.extend(made.iter().copied());
+        }
+        let crack::ByVertex {
+            rounds,
+            budget_hit: hit,
+            made: made_by_vertex,
+        } = crack::crack_by_vertex(
+            &mut w,
+            delta,
+            &mut counts,
+            over_budget,
+            &mut roots,
+            since_fixpoint.as_ref().map(|(c, first)| (c, *first)),
+            |w| debug_check(w, "edge cracking by vertex", closed),
+        )?;
+        if incremental {
+            since_between = Some(made.into_iter().chain(made_by_vertex).collect());
+            since_fixpoint = Some((FxHashSet::default(), w.pos.len() as u32));
+        }
         passes += rounds;
         budget_hit |= hit;
         if cracked == 0 && rounds == 0 {
@@ -277,12 +319,21 @@ fn run_in_range(
     debug_check(&w, "half-edge cancellation", closed)?;
 
     // Phase 4: facet cancellation while it lowers the half-edge count.
+    // After the first pass, a pass looks only at pairs with a facet the
+    // previous pass changed (exact: `facet_cancellation_pass`).
+    let mut changed_last: Option<Vec<bool>> = None;
     while !budget_hit {
         let before = w.half_edge_count();
-        let (changed, hit) =
-            cancel::facet_cancellation_pass(&mut w, delta, &mut counts, over_budget);
+        let (changed, hit, mut touched) = cancel::facet_cancellation_pass(
+            &mut w,
+            delta,
+            &mut counts,
+            over_budget,
+            changed_last.as_deref(),
+        );
         budget_hit |= hit;
-        cancel::cancel_all(&mut w, &mut counts);
+        cancel::cancel_all_marking(&mut w, &mut counts, &mut touched);
+        changed_last = incremental.then_some(touched);
         passes += 1;
         debug_check(&w, "facet cancellation", closed)?;
         if changed == 0 || w.half_edge_count() >= before {
@@ -353,5 +404,153 @@ fn report(
         max_displacement: moved,
         epsilon: bound,
         reverted: None,
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use boolean_3d::{boolean_mesh, BooleanOp};
+    use proptest::prelude::*;
+    use test_support::shapes::{box_mesh, push_box, uv_sphere};
+
+    /// The incremental passes give what passes over everything give: the
+    /// same shape, counts, bound and displacement (the pass count may
+    /// differ only when the budget stops smoothing, which these cases
+    /// never reach). Returns whether a later pass had anything to look
+    /// at, so that the tests can insist some cases do.
+    fn same_as_exhaustive(mesh: &PolygonMesh, delta: f64) -> Result<bool, TestCaseError> {
+        let options = SmoothOptions::new(delta);
+        let (a, ra) = phases(mesh, &options, true, true).unwrap();
+        let (b, rb) = phases(mesh, &options, true, false).unwrap();
+        prop_assert_eq!(&a, &b);
+        prop_assert_eq!(ra.counts, rb.counts);
+        prop_assert_eq!(ra.budget_hit, rb.budget_hit);
+        prop_assert_eq!(ra.max_adjustments, rb.max_adjustments);
+        prop_assert_eq!(ra.distortion_bound.to_bits(), rb.distortion_bound.to_bits());
+        prop_assert_eq!(ra.max_displacement.to_bits(), rb.max_displacement.to_bits());
+        if !ra.budget_hit {
+            prop_assert_eq!(ra.passes, rb.passes);
+        }
+        // More than the first cracking pair and facet pass: the second
+        // ones ran incrementally.
+        Ok(ra.passes > 5)
+    }
+
+    fn rotated(m: &PolygonMesh, axis: usize, degrees: f64, shift: f64) -> PolygonMesh {
+        let (s, c) = degrees.to_radians().sin_cos();
+        let (i, j) = ((axis + 1) % 3, (axis + 2) % 3);
+        let vertices = m
+            .vertices
+            .iter()
+            .map(|p| {
+                let mut q = *p;
+                q[i] = c * p[i] - s * p[j] + shift;
+                q[j] = s * p[i] + c * p[j] + shift;
+                q
+            })
+            .collect();
+        PolygonMesh::new(vertices, m.facets.clone())
+    }
+
+    /// A UV sphere minus or united with its copy turned by a few degrees
+    /// and moved by a hair (the guard's tour cases): many near-coincident
+    /// edges and facets, so cracking and facet cancellation run several
+    /// passes.
+    #[test]
+    fn incremental_passes_match_on_rotated_sphere_copies() {
+        let sphere = uv_sphere([0.0; 3], 1.0, 24, 12).to_polygon_mesh();
+        let mut later = 0;
+        for (k, &(axis, degrees, shift)) in [
+            (2usize, 7.5, 0.0),
+            (0, 90.0, 5e-8),
+            (2, 3.0, 1e-9),
+            (1, 15.0, 2e-8),
+            (2, 37.0, 0.0),
+        ]
+        .iter()
+        .enumerate()
+        {
+            let copy = rotated(&sphere, axis, degrees, shift);
+            for op in [
+                BooleanOp::Difference,
+                BooleanOp::Union,
+                BooleanOp::Intersection,
+            ] {
+                let m = boolean_mesh(&sphere, &copy, op).unwrap().mesh;
+                for delta in [1e-9, 1e-7, 1e-4, 1e-2] {
+                    let ran = same_as_exhaustive(&m, delta)
+                        .unwrap_or_else(|e| panic!("case {k} {op:?} at {delta}: {e}"));
+                    later += usize::from(ran);
+                }
+            }
+        }
+        assert!(later >= 10, "only {later} cases ran later passes");
+    }
+
+    fn grid_box() -> impl Strategy<Value = ([f64; 3], [f64; 3])> {
+        (
+            prop::array::uniform3(0i32..4),
+            prop::array::uniform3(1i32..4),
+            -12i32..=-5,
+            prop::array::uniform3(-1i32..=1),
+        )
+            .prop_map(|(lo, size, e, dir)| {
+                let j = 10f64.powi(e);
+                let lo: [f64; 3] =
+                    std::array::from_fn(|k| 0.25 * f64::from(lo[k]) + j * f64::from(dir[k]));
+                let hi: [f64; 3] = std::array::from_fn(|k| lo[k] + 0.25 * f64::from(size[k]));
+                (lo, hi)
+            })
+    }
+
+    fn op() -> impl Strategy<Value = BooleanOp> {
+        prop::sample::select(vec![
+            BooleanOp::Union,
+            BooleanOp::Difference,
+            BooleanOp::Intersection,
+        ])
+    }
+
+    proptest! {
+        #![proptest_config(ProptestConfig::with_cases(test_support::cases(96)))]
+
+        /// Boolean chains of jittered grid boxes, smoothed at tolerances
+        /// around the jitter.
+        #[test]
+        fn incremental_passes_match_on_box_chains(
+            first in grid_box(),
+            rest in prop::collection::vec((op(), grid_box()), 1..4),
+            delta in prop::sample::select(vec![1e-9, 1e-7, 1e-5, 3e-3]),
+        ) {
+            let mut m = box_mesh(first.0, first.1);
+            for (o, b) in &rest {
+                m = boolean_mesh(&m, &box_mesh(b.0, b.1), *o).unwrap().mesh;
+            }
+            same_as_exhaustive(&m, delta)?;
+        }
+
+        /// Closed topology from boxes with every position drawn within a
+        /// few tolerances of a few centres: merging, cracking and
+        /// cancellation everywhere.
+        #[test]
+        fn incremental_passes_match_on_clustered_meshes(
+            boxes in prop::collection::vec(grid_box(), 1..4),
+            centres in prop::collection::vec(prop::array::uniform3(-2i32..=2), 1..4),
+            picks in prop::collection::vec((0usize..4, prop::array::uniform3(-1.0f64..1.0)), 32),
+            spread in prop::sample::select(vec![0.3, 1.0, 3.0, 10.0]),
+        ) {
+            let delta = 1e-5;
+            let (mut v, mut f) = (Vec::new(), Vec::new());
+            for b in &boxes {
+                push_box(&mut v, &mut f, b.0, b.1, false);
+            }
+            for (i, p) in v.iter_mut().enumerate() {
+                let (c, off) = picks[i % picks.len()];
+                let c = centres[c % centres.len()];
+                *p = std::array::from_fn(|k| 0.5 * f64::from(c[k]) + spread * delta * off[k]);
+            }
+            same_as_exhaustive(&PolygonMesh::new(v, f), delta)?;
+        }
     }
 }
