@@ -749,7 +749,7 @@ impl<W: Winding> Sweep<'_, W> {
         // vertical edges and for an edge ending at `p` (whose range holds
         // `p.y`). For the others, Table 7.1 interpolates from the closer
         // end with |lambda| <= 1/2 (up to rounding), so its result never
-        // leaves the edge's y-range (robust-arith's `tests/table_7_1.rs`
+        // leaves the edge's y-range (robust-arith's `tests/it/table_7_1.rs`
         // checks this over every magnitude and on the coarse grids of
         // section 7.7): outside that range the answer is known without the
         // division.

@@ -16,7 +16,7 @@
 //! was tried and dropped: it clipped other ears than the plain scan, which
 //! changed the triangles that smoothing re-triangulates, and on the demo
 //! model a second smoothing then found vertices on the new triangles'
-//! edges (`crates/umbra/tests/model_clean.rs` asserts idempotence). The
+//! edges (`crates/umbra/tests/it/model_clean.rs` asserts idempotence). The
 //! plain order costs about a third more on a plate with 1,000 holes
 //! (14 against 9 ms), still linear in practice.
 
