@@ -31,7 +31,7 @@ impl Simplified {
     /// selecting from the complete structure, without holding the rest of
     /// the arrangement.
     fn select<W: Winding>(
-        keep: impl Fn(&W) -> bool,
+        keep: impl Fn(&W) -> bool + Sync,
         cells: impl FnOnce(Output<'_, W>) -> Result<CellStructure<W>, SimplifyError>,
     ) -> Result<Self, SimplifyError> {
         let cells = cells(Output::Boundary(&keep))?;
@@ -277,11 +277,13 @@ fn cells_of_many(
 
 /// An n-ary Boolean in one sweep: `keep` receives the winding number of
 /// every operand for a cell and decides whether it is part of the result.
+/// It may be called from several threads at once (a large input is swept
+/// in vertical strips in parallel), hence `Sync`.
 /// For example `|w| w.iter().filter(|&&x| x > 0).count() >= 2` selects the
 /// points covered by at least two operands.
 pub fn boolean_n(
     sets: &[PolygonSet2],
-    keep: impl Fn(&[i32]) -> bool,
+    keep: impl Fn(&[i32]) -> bool + Sync,
 ) -> Result<Simplified, SimplifyError> {
     Simplified::select(|w: &Vec<i32>| keep(w), |out| cells_of_many(sets, out))
 }

@@ -97,6 +97,47 @@ pub struct CellStructure<W> {
     alpha: f64,
     dims: usize,
     stats: SweepStats,
+    extent: Extent,
+}
+
+/// Where a sweep's arrangement lies, every edge counted whether kept or
+/// not: the x-range of its processed points and the x of each vertical
+/// edge (what `strips.rs` needs to join strips).
+#[derive(Clone, Debug)]
+pub(crate) struct Extent {
+    pub(crate) x_min: f64,
+    pub(crate) x_max: f64,
+    pub(crate) vertical_x: Vec<f64>,
+    /// Whether the points were processed in increasing lexicographic
+    /// order, each once (no backward step of section 7.6.1): then the
+    /// vertices of `Output::Boundary` are in lexicographic order.
+    pub(crate) ordered: bool,
+    /// The last point processed.
+    pub(crate) last: [f64; 2],
+}
+
+impl Default for Extent {
+    fn default() -> Self {
+        Extent {
+            x_min: f64::INFINITY,
+            x_max: f64::NEG_INFINITY,
+            vertical_x: Vec::new(),
+            ordered: true,
+            last: [f64::NEG_INFINITY; 2],
+        }
+    }
+}
+
+impl Extent {
+    /// Notes a processed point.
+    #[inline]
+    pub(crate) fn add(&mut self, p: Pt) {
+        self.x_min = self.x_min.min(p.x);
+        self.x_max = self.x_max.max(p.x);
+        let [x, y] = self.last;
+        self.ordered &= p.x > x || (p.x == x && p.y > y);
+        self.last = [p.x, p.y];
+    }
 }
 
 impl<W: Winding> CellStructure<W> {
@@ -120,7 +161,14 @@ impl<W: Winding> CellStructure<W> {
             alpha: intersection_error_bound(max_abs),
             dims,
             stats,
+            extent: Extent::default(),
         }
+    }
+
+    /// The structure with where its sweep's arrangement lies.
+    pub(crate) fn with_extent(mut self, extent: Extent) -> Self {
+        self.extent = extent;
+        self
     }
 
     /// The vertex positions (every processed event point).
@@ -300,6 +348,26 @@ impl<W: Winding> CellStructure<W> {
         drop(edges);
         drop(rotations);
         shape_of(Cow::Owned(vertices), sel, every_used)
+    }
+
+    /// A structure kept for its shape only, taken apart (`None` for a
+    /// complete structure).
+    pub(crate) fn into_boundary_parts(self) -> Option<crate::strips::Part> {
+        let CellStructure {
+            vertices,
+            boundary,
+            k_max,
+            stats,
+            extent,
+            ..
+        } = self;
+        boundary.map(|edges| crate::strips::Part {
+            vertices,
+            edges,
+            k_max,
+            stats,
+            extent,
+        })
     }
 
     /// The edges separating a retained cell from a discarded one, keyed as

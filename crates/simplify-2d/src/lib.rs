@@ -20,6 +20,11 @@
 //! dissertation prescribes; vertical edges are merged by 1D simplification.
 //! Nothing iterates to a fixed point (section 7.6.3).
 //!
+//! A simplification or Boolean of a large input is swept in vertical
+//! strips in parallel and the strips' boundaries joined (`strips.rs`):
+//! the same guarantees, with the cut points counted in `k_max`, and the
+//! same result on any number of threads.
+//!
 //! Guarantees: for every input satisfying shape boundary closure, the cell
 //! structure is valid ([`CellStructure::check_cells`]) and every simplified
 //! shape satisfies shape boundary closure. Geometric accuracy: each result
@@ -58,6 +63,7 @@ mod collection;
 mod end_points;
 mod error;
 mod point;
+mod strips;
 mod sweep;
 mod sweep_line;
 mod vertex_table;

@@ -35,9 +35,10 @@
 //! bounds its memory by the result instead of the arrangement.
 
 use crate::buffer_heap::{BufferHeap, Entry};
-use crate::cells::{CellEdge, CellStructure, Fan, Keyed, SweepStats};
+use crate::cells::{CellEdge, CellStructure, Extent, Fan, Keyed, SweepStats};
 use crate::end_points::{EndPoints, Slot};
 use crate::point::{Pt, SortKey};
+use crate::strips::{run_in_strips, strip_count, STRIP_MIN_EDGES};
 use crate::sweep_line::SweepLine;
 use crate::vertex_table::VertexTable;
 use crate::winding::Winding;
@@ -47,6 +48,7 @@ use std::cmp::Ordering;
 
 /// One directed input edge `a -> b` with multiplicity `mult`, and the index
 /// of the original edge it stands for (provenance).
+#[derive(Clone)]
 pub(crate) struct InputEdge<W> {
     pub(crate) a: [f64; 2],
     pub(crate) b: [f64; 2],
@@ -237,7 +239,7 @@ pub(crate) enum Output<'k, W> {
     /// and no rotations: the edges that
     /// [`CellStructure::into_shape_with`] with the same `keep` selects,
     /// for a simplification or Boolean that consumes the structure at once.
-    Boundary(&'k dyn Fn(&W) -> bool),
+    Boundary(&'k (dyn Fn(&W) -> bool + Sync)),
 }
 
 /// The edges the sweep sends to the output, filtered by [`Output`], and the
@@ -259,13 +261,16 @@ struct Emitted<'k, W> {
     out_id: Vec<u32>,
     /// The output edge of each sweep-line edge id, while recording.
     id_to_edge: Vec<u32>,
-    keep: Option<&'k dyn Fn(&W) -> bool>,
+    keep: Option<&'k (dyn Fn(&W) -> bool + Sync)>,
     k_max: u32,
+    /// Where the arrangement lies, kept or not (`strips.rs` checks it).
+    extent: Extent,
 }
 
 impl<W: Winding> Emitted<'_, W> {
     /// Notes a newly processed point `p`, whose id is the next one.
     fn add_point(&mut self, p: Pt) {
+        self.extent.add(p);
         if self.keep.is_none() {
             self.vertices.push(p.arr());
         } else {
@@ -342,6 +347,9 @@ impl<W: Winding> Emitted<'_, W> {
     /// `p`) to the output edges; it leaves the sweep line.
     fn emit(&mut self, e: &SweepEdge<W>, end: u32, p: Pt, k: u32) {
         self.k_max = self.k_max.max(k);
+        if e.l.x == p.x && e.l.y != p.y {
+            self.extent.vertical_x.push(p.x);
+        }
         let start = e.lid;
         let mut left = e.below.clone();
         left.add_assign(&e.m);
@@ -380,7 +388,9 @@ impl<W: Winding> Emitted<'_, W> {
 }
 
 /// Runs the sweep on the given edges (about `n` of them) and returns the
-/// cell structure.
+/// cell structure. A structure kept for its shape only
+/// ([`Output::Boundary`]) of a large input is swept in vertical strips in
+/// parallel (`strips.rs`).
 pub(crate) fn run<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
@@ -388,12 +398,19 @@ pub(crate) fn run<W: Winding + Sync>(
     max_abs: f64,
     output: Output<'_, W>,
 ) -> Result<CellStructure<W>, SimplifyError> {
-    run_with(input, n, dims, max_abs, output, true)
+    match output {
+        Output::Boundary(keep) if n >= STRIP_MIN_EDGES => {
+            let input: Vec<InputEdge<W>> = input.into_iter().collect();
+            let strips = strip_count(&input);
+            run_in_strips(input, strips, dims, max_abs, keep)
+        }
+        _ => run_with(input, n, dims, max_abs, output, true),
+    }
 }
 
 /// [`run`], joining the right parts of a crossing in the buffer heap or
 /// not (`join`; the tests compare both).
-fn run_with<W: Winding + Sync>(
+pub(crate) fn run_with<W: Winding + Sync>(
     input: impl IntoIterator<Item = InputEdge<W>>,
     n: usize,
     dims: usize,
@@ -499,6 +516,7 @@ fn sweep<W: Winding + Sync>(
             out_id: Vec::with_capacity(if record { 0 } else { n * 2 }),
             keep,
             k_max: 0,
+            extent: Extent::default(),
         },
         record,
         fans: Vec::with_capacity(log_cap(n * 2)),
@@ -587,6 +605,7 @@ fn sweep<W: Winding + Sync>(
     }
     s.stats.max_sweep_len = s.stats.max_sweep_len.max(s.line.len());
     let k_max = s.out.k_max;
+    let extent = std::mem::take(&mut s.out.extent);
     let (vertices, edges, boundary) = s.out.finish();
     Ok(CellStructure::new(
         vertices,
@@ -597,7 +616,8 @@ fn sweep<W: Winding + Sync>(
         max_abs,
         dims,
         s.stats,
-    ))
+    )
+    .with_extent(extent))
 }
 
 impl<W: Winding> Sweep<'_, W> {
