@@ -56,17 +56,23 @@ use rayon::prelude::*;
 use robust_arith::{orient2d, y_at_x};
 use std::cmp::Ordering;
 
-/// The number of strips for these input edges, from an estimate of the
-/// sweep's events: the edges times the mean number of edges over a
-/// vertical line (their summed x-extent over the input's width), a
-/// quarter of which the sweep meets as crossings (about right for random
-/// polygons, where crossings dominate; one event per edge at least).
-/// One strip below [`STRIP_MIN_EVENTS`], where cutting and joining and
-/// waking a second thread cost more than it saves; more strips as the
-/// work grows, never more than [`MAX_STRIPS`]. A function of the input
-/// alone (see the module documentation, "Determinism").
+/// The number of strips for these input edges: two when the sweep's work
+/// is dominated by crossings and large enough, else one. The crossings are
+/// bounded first by the edges times a quarter of the mean number of edges
+/// over a vertical line (their summed x-extent over the input's width;
+/// about right for random polygons); when that bound reaches
+/// [`STRIP_MIN_EVENTS`], they are estimated from [`CROSSING_SAMPLES`] pairs
+/// of edges drawn by a fixed sequence (exact tests). Two strips when the
+/// estimated crossings are at least the edges and, with the edges, reach
+/// [`STRIP_MIN_EVENTS`]. Inputs with few crossings stay in one strip:
+/// there each cut edge adds an event to both strips whose line is as long
+/// as the whole sweep's (nested squares were twice as slow in strips), and
+/// the gain measured on the n-gon unions and checkerboards was within the
+/// noise. A function of the input alone (see the module documentation,
+/// "Determinism").
 pub(crate) fn strip_count<W>(input: &[InputEdge<W>]) -> usize {
-    if input.len() < STRIP_MIN_EDGES {
+    let n = input.len();
+    if n < STRIP_MIN_EDGES {
         return 1;
     }
     let (mut lo, mut hi, mut spans) = (f64::INFINITY, f64::NEG_INFINITY, 0.0);
@@ -76,31 +82,54 @@ pub(crate) fn strip_count<W>(input: &[InputEdge<W>]) -> usize {
         spans += (e.b[0] - e.a[0]).abs();
     }
     let line = if hi > lo { spans / (hi - lo) } else { 0.0 };
-    // Finite: the coordinates are (a NaN estimate takes one strip).
-    let events = input.len() as f64 * (line / 4.0).max(1.0);
-    if events.is_nan() || events < STRIP_MIN_EVENTS {
-        1
-    } else if events < 250_000.0 {
-        2
-    } else if events < 2_000_000.0 {
-        4
-    } else {
-        MAX_STRIPS
+    let bound = n as f64 * (line / 4.0).max(1.0);
+    if bound.is_nan() || bound < STRIP_MIN_EVENTS {
+        return 1;
     }
+    // Sampled pairs (a splitmix64 sequence): the share that cross.
+    let mut state = n as u64;
+    let mut next = |m: usize| {
+        state = state.wrapping_add(0x9E37_79B9_7F4A_7C15);
+        let mut z = state;
+        z = (z ^ (z >> 30)).wrapping_mul(0xBF58_476D_1CE4_E5B9);
+        z = (z ^ (z >> 27)).wrapping_mul(0x94D0_49BB_1331_11EB);
+        ((z ^ (z >> 31)) % m as u64) as usize
+    };
+    let mut hits = 0usize;
+    for _ in 0..CROSSING_SAMPLES {
+        let (i, j) = (next(n), next(n));
+        if i != j && segments_cross(&input[i], &input[j]) {
+            hits += 1;
+        }
+    }
+    let pairs = n as f64 * (n as f64 - 1.0) / 2.0;
+    let crossings = pairs * hits as f64 / CROSSING_SAMPLES as f64;
+    if crossings >= n as f64 && n as f64 + crossings >= STRIP_MIN_EVENTS {
+        2
+    } else {
+        1
+    }
+}
+
+/// Pairs of edges the estimate of [`strip_count`] tests.
+const CROSSING_SAMPLES: usize = 256;
+
+/// Do the two edges cross at a point inside both (exact)?
+fn segments_cross<W>(e: &InputEdge<W>, f: &InputEdge<W>) -> bool {
+    let opposite =
+        |x: Ordering, y: Ordering| x != Ordering::Equal && y != Ordering::Equal && x != y;
+    opposite(orient2d(e.a, e.b, f.a), orient2d(e.a, e.b, f.b))
+        && opposite(orient2d(f.a, f.b, e.a), orient2d(f.a, f.b, e.b))
 }
 
 /// Inputs with fewer edges are swept in one strip without an estimate.
 pub(crate) const STRIP_MIN_EDGES: usize = 64;
 
 /// Inputs whose estimated events are fewer are swept in one strip: below
-/// a few milliseconds of sweeping, handing strips to the thread pool and
+/// a few milliseconds of sweeping, handing a strip to the thread pool and
 /// waking its threads cost about what the second thread saves (the
-/// 4,000-edge n-gon unions of Table 7.4 were slower in strips, the
-/// 500-vertex random polygons, about 19,000 estimated events, faster).
+/// 4,000-edge n-gon unions of Table 7.4 were slower in strips).
 const STRIP_MIN_EVENTS: f64 = 15_000.0;
-
-/// The most strips an input is cut into.
-const MAX_STRIPS: usize = 8;
 
 /// The most vertices the triangle test of one cut point looks at before it
 /// keeps the point (see "Joining").
@@ -606,6 +635,11 @@ fn triangle_is_empty(parts: &[Part], a: Local, p: [f64; 2], b: Local) -> bool {
     let ylo = pa[1].min(p[1]).min(pb[1]);
     let yhi = pa[1].max(p[1]).max(pb[1]);
     let turn = orient2d(pa, p, pb);
+    if turn == Ordering::Equal {
+        // `p` on `a b` (strictly between in x): the new edge is the same
+        // point set as the two it replaces.
+        return true;
+    }
     let mut budget = TRIANGLE_BUDGET;
     for (s, part) in parts.iter().enumerate().take(b.0 + 1).skip(a.0) {
         let v = &part.vertices;
@@ -622,15 +656,7 @@ fn triangle_is_empty(parts: &[Part], a: Local, p: [f64; 2], b: Local) -> bool {
             if q[1] < ylo || q[1] > yhi || q == p || q == pa || q == pb {
                 continue;
             }
-            if turn == Ordering::Equal {
-                // Degenerate: `p` on `a b`. A vertex on the segment would
-                // lie on one of the two edges; keep the point rather than
-                // reason.
-                if orient2d(pa, pb, q) == Ordering::Equal {
-                    return false;
-                }
-                continue;
-            }
+
             let side = |o: Ordering| o == turn || o == Ordering::Equal;
             if side(orient2d(pa, p, q)) && side(orient2d(p, pb, q)) && side(orient2d(pb, pa, q)) {
                 return false;
