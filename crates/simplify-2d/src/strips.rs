@@ -52,7 +52,6 @@ use crate::point::Pt;
 use crate::sweep::{run_with, InputEdge, Output};
 use crate::winding::Winding;
 use crate::SimplifyError;
-use rayon::prelude::*;
 use robust_arith::{orient2d, y_at_x};
 use std::cmp::Ordering;
 
@@ -157,13 +156,32 @@ pub(crate) fn run_in_strips<W: Winding + Sync>(
         return run_with(input, n, dims, max_abs, Output::Boundary(keep), true);
     }
     let Cut { strips, on_line } = cut(&input, &cuts);
-    let outputs: Vec<Result<CellStructure<W>, SimplifyError>> = strips
-        .into_par_iter()
-        .with_max_len(1)
-        .map(|p| {
-            let len = p.len();
-            run_with(p, len, dims, max_abs, Output::Boundary(keep), true)
-        })
+    let sweep = |p: Vec<InputEdge<W>>| {
+        let len = p.len();
+        run_with(p, len, dims, max_abs, Output::Boundary(keep), true)
+    };
+    // The first strip on the calling thread, the others on the pool (on
+    // one thread, all here): where a strip runs changes nothing it
+    // computes, and the caller neither waits idle nor hops to the pool.
+    let mut outputs: Vec<Option<Result<CellStructure<W>, SimplifyError>>> =
+        strips.iter().map(|_| None).collect();
+    let mut strips = strips.into_iter();
+    if rayon::current_num_threads() < 2 {
+        for (slot, p) in outputs.iter_mut().zip(strips) {
+            *slot = Some(sweep(p));
+        }
+    } else if let (Some((first, rest)), Some(p0)) = (outputs.split_first_mut(), strips.next()) {
+        rayon::in_place_scope(|scope| {
+            for (slot, p) in rest.iter_mut().zip(strips) {
+                let sweep = &sweep;
+                scope.spawn(move |_| *slot = Some(sweep(p)));
+            }
+            *first = Some(sweep(p0));
+        });
+    }
+    let outputs: Vec<Result<CellStructure<W>, SimplifyError>> = outputs
+        .into_iter()
+        .map(|o| o.unwrap_or_else(|| Err(SimplifyError::Internal("a strip was not swept".into()))))
         .collect();
     let mut parts = Vec::with_capacity(outputs.len());
     for o in outputs {
