@@ -2,7 +2,7 @@
 //! copy of itself rotated by alpha degrees, through one simplification sweep.
 //!
 //! ```text
-//! cargo run --release -p simplify-2d --example ngon_union -- [n] [alpha_degrees]
+//! cargo run --release -p simplify-2d --example sweep_ngon_union -- [n] [alpha_degrees]
 //! ```
 //!
 //! Prints the time, the number of rings and vertices (correct: one ring of
