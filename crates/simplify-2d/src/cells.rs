@@ -101,13 +101,16 @@ pub struct CellStructure<W> {
 }
 
 /// Where a sweep's arrangement lies, every edge counted whether kept or
-/// not: the x-range of its processed points and the x of each vertical
-/// edge (what `strips.rs` needs to join strips).
+/// not: the x-range of its processed points and the x-range of its
+/// vertical edges (what `strips.rs` needs to join strips: an arrangement
+/// inside `[lo, hi]` has a vertical edge on `x = lo` exactly when its
+/// vertical edges' least x is `lo`, and likewise for `hi`).
 #[derive(Clone, Debug)]
 pub(crate) struct Extent {
     pub(crate) x_min: f64,
     pub(crate) x_max: f64,
-    pub(crate) vertical_x: Vec<f64>,
+    pub(crate) vertical_min: f64,
+    pub(crate) vertical_max: f64,
     /// Whether the points were processed in increasing lexicographic
     /// order, each once (no backward step of section 7.6.1): then the
     /// vertices of `Output::Boundary` are in lexicographic order.
@@ -121,7 +124,8 @@ impl Default for Extent {
         Extent {
             x_min: f64::INFINITY,
             x_max: f64::NEG_INFINITY,
-            vertical_x: Vec::new(),
+            vertical_min: f64::INFINITY,
+            vertical_max: f64::NEG_INFINITY,
             ordered: true,
             last: [f64::NEG_INFINITY; 2],
         }
@@ -137,6 +141,13 @@ impl Extent {
         let [x, y] = self.last;
         self.ordered &= p.x > x || (p.x == x && p.y > y);
         self.last = [p.x, p.y];
+    }
+
+    /// Notes a vertical edge at `x`.
+    #[inline]
+    pub(crate) fn add_vertical(&mut self, x: f64) {
+        self.vertical_min = self.vertical_min.min(x);
+        self.vertical_max = self.vertical_max.max(x);
     }
 }
 

@@ -392,7 +392,8 @@ fn join(parts: Vec<Part>, cuts: &[f64], on_line: &[Vec<f64>], n: usize) -> Optio
         if !x.ordered
             || x.x_min < lo
             || x.x_max > hi
-            || x.vertical_x.iter().any(|&v| v == lo || v == hi)
+            || x.vertical_min == lo
+            || x.vertical_max == hi
         {
             return None;
         }

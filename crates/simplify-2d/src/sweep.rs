@@ -348,7 +348,7 @@ impl<W: Winding> Emitted<'_, W> {
     fn emit(&mut self, e: &SweepEdge<W>, end: u32, p: Pt, k: u32) {
         self.k_max = self.k_max.max(k);
         if e.l.x == p.x && e.l.y != p.y {
-            self.extent.vertical_x.push(p.x);
+            self.extent.add_vertical(p.x);
         }
         let start = e.lid;
         let mut left = e.below.clone();
