@@ -466,6 +466,18 @@ impl Boolean3Report {
     }
 }
 
+impl Boolean3Report {
+    /// The report once the result was written with its facets split into
+    /// triangles (`written`, as `EncodedMesh::triangulated` gives it): the
+    /// output counted again as written under `output_file`, validity
+    /// checked again.
+    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
+        self.output = MeshCounts::of_mesh(output_file, written);
+        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
+        self
+    }
+}
+
 /// What rounding to `f32` for writing puts in a 3D report, shared by the
 /// report types that have these fields: the output counted again as
 /// written under `output_file`, validity checked again, the rounding
@@ -555,6 +567,16 @@ impl SmoothFileReport<MeshCounts> {
             &mut self.f32_rounding,
             &mut self.timings_ms,
         );
+        self
+    }
+
+    /// The report once the smoothed mesh was written with its facets split
+    /// into triangles (`written`, as `EncodedMesh::triangulated` gives
+    /// it): the output counted again as written under `output_file`,
+    /// validity checked again.
+    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
+        self.output = MeshCounts::of_mesh(output_file, written);
+        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
         self
     }
 }

@@ -126,8 +126,10 @@ impl DemoArgs {
             match check.two_manifold {
                 Some(true) => "yes".to_string(),
                 Some(false) => format!(
-                    "no ({} non-manifold edges)",
-                    check.non_manifold_edges.unwrap_or(0)
+                    "no ({} open edges, {} non-manifold edges, {} non-manifold vertices)",
+                    check.open_edges.unwrap_or(0),
+                    check.non_manifold_edges.unwrap_or(0),
+                    check.non_manifold_vertices.unwrap_or(0)
                 ),
                 None => "not computed".to_string(),
             },
