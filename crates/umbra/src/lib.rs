@@ -49,7 +49,8 @@
 //!   line.
 //! - Output encoded in memory before anything is written:
 //!   [`encode_polygon_set`] (which also counts the rings as written) and
-//!   [`encode_mesh`].
+//!   [`encode_mesh`] ([`encode_mesh_with`] also gives the mesh the file
+//!   holds, [`EncodedMesh::written`], which the reports count).
 //!
 //! # Example
 //!

@@ -19,7 +19,9 @@ use umbra::{
 };
 
 /// Build the demo model (a process plant of some hundreds of Booleans),
-/// write it as a mesh with its CSG script, and print a summary.
+/// write it as meshes (STL, 3MF, OBJ) with its CSG script, a picture and
+/// `report.json` (the evaluation, and every file as written), and print a
+/// summary.
 #[derive(clap::Args, Debug)]
 pub struct DemoArgs {
     /// The folder to write into (created if missing).
