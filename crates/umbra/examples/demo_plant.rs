@@ -21,8 +21,8 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let mut stdout = std::io::stdout().lock();
     writeln!(
         stdout,
-        "{detail:?}: {} Booleans over {} leaves in {secs:.2} s on {} threads; {} vertices, {} facets, valid {}, non-manifold edges {}, volume {:.4} m^3",
-        r.booleans, r.leaves, r.threads, r.vertices, r.facets, r.topologically_valid, r.non_manifold_edges, r.volume
+        "{detail:?}: {} Booleans over {} leaves in {secs:.2} s on {} threads; {} vertices, {} facets, valid {}, open edges {:?}, non-manifold edges {:?}, volume {:.4} m^3",
+        r.booleans, r.leaves, r.threads, r.vertices, r.facets, r.topologically_valid, r.open_edges, r.non_manifold_edges, r.volume
     )?;
     let mut slow: Vec<_> = r.nodes.iter().filter(|n| n.booleans > 0).collect();
     slow.sort_by(|a, b| b.ms.total_cmp(&a.ms));

@@ -6,15 +6,17 @@
 //! back-and-forth spikes: the written rings may differ from
 //! [`PolygonSet2::loops`] of the set as computed).
 
-use crate::io::{rename_output, welded, wrong_dimension_of as wrong_dimension};
-use crate::report::{MeshCounts, SetCounts};
+use crate::io::{
+    faces_split, obj_of_faces, off_of_faces, ply_of_faces, rename_output, triangles_3mf,
+    triangles_to_3mf, triangles_to_stl, welded, wrong_dimension_of as wrong_dimension,
+};
+use crate::report::{Boolean3Report, MeshCounts, SetCounts, SmoothFileReport};
 use crate::{
-    layout_polygons, mesh_to_3mf, mesh_to_glb, mesh_to_gltf, mesh_to_obj, mesh_to_off, mesh_to_ply,
-    mesh_to_stl, polygon_set_to_svg, polygons_to_geojson, polygons_to_wkt, FileKind,
-    MeshWriteOptions, RingOrientation, UmbraError,
+    layout_polygons, mesh_to_glb, mesh_to_gltf, polygon_set_to_svg, polygons_to_geojson,
+    polygons_to_wkt, CsgReport, FileKind, MeshWriteOptions, RingOrientation, UmbraError,
 };
 use std::time::Instant;
-use topology::{PolygonMesh, PolygonSet2};
+use topology::{Facet, PolygonMesh, PolygonSet2};
 
 /// A 2D result encoded for one file format.
 #[derive(Clone, Debug, PartialEq)]
@@ -103,26 +105,53 @@ pub fn encode_polygon_set(
     })
 }
 
-/// A 3D result encoded for one file format: the bytes and, where the
-/// format stores `f32` coordinates, the rounded mesh they hold, so that a
-/// front end reports what was written rather than what was computed.
+/// A 3D result encoded for one file format: the bytes and, where the file
+/// holds another mesh than the one given (rounded to `f32`, or facets
+/// split into triangles), that mesh, so that a front end reports what was
+/// written rather than what was computed ([`EncodedMesh::written`]).
 #[derive(Clone, Debug)]
 pub struct EncodedMesh {
     /// The file's contents.
     pub bytes: Vec<u8>,
     /// For a format of `f32` coordinates (binary STL, glTF), the mesh
-    /// written ([`crate::round_to_f32`] of the mesh given, welded by exact
-    /// position as the format's reader welds it: its vertex and facet
-    /// counts and volume can differ); `None` when the mesh given was
-    /// written as it is.
+    /// written ([`crate::round_to_f32`] of the mesh given, triangles,
+    /// welded by exact position as the format's reader welds it: its
+    /// vertex and facet counts and volume can differ); `None` when the
+    /// coordinates were written as they are.
     pub rounded: Option<crate::RoundedMesh>,
+    /// For a format of `f64` coordinates whose file holds other facets
+    /// than the mesh given, the mesh written: for ASCII STL, the facets'
+    /// triangles (section 4.8) welded by exact position as the reader
+    /// welds them; for 3MF, the triangles with every vertex (a triangle
+    /// with a repeated vertex left out, as the writer does); for OBJ, OFF
+    /// and PLY, when a facet has several loops, the mesh with such facets
+    /// triangulated. `None` when the facets were written one for one (or
+    /// [`EncodedMesh::rounded`] holds the mesh written).
+    pub triangulated: Option<PolygonMesh>,
 }
 
 impl EncodedMesh {
-    /// The mesh the file holds: the rounded mesh, or `given` (the mesh
-    /// that was encoded) when nothing was rounded.
+    /// The mesh the file holds: the rounded mesh, the triangulated mesh,
+    /// or `given` (the mesh that was encoded) when it was written facet
+    /// for facet.
+    ///
+    /// ```
+    /// use umbra::{cuboid, encode_mesh_with, DVec3, FileKind, MeshWriteOptions};
+    /// let cube = cuboid(DVec3::new(1.0, 1.0, 1.0), false).unwrap();
+    /// let text = MeshWriteOptions { text: true };
+    /// for kind in [FileKind::Stl, FileKind::ThreeMf] {
+    ///     let e = encode_mesh_with(kind, &cube, text, "c").unwrap();
+    ///     // Six squares written as twelve triangles on the eight corners.
+    ///     let w = e.written(&cube);
+    ///     assert_eq!((w.vertices.len(), w.facets.len()), (8, 12));
+    /// }
+    /// ```
     pub fn written<'a>(&'a self, given: &'a PolygonMesh) -> &'a PolygonMesh {
-        self.rounded.as_ref().map_or(given, |r| &r.mesh)
+        match (&self.rounded, &self.triangulated) {
+            (Some(r), _) => &r.mesh,
+            (None, Some(t)) => t,
+            (None, None) => given,
+        }
     }
 
     /// The counts of what is written, under the name `file` (`given` is
@@ -144,7 +173,10 @@ pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec
 /// Where the format stores `f32` coordinates (binary STL, glTF), the mesh
 /// is rounded by [`crate::round_to_f32`], which smooths away any facet
 /// intersection the rounding would create; the rounded mesh, the rounding
-/// report and its time come back in [`EncodedMesh::rounded`].
+/// report and its time come back in [`EncodedMesh::rounded`]. Where the
+/// file holds the facets split into triangles otherwise (ASCII STL, 3MF,
+/// facets with holes in OBJ, OFF and PLY), the mesh written comes back in
+/// [`EncodedMesh::triangulated`].
 ///
 /// ```
 /// use umbra::{cuboid, encode_mesh_with, DVec3, FileKind, MeshWriteOptions};
@@ -154,8 +186,10 @@ pub fn encode_mesh(kind: FileKind, mesh: &PolygonMesh, file: &str) -> Result<Vec
 /// assert_eq!(rounded.report.moved_vertices, 7); // 0.1, 0.2, 0.3 are not f32 values
 /// assert_eq!(stl.counts("c.stl", &cube).facets, 12);
 /// let off = encode_mesh_with(FileKind::Off, &cube, MeshWriteOptions::default(), "c.off").unwrap();
-/// assert!(off.rounded.is_none());
+/// assert!(off.rounded.is_none() && off.triangulated.is_none());
 /// assert_eq!(off.counts("c.off", &cube).facets, 6);
+/// let tmf = encode_mesh_with(FileKind::ThreeMf, &cube, MeshWriteOptions::default(), "c.3mf").unwrap();
+/// assert_eq!(tmf.counts("c.3mf", &cube).facets, 12);
 /// ```
 pub fn encode_mesh_with(
     kind: FileKind,
@@ -168,14 +202,37 @@ pub fn encode_mesh_with(
     let ms = start.elapsed().as_secs_f64() * 1e3;
     let written_rounded = rounded.as_ref().map(|r| r.mesh.to_polygon_mesh());
     let written = written_rounded.as_ref().unwrap_or(mesh);
-    let bytes = match kind {
-        FileKind::Obj => Ok(mesh_to_obj(written).into_bytes()),
-        FileKind::Off => Ok(mesh_to_off(written).into_bytes()),
-        FileKind::Stl => mesh_to_stl(written, options.text),
-        FileKind::Ply => Ok(mesh_to_ply(written, options.text)),
-        FileKind::ThreeMf => mesh_to_3mf(written),
-        FileKind::Glb => mesh_to_glb(written),
-        FileKind::Gltf => mesh_to_gltf(written),
+    // The facets as the file holds them, made once for the writer and
+    // for the mesh written.
+    let as_faces = |faces: Vec<Vec<u32>>| {
+        PolygonMesh::new(
+            written.vertices.clone(),
+            faces.iter().map(|f| Facet::from_loop(f)).collect(),
+        )
+    };
+    let (bytes, triangulated) = match kind {
+        FileKind::Obj | FileKind::Off | FileKind::Ply => {
+            let (faces, split) = faces_split(written);
+            let bytes = match kind {
+                FileKind::Obj => obj_of_faces(written, &faces).into_bytes(),
+                FileKind::Off => off_of_faces(written, &faces).into_bytes(),
+                _ => ply_of_faces(written, &faces, options.text),
+            };
+            (Ok(bytes), split.then(|| as_faces(faces)))
+        }
+        FileKind::Stl => {
+            let tris = boolean_3d::triangulate_mesh(written);
+            let bytes = triangles_to_stl(&tris, options.text);
+            // Rounded: `rounded` holds the mesh written.
+            let read = (rounded.is_none()).then(|| welded(&tris).to_polygon_mesh());
+            (bytes, read)
+        }
+        FileKind::ThreeMf => {
+            let tris = triangles_3mf(written);
+            (triangles_to_3mf(&tris), Some(tris.to_polygon_mesh()))
+        }
+        FileKind::Glb => (mesh_to_glb(written), None),
+        FileKind::Gltf => (mesh_to_gltf(written), None),
         FileKind::Wkt | FileKind::GeoJson | FileKind::Svg => {
             return Err(wrong_dimension(
                 file,
@@ -193,5 +250,53 @@ pub fn encode_mesh_with(
         report: r.report,
         ms,
     });
-    Ok(EncodedMesh { bytes, rounded })
+    Ok(EncodedMesh {
+        bytes,
+        rounded,
+        triangulated,
+    })
+}
+
+impl Boolean3Report {
+    /// The report once the result was encoded for writing as `encoded`
+    /// (the output counted as the file holds it, under `output_file`):
+    /// [`Boolean3Report::rounded_to_f32`] for a format of `f32`
+    /// coordinates; for facets split into triangles
+    /// ([`EncodedMesh::triangulated`]), the output counted again and its
+    /// validity checked again; unchanged otherwise.
+    pub fn written_as(self, output_file: impl Into<String>, encoded: &EncodedMesh) -> Self {
+        match (&encoded.rounded, &encoded.triangulated) {
+            (Some(r), _) => self.rounded_to_f32(output_file, r),
+            (None, Some(t)) => self.triangulated(output_file, t),
+            (None, None) => self,
+        }
+    }
+}
+
+impl SmoothFileReport<MeshCounts> {
+    /// The report once the smoothed mesh was encoded for writing as
+    /// `encoded`, as [`Boolean3Report::written_as`] does.
+    pub fn written_as(self, output_file: impl Into<String>, encoded: &EncodedMesh) -> Self {
+        match (&encoded.rounded, &encoded.triangulated) {
+            (Some(r), _) => self.rounded_to_f32(output_file, r),
+            (None, Some(t)) => self.triangulated(output_file, t),
+            (None, None) => self,
+        }
+    }
+}
+
+impl CsgReport {
+    /// The report once the result was encoded for writing as `encoded`:
+    /// [`CsgReport::rounded_to_f32`] for a format of `f32` coordinates;
+    /// the output described again (counts, validity, manifoldness,
+    /// volume, bounds) as the file holds it when its facets were split
+    /// into triangles ([`EncodedMesh::triangulated`]); unchanged
+    /// otherwise.
+    pub fn written_as(self, encoded: &EncodedMesh) -> Self {
+        match (&encoded.rounded, &encoded.triangulated) {
+            (Some(r), _) => self.rounded_to_f32(r),
+            (None, Some(t)) => self.triangulated(t),
+            (None, None) => self,
+        }
+    }
 }

@@ -49,7 +49,8 @@
 //!   line.
 //! - Output encoded in memory before anything is written:
 //!   [`encode_polygon_set`] (which also counts the rings as written) and
-//!   [`encode_mesh`].
+//!   [`encode_mesh`] ([`encode_mesh_with`] also gives the mesh the file
+//!   holds, [`EncodedMesh::written`], which the reports count).
 //!
 //! # Example
 //!
@@ -119,8 +120,8 @@ pub use ops::{
 #[cfg(feature = "render")]
 pub use render::*;
 pub use report::{
-    fill_rule_name, Boolean2Report, Boolean3Report, FileReport, MeshCounts, Operands, SetCounts,
-    SimplifyReport, SmoothFileReport, SweepReport, Timings,
+    fill_rule_name, Boolean2Report, Boolean3Report, DemoReport, FileReport, MeshCounts, Operands,
+    SetCounts, SimplifyReport, SmoothFileReport, SweepReport, Timings, WrittenFile,
 };
 pub use robust_arith::{
     orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,

@@ -10,7 +10,7 @@
 //! operation and that rounding's repair, never file input or output.
 
 use crate::ops::{SolidOutput, Via};
-use crate::{F32Rounding, RoundedMesh};
+use crate::{CsgReport, F32Rounding, RoundedMesh};
 use boolean_2d::{BooleanOutput, Timings as BooleanTimings};
 use serde::Serialize;
 use simplify_2d::{FillRule, Simplified, SweepStats};
@@ -466,6 +466,18 @@ impl Boolean3Report {
     }
 }
 
+impl Boolean3Report {
+    /// The report once the result was written with its facets split into
+    /// triangles (`written`, as `EncodedMesh::triangulated` gives it): the
+    /// output counted again as written under `output_file`, validity
+    /// checked again.
+    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
+        self.output = MeshCounts::of_mesh(output_file, written);
+        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
+        self
+    }
+}
+
 /// What rounding to `f32` for writing puts in a 3D report, shared by the
 /// report types that have these fields: the output counted again as
 /// written under `output_file`, validity checked again, the rounding
@@ -557,6 +569,91 @@ impl SmoothFileReport<MeshCounts> {
         );
         self
     }
+
+    /// The report once the smoothed mesh was written with its facets split
+    /// into triangles (`written`, as `EncodedMesh::triangulated` gives
+    /// it): the output counted again as written under `output_file`,
+    /// validity checked again.
+    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
+        self.output = MeshCounts::of_mesh(output_file, written);
+        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
+        self
+    }
+}
+
+/// One file a command wrote, described as written (`umbra demo`'s
+/// [`DemoReport::files`]).
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct WrittenFile {
+    /// The path (as given on the command line, joined to the file name).
+    pub file: String,
+    /// The format: a mesh format's name ([`crate::FileKind`]'s `name`:
+    /// `STL`, `3MF`, `OBJ`, ...), `PNG` or `JSON`.
+    pub format: &'static str,
+    /// The file's size in bytes.
+    pub bytes: usize,
+    /// For a mesh file, the vertices it holds (for STL and glTF, as the
+    /// reader welds them by exact position); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub vertices: Option<usize>,
+    /// For a mesh file, the facets it holds: triangles for STL, 3MF and
+    /// glTF; absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub facets: Option<usize>,
+    /// For a mesh file, whether every facet it holds is a triangle;
+    /// absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub triangles_only: Option<bool>,
+    /// For a mesh file, the volume its facets enclose (as written: after
+    /// rounding to `f32` for binary STL and glTF); absent otherwise.
+    #[serde(skip_serializing_if = "Option::is_none")]
+    pub signed_volume: Option<f64>,
+}
+
+impl WrittenFile {
+    /// A mesh file of `bytes` bytes holding `written` (for an encoded
+    /// mesh, `EncodedMesh::written`).
+    pub fn mesh(
+        file: impl Into<String>,
+        format: &'static str,
+        bytes: usize,
+        written: &PolygonMesh,
+    ) -> Self {
+        WrittenFile {
+            file: file.into(),
+            format,
+            bytes,
+            vertices: Some(written.vertices.len()),
+            facets: Some(written.facets.len()),
+            triangles_only: Some(written.facets.iter().all(|f| f.half_edges.len() == 3)),
+            signed_volume: Some(crate::mesh_signed_volume(written)),
+        }
+    }
+
+    /// A file that is not a mesh (a picture, a script).
+    pub fn other(file: impl Into<String>, format: &'static str, bytes: usize) -> Self {
+        WrittenFile {
+            file: file.into(),
+            format,
+            bytes,
+            vertices: None,
+            facets: None,
+            triangles_only: None,
+            signed_volume: None,
+        }
+    }
+}
+
+/// The report of `umbra demo` (its `report.json`): the evaluation's
+/// report ([`CsgReport`]: the evaluated and smoothed mesh, its fields at
+/// the top level) and every other file written, each as written.
+#[derive(Clone, Debug, PartialEq, Serialize)]
+pub struct DemoReport {
+    /// The evaluation.
+    #[serde(flatten)]
+    pub evaluation: CsgReport,
+    /// The files written besides the report, in the order written.
+    pub files: Vec<WrittenFile>,
 }
 
 /// A check report with the file it is about (`umbra check --json`): the

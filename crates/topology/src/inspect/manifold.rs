@@ -45,6 +45,34 @@ impl ManifoldReport {
             && self.non_manifold_edges.is_empty()
             && self.non_manifold_vertices.is_empty()
     }
+
+    /// The numbers of this report: what [`crate::check_mesh`] states, and
+    /// what every other report of a mesh's 2-manifoldness should state
+    /// (one definition of an open edge, a non-manifold edge and a
+    /// non-manifold vertex).
+    pub fn counts(&self) -> ManifoldCounts {
+        ManifoldCounts {
+            two_manifold: self.is_two_manifold(),
+            open_edges: self.open_edges.len(),
+            non_manifold_edges: self.non_manifold_edges.len(),
+            non_manifold_vertices: self.non_manifold_vertices.len(),
+        }
+    }
+}
+
+/// The numbers of a [`ManifoldReport`] ([`ManifoldReport::counts`]).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+#[cfg_attr(feature = "serde", derive(serde::Serialize))]
+pub struct ManifoldCounts {
+    /// No open or non-manifold edge and no non-manifold vertex.
+    pub two_manifold: bool,
+    /// Edges used in one direction only (a zero-length half-edge `a -> a`
+    /// makes one).
+    pub open_edges: usize,
+    /// Edges used both ways but not exactly once each way.
+    pub non_manifold_edges: usize,
+    /// Vertices around which the facet corners form more than one fan.
+    pub non_manifold_vertices: usize,
 }
 
 impl PolygonMesh {
@@ -62,13 +90,19 @@ impl PolygonMesh {
     /// ```
     pub fn manifold_report(&self) -> Result<ManifoldReport, TopologyError> {
         self.check_topology()?;
-        let (edges, open_edges, non_manifold_edges) = edge_census(self);
-        Ok(ManifoldReport {
-            edges,
-            open_edges,
-            non_manifold_edges,
-            non_manifold_vertices: non_manifold_vertices(self, &self.vertices),
-        })
+        Ok(report_of_valid(self))
+    }
+}
+
+/// [`PolygonMesh::manifold_report`] of a mesh known to be topologically
+/// valid (the one place the report is made).
+pub(super) fn report_of_valid(mesh: &PolygonMesh) -> ManifoldReport {
+    let (edges, open_edges, non_manifold_edges) = edge_census(mesh);
+    ManifoldReport {
+        edges,
+        open_edges,
+        non_manifold_edges,
+        non_manifold_vertices: non_manifold_vertices(mesh, &mesh.vertices),
     }
 }
 

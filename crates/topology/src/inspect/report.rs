@@ -5,7 +5,7 @@
 //! methods of [`PolygonMesh`] and [`TriangleMesh`].
 
 use super::intersect::self_intersecting_pairs;
-use super::manifold::{edge_census, non_manifold_vertices};
+use super::manifold::{edge_census, report_of_valid};
 use crate::{HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
 use robust_arith::Point3;
 
@@ -31,10 +31,16 @@ pub struct MeshCheckReport {
     /// Number of edges (unordered vertex pairs joined by half-edges).
     pub edges: usize,
     /// Every edge has exactly one half-edge in each direction and the
-    /// facets around every vertex form one fan (a closed 2-manifold). Only
+    /// facets around every vertex form one fan (a closed 2-manifold). This
+    /// and the three counts below are those of
+    /// [`PolygonMesh::manifold_report`] ([`crate::ManifoldCounts`]), only
     /// computed for a topologically valid mesh.
     pub two_manifold: Option<bool>,
-    /// Edges with other than one half-edge each way.
+    /// Edges used in one direction only (in a topologically valid mesh,
+    /// only a zero-length half-edge `a -> a` makes one).
+    pub open_edges: Option<usize>,
+    /// Edges used both ways but not exactly once each way (several sheets
+    /// meet there).
     pub non_manifold_edges: Option<usize>,
     /// Vertices whose surrounding facets form more than one fan.
     pub non_manifold_vertices: Option<usize>,
@@ -84,22 +90,23 @@ pub fn check_mesh(mesh: &PolygonMesh) -> MeshCheckReport {
         half_edges: mesh.half_edge_count(),
         edges: 0,
         two_manifold: None,
+        open_edges: None,
         non_manifold_edges: None,
         non_manifold_vertices: None,
         self_intersecting_facet_pairs: None,
         signed_volume: None,
         bounding_box: None,
     };
-    if indices_in_range(mesh) {
-        let (edges, open, non_manifold) = edge_census(mesh);
-        let bad_edges = open.len() + non_manifold.len();
-        r.edges = edges;
-        if r.topologically_valid {
-            let bad_vertices = non_manifold_vertices(mesh, &mesh.vertices).len();
-            r.non_manifold_edges = Some(bad_edges);
-            r.non_manifold_vertices = Some(bad_vertices);
-            r.two_manifold = Some(bad_edges == 0 && bad_vertices == 0);
-        }
+    if r.topologically_valid {
+        let m = report_of_valid(mesh);
+        let counts = m.counts();
+        r.edges = m.edges;
+        r.two_manifold = Some(counts.two_manifold);
+        r.open_edges = Some(counts.open_edges);
+        r.non_manifold_edges = Some(counts.non_manifold_edges);
+        r.non_manifold_vertices = Some(counts.non_manifold_vertices);
+    } else if indices_in_range(mesh) {
+        r.edges = edge_census(mesh).0;
     }
     if valid {
         r.signed_volume = Some(mesh_signed_volume(mesh));
@@ -318,6 +325,62 @@ mod tests {
     }
 
     #[test]
+    fn open_and_non_manifold_edges_are_counted_apart() {
+        // Two unit cubes sharing the edge x = 1, y = 1 (vertices 2 and 6
+        // shared): that edge has two half-edges each way; the facet
+        // z = 0 of the first cube carries a zero-length half-edge at
+        // vertex 0 besides its loop (closure holds), an edge used one way.
+        let v = vec![
+            [0.0, 0.0, 0.0],
+            [1.0, 0.0, 0.0],
+            [1.0, 1.0, 0.0],
+            [0.0, 1.0, 0.0],
+            [0.0, 0.0, 1.0],
+            [1.0, 0.0, 1.0],
+            [1.0, 1.0, 1.0],
+            [0.0, 1.0, 1.0],
+            [2.0, 1.0, 0.0],
+            [2.0, 2.0, 0.0],
+            [1.0, 2.0, 0.0],
+            [2.0, 1.0, 1.0],
+            [2.0, 2.0, 1.0],
+            [1.0, 2.0, 1.0],
+        ];
+        let cube = |c: [u32; 8]| {
+            [
+                [0, 3, 2, 1],
+                [4, 5, 6, 7],
+                [0, 1, 5, 4],
+                [1, 2, 6, 5],
+                [2, 3, 7, 6],
+                [3, 0, 4, 7],
+            ]
+            .map(|q| q.map(|k| c[k]).to_vec())
+        };
+        let mut facets: Vec<Facet> = cube([0, 1, 2, 3, 4, 5, 6, 7])
+            .iter()
+            .chain(&cube([2, 8, 9, 10, 6, 11, 12, 13]))
+            .map(|l| Facet::from_loop(l))
+            .collect();
+        let m = PolygonMesh::new(v, facets.clone());
+        let r = check_mesh(&m);
+        assert!(r.is_valid(), "{r:?}");
+        assert_eq!(r.edges, 23);
+        assert_eq!(r.open_edges, Some(0));
+        assert_eq!(r.non_manifold_edges, Some(1));
+        // The fans at the shared edge's ends meet at its other end: one
+        // fan each (the edge is what is not manifold there).
+        assert_eq!(r.non_manifold_vertices, Some(0));
+        assert_eq!(r.two_manifold, Some(false));
+        facets[0].half_edges.push(HalfEdge { start: 0, end: 0 });
+        let r = check_mesh(&PolygonMesh::new(m.vertices.clone(), facets));
+        assert!(r.is_valid(), "{r:?}");
+        assert_eq!(r.edges, 24);
+        assert_eq!(r.open_edges, Some(1));
+        assert_eq!(r.non_manifold_edges, Some(1));
+    }
+
+    #[test]
     fn non_manifold_and_invalid() {
         // Two tetrahedra sharing one vertex: valid, not 2-manifold at it.
         let v = vec![
@@ -336,6 +399,7 @@ mod tests {
         let m = PolygonMesh::new(v, loops.iter().map(|l| Facet::from_loop(l)).collect());
         let r = check_mesh(&m);
         assert!(r.is_valid());
+        assert_eq!(r.open_edges, Some(0));
         assert_eq!(r.non_manifold_edges, Some(0));
         assert_eq!(r.non_manifold_vertices, Some(1));
         assert_eq!(r.two_manifold, Some(false));

@@ -298,11 +298,10 @@ impl BooleanArgs {
             out.mesh
         };
         // The report describes the file: for a format of `f32`
-        // coordinates, the mesh as rounded and repaired.
+        // coordinates, the mesh as rounded and repaired; for facets split
+        // into triangles, the triangles.
         let encoded = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
-        if let Some(rounded) = &encoded.rounded {
-            report = report.rounded_to_f32(out_file.clone(), rounded);
-        }
+        report = report.written_as(out_file.clone(), &encoded);
         self.out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
             warn_f32_defects(&rounded.report, out_path);

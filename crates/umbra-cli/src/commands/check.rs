@@ -103,8 +103,9 @@ impl CheckArgs {
         }
         if let Some(m) = r.two_manifold {
             outln!(
-                "  2-manifold: {} ({} non-manifold edges, {} non-manifold vertices)",
+                "  2-manifold: {} ({} open edges, {} non-manifold edges, {} non-manifold vertices)",
                 if m { "yes" } else { "no" },
+                r.open_edges.unwrap_or(0),
                 r.non_manifold_edges.unwrap_or(0),
                 r.non_manifold_vertices.unwrap_or(0)
             )?;

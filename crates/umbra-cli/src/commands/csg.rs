@@ -87,12 +87,10 @@ impl CsgArgs {
         let result = smooth_result(result, triangulate, self.smooth)?;
         let file = self.out.output.display().to_string();
         // The report describes the file: for a format of `f32`
-        // coordinates, the mesh as rounded and repaired.
+        // coordinates, the mesh as rounded and repaired; for facets split
+        // into triangles, the triangles.
         let encoded = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
-        let report = match &encoded.rounded {
-            Some(rounded) => result.report.rounded_to_f32(rounded),
-            None => result.report,
-        };
+        let report = result.report.written_as(&encoded);
         self.out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
             warn_f32_defects(&rounded.report, &self.out.output);

@@ -2,7 +2,9 @@
 //! model (vessels, pipes with flanges, a supporting frame) from built-in
 //! primitives through a chain of some hundreds of 3D Booleans, smooths
 //! the result once (Appendix A, the default tolerance), writes the
-//! mesh, its script and a picture (`plant.png`, iso view), and prints a validity and timing summary.
+//! mesh, its script and a picture (`plant.png`, iso view) and a report
+//! (`report.json`: the evaluation and every other file as written), and
+//! prints a validity and timing summary.
 
 use super::{csg_options, millis_since, smooth_result};
 use crate::files::write_all;
@@ -13,11 +15,13 @@ use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     check_mesh, demo_plant, encode_mesh_with, evaluate_csg_with_progress, render_mesh,
-    DemoDetail, FileKind, MeshWriteOptions, RenderOptions,
+    DemoDetail, DemoReport, FileKind, MeshWriteOptions, RenderOptions, WrittenFile,
 };
 
 /// Build the demo model (a process plant of some hundreds of Booleans),
-/// write it as a mesh with its CSG script, and print a summary.
+/// write it as meshes (STL, 3MF, OBJ) with its CSG script, a picture and
+/// `report.json` (the evaluation, and every file as written), and print a
+/// summary.
 #[derive(clap::Args, Debug)]
 pub struct DemoArgs {
     /// The folder to write into (created if missing).
@@ -64,6 +68,8 @@ impl DemoArgs {
             }
         })?;
         let mut files: Vec<(PathBuf, Vec<u8>)> = Vec::new();
+        // Every file but the report, as written.
+        let mut written: Vec<WrittenFile> = Vec::new();
         for (name, kind) in MESHES {
             let path = self.output.join(name);
             let encoded = encode_mesh_with(
@@ -75,6 +81,12 @@ impl DemoArgs {
             if let Some(rounded) = &encoded.rounded {
                 super::warn_f32_defects(&rounded.report, &path);
             }
+            written.push(WrittenFile::mesh(
+                path.display().to_string(),
+                kind.name(),
+                encoded.bytes.len(),
+                encoded.written(&result.mesh),
+            ));
             files.push((path, encoded.bytes));
         }
         let picture = render_mesh(
@@ -87,14 +99,25 @@ impl DemoArgs {
         )
         .and_then(|image| image.to_png())
         .map_err(|e| anyhow::anyhow!("{}: {e}", self.output.join("plant.png").display()))?;
-        files.push((self.output.join("plant.png"), picture));
-        files.push((
-            self.output.join("plant.json"),
-            tree.to_json_string().into_bytes(),
-        ));
+        for (name, format, bytes) in [
+            ("plant.png", "PNG", picture),
+            ("plant.json", "JSON", tree.to_json_string().into_bytes()),
+        ] {
+            let path = self.output.join(name);
+            written.push(WrittenFile::other(
+                path.display().to_string(),
+                format,
+                bytes.len(),
+            ));
+            files.push((path, bytes));
+        }
+        let report = DemoReport {
+            evaluation: result.report,
+            files: written,
+        };
         files.push((
             self.output.join("report.json"),
-            crate::files::report_json(&result.report)?,
+            crate::files::report_json(&report)?,
         ));
         let refs: Vec<(&std::path::Path, &[u8])> = files
             .iter()
@@ -102,7 +125,7 @@ impl DemoArgs {
             .collect();
         write_all(&refs)?;
 
-        let r = &result.report;
+        let r = &report.evaluation;
         outln!(
             "umbra demo: a process plant of {} primitives and {} Booleans ({} variant, {} threads)",
             r.leaves,
@@ -126,8 +149,10 @@ impl DemoArgs {
             match check.two_manifold {
                 Some(true) => "yes".to_string(),
                 Some(false) => format!(
-                    "no ({} non-manifold edges)",
-                    check.non_manifold_edges.unwrap_or(0)
+                    "no ({} open edges, {} non-manifold edges, {} non-manifold vertices)",
+                    check.open_edges.unwrap_or(0),
+                    check.non_manifold_edges.unwrap_or(0),
+                    check.non_manifold_vertices.unwrap_or(0)
                 ),
                 None => "not computed".to_string(),
             },
@@ -135,9 +160,17 @@ impl DemoArgs {
                 .self_intersecting_facet_pairs
                 .map_or("not computed".to_string(), |n| n.to_string())
         )?;
-        for (path, _) in &files {
-            outln!("  wrote {}", path.display())?;
+        for f in &report.files {
+            match (f.vertices, f.facets, f.triangles_only) {
+                (Some(v), Some(n), Some(t)) => outln!(
+                    "  wrote {} ({v} vertices, {n} {})",
+                    f.file,
+                    if t { "triangles" } else { "facets" }
+                )?,
+                _ => outln!("  wrote {}", f.file)?,
+            }
         }
+        outln!("  wrote {}", self.output.join("report.json").display())?;
         if check.topology_error.is_none() {
             Ok(ExitCode::SUCCESS)
         } else {

@@ -77,7 +77,7 @@ impl SmoothArgs {
             self.out.mesh_options(),
             &out_file,
         )?;
-        let mut report = SmoothFileReport::new(
+        let report = SmoothFileReport::new(
             MeshCounts::of_mesh(self.input.display().to_string(), &mesh),
             MeshCounts::of_mesh(out_file.clone(), &smoothed.shape),
             &smoothed,
@@ -85,10 +85,9 @@ impl SmoothArgs {
             total,
         );
         // The report describes the file: for a format of `f32`
-        // coordinates, the mesh as rounded and repaired.
-        if let Some(rounded) = &encoded.rounded {
-            report = report.rounded_to_f32(out_file, rounded);
-        }
+        // coordinates, the mesh as rounded and repaired; for facets split
+        // into triangles, the triangles.
+        let report = report.written_as(out_file, &encoded);
         self.out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
             super::warn_f32_defects(&rounded.report, &self.out.output);

@@ -2,7 +2,8 @@
 //! STL and PLY operands to every mesh format, with the volume read back
 //! independently where the format is text, and hostile files (truncated,
 //! huge counts, NaN, bad indices, a byte-order mark, non-UTF-8 text, an
-//! open soup): exit 1 and one line naming the file, never a panic.
+//! open soup): exit 1 and one line naming the file, never a panic; one
+//! mesh as ASCII STL, binary STL and OBJ checks alike (STL welded).
 
 use crate::common::{examples, json, stderr, temp_dir, umbra};
 use std::path::{Path, PathBuf};
@@ -575,4 +576,97 @@ fn defects_left_by_f32_rounding_are_warned() {
         "--quiet".as_ref(),
     ]);
     assert_eq!(err, "");
+}
+
+/// One closed mesh (the box `[-0.5, 0.25] x [0, 1.5] x [-2, 0]`, twelve
+/// outward triangles on eight corners, every coordinate an `f32`) as an
+/// exporter's ASCII STL (CRLF lines, `%e` spellings, `-0` on one side of
+/// an edge and `0` on the other, two solids), as binary STL and as an OBJ
+/// of the same triangles: STL has no indices, so its readers weld corners
+/// at bitwise-equal positions, and `umbra check` describes one closed
+/// 2-manifold solid in all three files alike.
+#[test]
+fn ascii_stl_binary_stl_and_obj_of_one_mesh_check_alike() {
+    let dir = temp_dir("weld");
+    let (lo, hi) = ([-0.5f32, 0.0, -2.0], [0.25f32, 1.5, 0.0]);
+    let corner = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 0 { lo[a] } else { hi[a] });
+    let quads = [
+        [0, 2, 3, 1],
+        [4, 5, 7, 6],
+        [0, 1, 5, 4],
+        [2, 6, 7, 3],
+        [0, 4, 6, 2],
+        [1, 3, 7, 5],
+    ];
+    let tris: Vec<[usize; 3]> = quads
+        .iter()
+        .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
+        .collect();
+    // ASCII: zero written `-0.000000e+00` in odd triangles.
+    let mut ascii = String::from("solid part one\r\n");
+    for (k, t) in tris.iter().enumerate() {
+        if k == 6 {
+            ascii.push_str("endsolid part one\r\nsolid part two\r\n");
+        }
+        ascii.push_str(
+            "  facet normal 0.000000e+00 0.000000e+00 0.000000e+00\r\n    outer loop\r\n",
+        );
+        for &v in t {
+            let c = corner(v).map(|x| {
+                if x == 0.0 && k % 2 == 1 {
+                    "-0.000000e+00".to_string()
+                } else {
+                    format!("{x:e}")
+                }
+            });
+            ascii.push_str(&format!("      vertex {} {} {}\r\n", c[0], c[1], c[2]));
+        }
+        ascii.push_str("    endloop\r\n  endfacet\r\n");
+    }
+    ascii.push_str("endsolid part two\r\n");
+    let mut binary = vec![b' '; 80];
+    binary.extend((tris.len() as u32).to_le_bytes());
+    for t in &tris {
+        binary.extend([0u8; 12]);
+        for &v in t {
+            for x in corner(v) {
+                binary.extend(x.to_le_bytes());
+            }
+        }
+        binary.extend([0, 0]);
+    }
+    let mut obj = String::new();
+    for i in 0..8 {
+        let c = corner(i);
+        obj.push_str(&format!("v {} {} {}\n", c[0], c[1], c[2]));
+    }
+    for t in &tris {
+        obj.push_str(&format!("f {} {} {}\n", t[0] + 1, t[1] + 1, t[2] + 1));
+    }
+    let files = [
+        (dir.join("ascii.stl"), ascii.into_bytes()),
+        (dir.join("binary.stl"), binary),
+        (dir.join("mesh.obj"), obj.into_bytes()),
+    ];
+    let mut reports = Vec::new();
+    for (path, bytes) in &files {
+        std::fs::write(path, bytes).unwrap();
+        let mut c = check_json(path);
+        c.as_object_mut().unwrap().remove("file");
+        reports.push(c);
+    }
+    let c = &reports[0];
+    assert_eq!(c["vertices"], 8, "{c}");
+    assert_eq!(
+        (c["facets"].as_u64(), c["edges"].as_u64()),
+        (Some(12), Some(18))
+    );
+    assert_eq!(c["two_manifold"], true, "{c}");
+    assert_eq!(
+        (c["open_edges"].as_u64(), c["non_manifold_edges"].as_u64()),
+        (Some(0), Some(0))
+    );
+    assert_eq!(c["signed_volume"], 0.75 * 1.5 * 2.0, "{c}");
+    assert_eq!(reports[1], reports[0], "binary STL");
+    assert_eq!(reports[2], reports[0], "OBJ");
 }

@@ -5,8 +5,104 @@
 //! refused, and the demo writes a valid model and its script, which `umbra
 //! csg` reproduces bit for bit.
 
-use crate::common::{examples, json, stderr, temp_dir, umbra};
+use crate::common::{examples, json, stderr, temp_dir, umbra, write};
 use std::path::Path;
+
+/// `check --json` of `path`, parsed (the file as a reader sees it).
+fn check_json(path: &Path) -> serde_json::Value {
+    let c = umbra(["check".as_ref(), path.as_os_str(), "--json".as_ref()]);
+    assert!(c.status.success(), "{}", stderr(&c));
+    serde_json::from_slice(&c.stdout).unwrap()
+}
+
+/// The faces of an OBJ file (its `f` lines), counted by hand.
+fn obj_faces(path: &Path) -> usize {
+    let text = std::fs::read_to_string(path).unwrap();
+    text.lines().filter(|l| l.starts_with("f ")).count()
+}
+
+/// The 2-manifoldness fields, which `umbra csg --report` and `umbra check
+/// --json` share.
+const MANIFOLD: [&str; 4] = [
+    "two_manifold",
+    "open_edges",
+    "non_manifold_edges",
+    "non_manifold_vertices",
+];
+
+/// Two unit cubes sharing the edge x = y = 1: smoothed, one vertex each
+/// end, so the shared edge has two half-edges each way.
+const EDGE_SHARING_CUBES: &str = r#"{"op": "union", "children": [
+    {"box": {"size": [1, 1, 1]}},
+    {"box": {"size": [1, 1, 1]}, "translate": [1, 1, 0]}]}"#;
+
+/// A union of touching parts whose raw triangle-variant result has
+/// non-manifold edges (the CSG report counted 1 of them, `umbra check` 3).
+const TOUCHING_PARTS: &str = r#"{"op": "union", "children": [
+    {"box": {"size": [1, 1.5, 1.5]}, "translate": [0, 2, 2]},
+    {"cylinder": {"radius": 1, "height": 1, "segments": 8}, "translate": [2, 2, 0]},
+    {"cylinder": {"radius": 0.5, "height": 1, "segments": 8}, "translate": [0.5, 2, 1.5]},
+    {"box": {"size": [0.5, 0.5, 0.5]}, "translate": [1, 2, 0]}]}"#;
+
+/// The CSG report and `umbra check` of the file written state the same
+/// 2-manifoldness (one census: open edges, non-manifold edges and
+/// vertices) and the same counts, on a clean solid and on results with
+/// non-manifold edges, for OBJ (facets with holes written as triangles)
+/// and ASCII STL (triangles welded by position on reading).
+#[test]
+fn csg_report_and_check_agree_on_the_file_written() {
+    let dir = temp_dir("agree");
+    let edge = write(&dir, "edge.json", EDGE_SHARING_CUBES);
+    let touching = write(&dir, "touching.json", TOUCHING_PARTS);
+    let bracket = examples().join("bracket.json");
+    let cases: [(&Path, &[&str], &str); 6] = [
+        (&bracket, &[], "obj"),
+        (&bracket, &["--ascii"], "stl"),
+        (&edge, &[], "obj"),
+        (&edge, &["--smooth", "0", "--ascii"], "stl"),
+        (&touching, &["--triangulate", "--smooth", "0"], "obj"),
+        (&touching, &["--smooth", "0", "--ascii"], "stl"),
+    ];
+    for (script, extra, ext) in cases {
+        let what = format!("{} {extra:?} .{ext}", script.display());
+        let out = dir.join(format!("out.{ext}"));
+        let report = dir.join("r.json");
+        let mut args = vec![
+            "csg",
+            script.to_str().unwrap(),
+            "-o",
+            out.to_str().unwrap(),
+            "--report",
+            report.to_str().unwrap(),
+            "--quiet",
+        ];
+        args.extend(extra);
+        let o = umbra(&args);
+        assert!(o.status.success(), "{what}: {}", stderr(&o));
+        let r = json(&report);
+        let c = check_json(&out);
+        for key in MANIFOLD.iter().chain(&["vertices", "facets", "half_edges"]) {
+            assert_eq!(r[key], c[key], "{what}: {key}");
+        }
+        if ext == "obj" {
+            assert_eq!(r["facets"].as_u64(), Some(obj_faces(&out) as u64), "{what}");
+        }
+        let clean = script == bracket.as_path();
+        assert_eq!(r["two_manifold"], clean, "{what}");
+        if script == edge.as_path() {
+            // Two cubes, one edge shared: 8 + 8 - 2 vertices, and as an
+            // STL (welded: the raw result's coincident vertices are one)
+            // twelve triangles on them.
+            assert_eq!(r["vertices"], 14, "{what}");
+            assert_eq!(r["facets"], if ext == "obj" { 12 } else { 24 }, "{what}");
+            assert_eq!(r["open_edges"], 0, "{what}");
+            assert_eq!(r["non_manifold_edges"], 1, "{what}");
+        }
+        if script == touching.as_path() {
+            assert!(r["non_manifold_edges"].as_u64() > Some(1), "{what}");
+        }
+    }
+}
 
 /// The signed volume of an OBJ file by an independent reader: `v` lines
 /// and `f` lines (1-based, `i/t/n` forms), each face fanned from its first
@@ -181,6 +277,44 @@ fn the_demo_writes_a_valid_model_that_its_script_reproduces() {
     assert!((obj_volume(&obj) - volume).abs() <= 1e-9 * volume);
     let check = umbra(["check", obj.to_str().unwrap(), "--json"]);
     assert!(check.status.success(), "{}", stderr(&check));
+    // The report describes every other file as written: its size, and for
+    // a mesh the vertices and facets `umbra check` reads back from it.
+    let files = report["files"].as_array().unwrap();
+    let names: Vec<&str> = files
+        .iter()
+        .map(|f| f["format"].as_str().unwrap())
+        .collect();
+    assert_eq!(names, ["STL", "3MF", "OBJ", "PNG", "JSON"]);
+    for f in files {
+        let path = Path::new(f["file"].as_str().unwrap());
+        assert!(path.starts_with(&dir), "{f}");
+        let size = std::fs::metadata(path).unwrap().len();
+        assert_eq!(f["bytes"].as_u64(), Some(size), "{f}");
+        if ["PNG", "JSON"].contains(&f["format"].as_str().unwrap()) {
+            assert!(
+                f.get("vertices").is_none() && f.get("facets").is_none(),
+                "{f}"
+            );
+            continue;
+        }
+        let c = check_json(path);
+        assert_eq!(f["vertices"], c["vertices"], "{f}");
+        assert_eq!(f["facets"], c["facets"], "{f}");
+        let triangles = c["half_edges"].as_u64() == c["facets"].as_u64().map(|n| 3 * n);
+        assert_eq!(f["triangles_only"], triangles, "{f}");
+        assert_ne!(
+            f["format"] == "OBJ",
+            triangles,
+            "STL and 3MF hold triangles: {f}"
+        );
+        let v = f["signed_volume"].as_f64().unwrap();
+        assert!((v - volume).abs() <= 1e-6 * volume, "{f}");
+    }
+    // The OBJ holds the evaluated mesh's vertices; its facets with holes
+    // are written as triangles, so it has more facets than the mesh.
+    let obj_entry = &files[2];
+    assert_eq!(obj_entry["vertices"], report["vertices"]);
+    assert!(obj_entry["facets"].as_u64() > report["facets"].as_u64());
     // Its picture: an 800x600 PNG.
     let png = std::fs::read(dir.join("plant.png")).unwrap();
     assert!(png.starts_with(b"\x89PNG\r\n\x1a\n"));

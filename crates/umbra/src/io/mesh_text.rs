@@ -382,11 +382,19 @@ pub(crate) fn read_mesh_text(
 /// The faces to write: each facet's single loop, or the triangles of a
 /// facet with several loops (section 4.8).
 pub(crate) fn faces(mesh: &PolygonMesh) -> Vec<Vec<u32>> {
+    faces_split(mesh).0
+}
+
+/// [`faces`], and `true` when they are not the facets one for one (a facet
+/// with several loops was triangulated, or one without a loop left out).
+pub(crate) fn faces_split(mesh: &PolygonMesh) -> (Vec<Vec<u32>>, bool) {
+    let mut split = false;
     let mut out = Vec::with_capacity(mesh.facets.len());
     let mut tris = Vec::new();
     let mut hes = Vec::new();
     for f in &mesh.facets {
         let loops = f.loops_in_plane(&mesh.vertices);
+        split |= loops.len() != 1;
         if loops.len() == 1 {
             out.push(loops.into_iter().next().unwrap_or_default());
         } else if loops.len() > 1 {
@@ -401,18 +409,22 @@ pub(crate) fn faces(mesh: &PolygonMesh) -> Vec<Vec<u32>> {
             out.extend(tris.iter().map(|t| t.to_vec()));
         }
     }
-    out
+    (out, split)
 }
 
 /// OBJ text of a mesh.
 pub fn mesh_to_obj(mesh: &PolygonMesh) -> String {
-    let faces = faces(mesh);
+    obj_of_faces(mesh, &faces(mesh))
+}
+
+/// [`mesh_to_obj`] of the mesh's vertices and its [`faces`] already made.
+pub(crate) fn obj_of_faces(mesh: &PolygonMesh, faces: &[Vec<u32>]) -> String {
     let mut s = String::with_capacity(40 * mesh.vertices.len() + 24 * faces.len());
     s.push_str("# written by umbra\n");
     for p in &mesh.vertices {
         let _ = writeln!(s, "v {} {} {}", p[0], p[1], p[2]);
     }
-    for f in &faces {
+    for f in faces {
         s.push('f');
         for v in f {
             let _ = write!(s, " {}", u64::from(*v) + 1);
@@ -424,13 +436,17 @@ pub fn mesh_to_obj(mesh: &PolygonMesh) -> String {
 
 /// OFF text of a mesh.
 pub fn mesh_to_off(mesh: &PolygonMesh) -> String {
-    let faces = faces(mesh);
+    off_of_faces(mesh, &faces(mesh))
+}
+
+/// [`mesh_to_off`] of the mesh's vertices and its [`faces`] already made.
+pub(crate) fn off_of_faces(mesh: &PolygonMesh, faces: &[Vec<u32>]) -> String {
     let mut s = String::with_capacity(40 * mesh.vertices.len() + 24 * faces.len());
     let _ = writeln!(s, "OFF\n{} {} 0", mesh.vertices.len(), faces.len());
     for p in &mesh.vertices {
         let _ = writeln!(s, "{} {} {}", p[0], p[1], p[2]);
     }
-    for f in &faces {
+    for f in faces {
         let _ = write!(s, "{}", f.len());
         for v in f {
             let _ = write!(s, " {v}");

@@ -36,12 +36,16 @@ pub use geojson::{
 };
 pub use gltf::{mesh_to_glb, mesh_to_gltf};
 pub use gltf_read::parse_glb;
+pub(crate) use mesh_text::{faces_split, obj_of_faces, off_of_faces};
 pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOptions};
+pub(crate) use ply::ply_of_faces;
 pub use ply::{mesh_to_ply, parse_ply};
 pub use rings::{layout_polygons, PolygonLayout, PolygonSetRead, Polygons, RingOrientation};
+pub(crate) use stl::triangles_to_stl;
 pub use stl::{mesh_to_stl, parse_stl};
 pub use svg::polygon_set_to_svg;
 pub use threemf::mesh_to_3mf;
+pub(crate) use threemf::{triangles_3mf, triangles_to_3mf};
 pub use threemf_read::parse_3mf;
 pub(crate) use weld::welded;
 pub use wkt::{

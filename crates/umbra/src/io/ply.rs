@@ -546,7 +546,12 @@ pub(crate) fn read_ply_bytes(
 /// The PLY bytes of a mesh, binary little endian or (`ascii`) text (see the
 /// module docs).
 pub fn mesh_to_ply(mesh: &PolygonMesh, ascii: bool) -> Vec<u8> {
-    let faces = faces(mesh);
+    ply_of_faces(mesh, &faces(mesh), ascii)
+}
+
+/// [`mesh_to_ply`] of the mesh's vertices and its faces already made
+/// ([`super::mesh_text::faces`]).
+pub(crate) fn ply_of_faces(mesh: &PolygonMesh, faces: &[Vec<u32>], ascii: bool) -> Vec<u8> {
     let wide = faces.iter().any(|f| f.len() > 255);
     let mut head = String::new();
     let _ = write!(
@@ -569,7 +574,7 @@ pub fn mesh_to_ply(mesh: &PolygonMesh, ascii: bool) -> Vec<u8> {
             }
             s.push('\n');
         }
-        for f in &faces {
+        for f in faces {
             let _ = write!(s, "{}", f.len());
             for v in f {
                 let _ = write!(s, " {v}");
@@ -585,7 +590,7 @@ pub fn mesh_to_ply(mesh: &PolygonMesh, ascii: bool) -> Vec<u8> {
             out.extend_from_slice(&x.to_le_bytes());
         }
     }
-    for f in &faces {
+    for f in faces {
         if wide {
             out.extend_from_slice(&(f.len() as u32).to_le_bytes());
         } else {

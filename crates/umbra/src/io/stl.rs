@@ -378,7 +378,12 @@ pub(crate) fn to_f32(
 /// range in binary STL, and on more than `u32::MAX` triangles in binary
 /// STL.
 pub fn mesh_to_stl(mesh: &PolygonMesh, ascii: bool) -> Result<Vec<u8>, UmbraError> {
-    let tris = triangles(mesh);
+    triangles_to_stl(&triangles(mesh), ascii)
+}
+
+/// [`mesh_to_stl`] of triangles already made: every triangle written as it
+/// is, in order.
+pub(crate) fn triangles_to_stl(tris: &TriangleMesh, ascii: bool) -> Result<Vec<u8>, UmbraError> {
     for (v, p) in tris.vertices.iter().enumerate() {
         for (axis, &c) in p.iter().enumerate() {
             if ascii {

@@ -14,7 +14,7 @@ use super::text::push_f64;
 use crate::UmbraError;
 use std::fmt::Write as _;
 use std::io::{Cursor, Write};
-use topology::PolygonMesh;
+use topology::{PolygonMesh, TriangleMesh};
 use zip::write::SimpleFileOptions;
 use zip::{CompressionMethod, ZipWriter};
 
@@ -28,9 +28,18 @@ const RELS: &str = r#"<?xml version="1.0" encoding="UTF-8"?>
 <Relationships xmlns="http://schemas.openxmlformats.org/package/2006/relationships"><Relationship Target="/3D/3dmodel.model" Id="rel0" Type="http://schemas.microsoft.com/3dmanufacturing/2013/01/3dmodel"/></Relationships>
 "#;
 
-/// The model part's XML text (see the module docs).
-pub(crate) fn model_xml(mesh: &PolygonMesh) -> Result<String, UmbraError> {
-    let tris = boolean_3d::triangulate_mesh(mesh);
+/// The triangles a 3MF file of `mesh` holds: its facets triangulated
+/// (section 4.8), every vertex kept, the triangles with a repeated vertex
+/// index left out (see the module docs).
+pub(crate) fn triangles_3mf(mesh: &PolygonMesh) -> TriangleMesh {
+    let mut tris = boolean_3d::triangulate_mesh(mesh);
+    tris.triangles
+        .retain(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]);
+    tris
+}
+
+/// The model part's XML text of [`triangles_3mf`] (see the module docs).
+pub(crate) fn model_xml(tris: &TriangleMesh) -> Result<String, UmbraError> {
     if !tris
         .triangles
         .iter()
@@ -63,9 +72,6 @@ pub(crate) fn model_xml(mesh: &PolygonMesh) -> Result<String, UmbraError> {
     }
     s.push_str("    </vertices>\n    <triangles>\n");
     for t in &tris.triangles {
-        if t[0] == t[1] || t[1] == t[2] || t[2] == t[0] {
-            continue;
-        }
         let _ = writeln!(
             s,
             "     <triangle v1=\"{}\" v2=\"{}\" v3=\"{}\"/>",
@@ -80,7 +86,12 @@ pub(crate) fn model_xml(mesh: &PolygonMesh) -> Result<String, UmbraError> {
 /// coordinate and on a mesh without a proper triangle (the specification
 /// wants at least one).
 pub fn mesh_to_3mf(mesh: &PolygonMesh) -> Result<Vec<u8>, UmbraError> {
-    let model = model_xml(mesh)?;
+    triangles_to_3mf(&triangles_3mf(mesh))
+}
+
+/// [`mesh_to_3mf`] of [`triangles_3mf`] already made.
+pub(crate) fn triangles_to_3mf(tris: &TriangleMesh) -> Result<Vec<u8>, UmbraError> {
+    let model = model_xml(tris)?;
     let zip_error = |e: &dyn std::fmt::Display| UmbraError::Unwritable {
         file: "<output>".to_string(),
         format: FORMAT,

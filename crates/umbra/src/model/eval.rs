@@ -25,7 +25,6 @@ use rayon::prelude::*;
 use robust_arith::Point3;
 use serde::Serialize;
 use smooth::{SmoothReport, Smoothed};
-use std::collections::HashMap;
 use std::sync::atomic::{AtomicUsize, Ordering};
 use std::sync::Mutex;
 use std::time::Instant;
@@ -101,10 +100,20 @@ pub struct CsgReport {
     pub topologically_valid: bool,
     /// The violated constraint, when not valid (never expected).
     pub topology_error: Option<String>,
-    /// Edges of non-zero length not shared by exactly one pair of opposite
-    /// half-edges (0 for a 2-manifold surface; touching parts
+    /// The output is a closed 2-manifold. This and the three counts below
+    /// are those of `umbra check` ([`crate::check_mesh`], by
+    /// [`PolygonMesh::manifold_report`]); `null` when the output is not
+    /// topologically valid.
+    pub two_manifold: Option<bool>,
+    /// Edges used in one direction only (in a topologically valid output,
+    /// zero-length half-edges `a -> a`).
+    pub open_edges: Option<usize>,
+    /// Edges used both ways but not exactly once each way (touching parts
     /// legitimately give some).
-    pub non_manifold_edges: usize,
+    pub non_manifold_edges: Option<usize>,
+    /// Vertices around which the facets form more than one fan (parts
+    /// touching at a point).
+    pub non_manifold_vertices: Option<usize>,
     /// The signed volume of the output.
     pub volume: f64,
     /// The axis-aligned bounds `[min, max]`, if the output has a vertex.
@@ -138,9 +147,18 @@ impl CsgReport {
         self.half_edges = mesh.half_edge_count();
         self.topologically_valid = topology.is_ok();
         self.topology_error = topology.err().map(|e| e.to_string());
-        self.non_manifold_edges = non_manifold_edge_count(mesh);
+        self.set_manifold_counts(mesh);
         self.volume = topology::mesh_signed_volume(mesh);
         self.bounds = mesh.bounding_box();
+    }
+
+    /// The 2-manifoldness counts of `mesh`, as `umbra check` states them.
+    fn set_manifold_counts(&mut self, mesh: &PolygonMesh) {
+        let counts = mesh.manifold_report().ok().map(|r| r.counts());
+        self.two_manifold = counts.map(|c| c.two_manifold);
+        self.open_edges = counts.map(|c| c.open_edges);
+        self.non_manifold_edges = counts.map(|c| c.non_manifold_edges);
+        self.non_manifold_vertices = counts.map(|c| c.non_manifold_vertices);
     }
 
     /// The report once the result was smoothed in `smooth_ms` (only near
@@ -170,6 +188,17 @@ impl CsgReport {
         self.f32_rounding = Some(rounded.report.clone());
         self.timings_ms.round_f32 = Some(rounded.ms);
         self.timings_ms.total += rounded.ms;
+        self
+    }
+}
+
+impl CsgReport {
+    /// The report once the result was written with its facets split into
+    /// triangles (`written`, as `EncodedMesh::triangulated` gives it): the
+    /// output described as written (counts, validity, manifoldness,
+    /// volume, bounds).
+    pub fn triangulated(mut self, written: &PolygonMesh) -> Self {
+        self.describe(written);
         self
     }
 }
@@ -547,30 +576,6 @@ fn read_file(p: &std::path::Path, path: &[usize]) -> Result<PolygonMesh, ModelEr
     })
 }
 
-/// The number of edges not shared by exactly one pair of opposite
-/// half-edges. Zero-length edges (between vertices at the same position,
-/// which the Boolean may leave where parts touch) are not counted.
-pub fn non_manifold_edge_count(mesh: &PolygonMesh) -> usize {
-    let mut count: HashMap<(u32, u32), (u32, u32)> = HashMap::new();
-    let at = |v: u32| mesh.vertices.get(v as usize);
-    for f in &mesh.facets {
-        for h in &f.half_edges {
-            if h.start == h.end || at(h.start) == at(h.end) {
-                continue;
-            }
-            let e = count
-                .entry((h.start.min(h.end), h.start.max(h.end)))
-                .or_default();
-            if h.start < h.end {
-                e.0 += 1;
-            } else {
-                e.1 += 1;
-            }
-        }
-    }
-    count.values().filter(|&&c| c != (1, 1)).count()
-}
-
 /// Evaluates a CSG tree (see [`evaluate_csg_with_progress`]).
 pub fn evaluate_csg(root: &CsgNode, options: CsgOptions) -> Result<CsgResult, ModelError> {
     evaluate_csg_with_progress(root, options, None)
@@ -638,7 +643,7 @@ pub fn evaluate_csg_with_progress(
     nodes.sort_by(|a, b| a.0.cmp(&b.0));
     let topology = mesh.check_topology();
     let bounds = mesh.bounding_box();
-    let report = CsgReport {
+    let mut report = CsgReport {
         variant: if options.triangulate {
             "triangle"
         } else {
@@ -652,7 +657,10 @@ pub fn evaluate_csg_with_progress(
         half_edges: mesh.half_edge_count(),
         topologically_valid: topology.is_ok(),
         topology_error: topology.err().map(|e| e.to_string()),
-        non_manifold_edges: non_manifold_edge_count(&mesh),
+        two_manifold: None,
+        open_edges: None,
+        non_manifold_edges: None,
+        non_manifold_vertices: None,
         volume: topology::mesh_signed_volume(&mesh),
         bounds,
         smoothing: None,
@@ -665,6 +673,7 @@ pub fn evaluate_csg_with_progress(
         },
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };
+    report.set_manifold_counts(&mesh);
     Ok(CsgResult {
         mesh,
         report,

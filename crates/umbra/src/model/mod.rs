@@ -15,8 +15,8 @@ mod tree;
 pub use demo::{demo_plant, DemoDetail};
 pub use error::ModelError;
 pub use eval::{
-    evaluate_csg, evaluate_csg_with_progress, non_manifold_edge_count, CsgOptions, CsgReport,
-    CsgResult, CsgTimings, NodeReport,
+    evaluate_csg, evaluate_csg_with_progress, CsgOptions, CsgReport, CsgResult, CsgTimings,
+    NodeReport,
 };
 pub use glam::{DMat3, DMat4, DVec3};
 pub use primitives::{

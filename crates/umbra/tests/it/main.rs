@@ -15,6 +15,7 @@ mod model_csg;
 mod model_primitives;
 #[cfg(feature = "render")]
 mod render;
+mod reports;
 mod smooth_guard;
 mod smooth_near_real;
 mod smooth_real;

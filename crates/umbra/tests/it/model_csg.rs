@@ -7,9 +7,8 @@ use std::f64::consts::TAU;
 use std::path::{Path, PathBuf};
 use std::sync::Mutex;
 use umbra::{
-    demo_plant, evaluate_csg, evaluate_csg_with_progress, mesh_signed_volume,
-    non_manifold_edge_count, parse_csg, read_csg_file, CsgNode, CsgOptions, DemoDetail,
-    PolygonMesh,
+    demo_plant, evaluate_csg, evaluate_csg_with_progress, mesh_signed_volume, parse_csg,
+    read_csg_file, CsgNode, CsgOptions, DemoDetail, PolygonMesh,
 };
 
 fn eval(script: &str) -> PolygonMesh {
@@ -44,7 +43,7 @@ fn box_booleans_are_exact() {
     for (op, want) in [("union", 15.0), ("intersection", 1.0), ("difference", 7.0)] {
         let m = eval(&TWO_BOXES.replace("OP", op));
         assert_eq!(mesh_signed_volume(&m), want, "{op}");
-        assert_eq!(non_manifold_edge_count(&m), 0);
+        assert_eq!(m.manifold_report().map(|r| r.is_two_manifold()), Ok(true));
     }
     // A row of five overlapping unit-height bars (balanced 5-way union),
     // intersected with a slab, minus two boxes.
@@ -138,7 +137,10 @@ fn the_bracket_example_has_its_polyhedral_volume() {
         "{} vs {want}",
         out.report.volume
     );
-    assert_eq!(non_manifold_edge_count(&out.mesh), 0);
+    assert_eq!(
+        out.mesh.manifold_report().map(|r| r.is_two_manifold()),
+        Ok(true)
+    );
 }
 
 #[test]
@@ -479,7 +481,8 @@ fn progress_and_report() {
     assert_eq!(r.nodes[2].path, "children[0].children[0]");
     assert_eq!(r.nodes[0].facets, out.mesh.facets.len());
     assert_eq!(r.facets, out.mesh.facets.len());
-    assert_eq!(r.non_manifold_edges, 0);
+    assert_eq!(r.two_manifold, Some(true));
+    assert_eq!((r.open_edges, r.non_manifold_edges), (Some(0), Some(0)));
     let b = r.bounds.unwrap();
     assert_eq!((b[0][2], b[1][2]), (0.0, 42.0));
     let json = serde_json::to_value(r).unwrap();
@@ -519,7 +522,7 @@ fn the_demo_plant_is_a_valid_closed_solid() {
     let out = evaluate_csg(&tree, CsgOptions::default()).unwrap();
     assert_eq!(out.mesh.check_topology(), Ok(()));
     assert!(out.report.topologically_valid);
-    assert_eq!(out.report.non_manifold_edges, 0);
+    assert_eq!(out.report.two_manifold, Some(true));
     assert!(
         out.report.volume > 30.0 && out.report.volume < 60.0,
         "{}",

@@ -7,16 +7,16 @@
 use proptest::prelude::*;
 use std::f64::consts::{PI, TAU};
 use umbra::{
-    circle, cuboid, cylinder, extrude, icosphere, mesh_signed_volume, non_manifold_edge_count,
-    regular_polygon, torus, transform_mesh, uv_sphere, DMat4, DVec3, Edge2, ModelError,
-    PolygonMesh, PolygonSet2, Transform,
+    circle, cuboid, cylinder, extrude, icosphere, mesh_signed_volume, regular_polygon, torus,
+    transform_mesh, uv_sphere, DMat4, DVec3, Edge2, ModelError, PolygonMesh, PolygonSet2,
+    Transform,
 };
 
 /// Closed, 2-manifold, every facet with a non-zero area (Newell normal)
 /// and distinct vertex positions along each loop.
 fn assert_solid(m: &PolygonMesh) {
     assert_eq!(m.check_topology(), Ok(()));
-    assert_eq!(non_manifold_edge_count(m), 0);
+    assert_eq!(m.manifold_report().map(|r| r.is_two_manifold()), Ok(true));
     for (i, f) in m.facets.iter().enumerate() {
         let mut n = DVec3::ZERO;
         for h in &f.half_edges {
