@@ -8,6 +8,17 @@
 use crate::common::{examples, json, stderr, temp_dir, umbra};
 use std::path::{Path, PathBuf};
 
+/// The six faces of a box whose corner `i` takes the upper bound on axis
+/// `a` when bit `a` of `i` is set, each facing outwards.
+const BOX_QUADS: [[usize; 4]; 6] = [
+    [0, 2, 3, 1],
+    [4, 5, 7, 6],
+    [0, 1, 5, 4],
+    [2, 6, 7, 3],
+    [0, 4, 6, 2],
+    [1, 3, 7, 5],
+];
+
 /// An ASCII STL of the axis-aligned box `[lo, hi]`, outward triangles.
 fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {
     let p = |i: usize| {
@@ -17,16 +28,8 @@ fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {
             if i & 4 == 0 { lo[2] } else { hi[2] },
         ]
     };
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
     let mut s = String::from("solid box\n");
-    for q in quads {
+    for q in BOX_QUADS {
         for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
             s.push_str("facet normal 0 0 0\nouter loop\n");
             for v in t {
@@ -590,15 +593,7 @@ fn ascii_stl_binary_stl_and_obj_of_one_mesh_check_alike() {
     let dir = temp_dir("weld");
     let (lo, hi) = ([-0.5f32, 0.0, -2.0], [0.25f32, 1.5, 0.0]);
     let corner = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 0 { lo[a] } else { hi[a] });
-    let quads = [
-        [0, 2, 3, 1],
-        [4, 5, 7, 6],
-        [0, 1, 5, 4],
-        [2, 6, 7, 3],
-        [0, 4, 6, 2],
-        [1, 3, 7, 5],
-    ];
-    let tris: Vec<[usize; 3]> = quads
+    let tris: Vec<[usize; 3]> = BOX_QUADS
         .iter()
         .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
         .collect();
