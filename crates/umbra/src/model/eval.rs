@@ -674,6 +674,8 @@ pub fn evaluate_csg_with_progress(
         nodes: nodes.into_iter().map(|(_, r)| r).collect(),
     };
     report.set_manifold_counts(&mesh);
+    // The whole evaluation, its report's census included.
+    report.timings_ms.total = start.elapsed().as_secs_f64() * 1e3;
     Ok(CsgResult {
         mesh,
         report,
