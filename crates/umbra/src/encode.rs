@@ -8,7 +8,8 @@
 
 use crate::io::{
     faces_split, obj_of_faces, off_of_faces, ply_of_faces, rename_output, triangles_3mf,
-    triangles_to_3mf, triangles_to_stl, welded, wrong_dimension_of as wrong_dimension,
+    triangles_stl, triangles_to_3mf, triangles_to_stl, welded,
+    wrong_dimension_of as wrong_dimension,
 };
 use crate::report::{Boolean3Report, MeshCounts, SetCounts, SmoothFileReport};
 use crate::{
@@ -221,7 +222,7 @@ pub fn encode_mesh_with(
             (Ok(bytes), split.then(|| as_faces(faces)))
         }
         FileKind::Stl => {
-            let tris = boolean_3d::triangulate_mesh(written);
+            let tris = triangles_stl(written);
             let bytes = triangles_to_stl(&tris, options.text);
             // Rounded: `rounded` holds the mesh written.
             let read = (rounded.is_none()).then(|| welded(&tris).to_polygon_mesh());

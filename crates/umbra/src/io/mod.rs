@@ -41,8 +41,8 @@ pub use mesh_text::{mesh_to_obj, mesh_to_off, parse_obj, parse_off, MeshReadOpti
 pub(crate) use ply::ply_of_faces;
 pub use ply::{mesh_to_ply, parse_ply};
 pub use rings::{layout_polygons, PolygonLayout, PolygonSetRead, Polygons, RingOrientation};
-pub(crate) use stl::triangles_to_stl;
 pub use stl::{mesh_to_stl, parse_stl};
+pub(crate) use stl::{triangles_stl, triangles_to_stl};
 pub use svg::polygon_set_to_svg;
 pub use threemf::mesh_to_3mf;
 pub(crate) use threemf::{triangles_3mf, triangles_to_3mf};

@@ -325,7 +325,7 @@ pub(crate) fn read_stl_bytes(
 }
 
 /// The triangles to write: facets triangulated (section 4.8).
-fn triangles(mesh: &PolygonMesh) -> TriangleMesh {
+pub(crate) fn triangles_stl(mesh: &PolygonMesh) -> TriangleMesh {
     boolean_3d::triangulate_mesh(mesh)
 }
 
@@ -378,7 +378,7 @@ pub(crate) fn to_f32(
 /// range in binary STL, and on more than `u32::MAX` triangles in binary
 /// STL.
 pub fn mesh_to_stl(mesh: &PolygonMesh, ascii: bool) -> Result<Vec<u8>, UmbraError> {
-    triangles_to_stl(&triangles(mesh), ascii)
+    triangles_to_stl(&triangles_stl(mesh), ascii)
 }
 
 /// [`mesh_to_stl`] of triangles already made: every triangle written as it
