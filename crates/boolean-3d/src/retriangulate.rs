@@ -45,7 +45,7 @@ use crate::par;
 use rayon::prelude::*;
 use robust_arith::Point3;
 use rustc_hash::FxHashMap;
-use topology::{triangulate_facet, TriangleMesh};
+use topology::{triangulate_facet, FacetProjection, TriangleMesh};
 
 /// One operand as the re-triangulation needs it.
 pub(crate) struct Source<'a> {
@@ -513,10 +513,10 @@ fn facet(
 /// coordinate plane chosen by the Newell normal, summed over the
 /// half-edges in the order given and relative to `r0`, and clips as one
 /// ear, mirrored when the ring's projected area is negative: `(r2, r0,
-/// r1)` then, else `(r0, r1, r2)`. The arithmetic below is its own,
-/// operation for operation, so the sign (and the choice of plane) is the
-/// same bit for bit; a test compares the two on random, degenerate and
-/// non-finite triangles.
+/// r1)` then, else `(r0, r1, r2)`. The plane is [`FacetProjection`], as
+/// there, and the area is summed operation for operation as there, so the
+/// sign is the same bit for bit; a test compares the two on random,
+/// degenerate and non-finite triangles.
 fn one_triangle(positions: &[Point3], half_edges: &[(u32, u32)]) -> Option<[u32; 3]> {
     let &[h0, h1, h2] = half_edges else {
         return None;
@@ -540,36 +540,8 @@ fn one_triangle(positions: &[Point3], half_edges: &[(u32, u32)]) -> Option<[u32;
     if h2.0 != r1 || h1 != (r2, r0) || r0 == r1 || r1 == r2 || r2 == r0 {
         return None;
     }
-    let o = positions[r0 as usize];
-    let rel = |v: u32| {
-        let p = positions[v as usize];
-        [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
-    };
-    let mut n = [0.0f64; 3];
-    for &(s, e) in half_edges {
-        let p = rel(s);
-        let q = rel(e);
-        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    let axis = if n[0].abs() > n[1].abs() && n[0].abs() > n[2].abs() {
-        0
-    } else if n[1].abs() > n[2].abs() {
-        1
-    } else {
-        2
-    };
-    let (iu, iv) = match axis {
-        0 => (1, 2),
-        1 => (2, 0),
-        _ => (0, 1),
-    };
-    let (iu, iv) = if n[axis] < 0.0 { (iv, iu) } else { (iu, iv) };
-    let proj = |v: u32| {
-        let p = rel(v);
-        [p[iu], p[iv]]
-    };
+    let plane = FacetProjection::new(positions, half_edges, r0);
+    let proj = |v: u32| plane.project(positions[v as usize]);
     let ring = [proj(r0), proj(r1), proj(r2)];
     let mut area = 0.0;
     for i in 0..3 {

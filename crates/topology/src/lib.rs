@@ -63,7 +63,7 @@ pub use op::{BooleanOp, Operand};
 pub use polygon_set::{Edge2, PolygonSet2};
 pub use robust_arith::{Point2, Point3};
 pub use triangle_mesh::TriangleMesh;
-pub use triangulate::{triangulate_facet, triangulate_mesh};
+pub use triangulate::{triangulate_facet, triangulate_mesh, FacetProjection};
 
 /// Checks every coordinate of every point (shared by the three structures).
 fn validate_points<const N: usize>(points: &[[f64; N]]) -> Result<(), TopologyError> {

@@ -72,8 +72,11 @@ mod bridge;
 mod ear;
 mod grid;
 mod optimal;
+mod projection;
 #[cfg(test)]
 mod props;
+
+pub use projection::FacetProjection;
 
 use crate::{HalfEdge, PolygonMesh, TriangleMesh};
 use robust_arith::Point3;
@@ -143,38 +146,10 @@ fn triangulate_facet_by(
     let Some(&(first, _)) = half_edges.iter().find(|&&(s, e)| s != e) else {
         return; // only zero-length half-edges: each balances itself
     };
-    // Newell normal from the half-edges (facet closure makes it the sum
-    // over loops), relative to one vertex for accuracy.
-    let o = positions[first as usize];
-    let rel = |v: u32| {
-        let p = positions[v as usize];
-        [p[0] - o[0], p[1] - o[1], p[2] - o[2]]
-    };
-    let mut n = [0.0f64; 3];
-    for &(s, e) in half_edges {
-        let p = rel(s);
-        let q = rel(e);
-        n[0] += (p[1] - q[1]) * (p[2] + q[2]);
-        n[1] += (p[2] - q[2]) * (p[0] + q[0]);
-        n[2] += (p[0] - q[0]) * (p[1] + q[1]);
-    }
-    let axis = if n[0].abs() > n[1].abs() && n[0].abs() > n[2].abs() {
-        0
-    } else if n[1].abs() > n[2].abs() {
-        1
-    } else {
-        2
-    };
-    let (iu, iv) = match axis {
-        0 => (1, 2),
-        1 => (2, 0),
-        _ => (0, 1),
-    };
-    let (iu, iv) = if n[axis] < 0.0 { (iv, iu) } else { (iu, iv) };
-    let proj = |v: u32| {
-        let p = rel(v);
-        [p[iu], p[iv]]
-    };
+    // The plane of the Newell normal (`projection.rs`), relative to one
+    // vertex for accuracy.
+    let plane = FacetProjection::new(positions, half_edges, first);
+    let proj = |v: u32| plane.project(positions[v as usize]);
     let loops = chain_loops(half_edges, &proj);
     let rings: Vec<Vec<(u32, P2)>> = loops
         .iter()
