@@ -304,3 +304,45 @@ pub fn union_all(sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
         |out| run(input, total_edges(sets), 1, max_abs(&refs), out),
     )
 }
+
+/// The n-ary form of `op` over `sets` in one sweep (section 6.1), a point
+/// being inside an operand where that operand's winding number is
+/// positive: the union keeps what is inside any operand, the intersection
+/// what is inside every one, the difference what is inside the first and
+/// no other, and `Xor` what is inside an odd number of them. For two sets
+/// this selects what [`boolean`] selects; for one set, what its positive
+/// winding covers (`Xor`, union and intersection alike). No sets give the
+/// empty shape. Errors name the first invalid operand by its position.
+///
+/// ```
+/// use simplify_2d::{boolean_sets, BooleanOp};
+/// use topology::PolygonSet2;
+///
+/// let square = |x: f64| {
+///     let mut s = PolygonSet2::new();
+///     s.add_loop(&[[x, 0.0], [x + 2.0, 0.0], [x + 2.0, 2.0], [x, 2.0]]);
+///     s
+/// };
+/// // Three 2 x 2 squares, each overlapping the next by half.
+/// let sets = [square(0.0), square(1.0), square(2.0)];
+/// let area = |op| boolean_sets(op, &sets).unwrap().shape.signed_area();
+/// assert_eq!(area(BooleanOp::Union), 8.0);
+/// assert_eq!(area(BooleanOp::Intersection), 0.0);
+/// assert_eq!(area(BooleanOp::Difference), 2.0);
+/// assert_eq!(area(BooleanOp::Xor), 4.0);
+/// ```
+pub fn boolean_sets(op: BooleanOp, sets: &[PolygonSet2]) -> Result<Simplified, SimplifyError> {
+    boolean_n(sets, |w| selects_n(op, w))
+}
+
+/// Whether `op` over operands with winding numbers `w` selects a cell
+/// ([`boolean_sets`]).
+fn selects_n(op: BooleanOp, w: &[i32]) -> bool {
+    let inside = w.iter().filter(|&&x| x > 0).count();
+    match op {
+        BooleanOp::Union => inside > 0,
+        BooleanOp::Intersection => !w.is_empty() && inside == w.len(),
+        BooleanOp::Difference => w.first().is_some_and(|&x| x > 0) && inside == 1,
+        BooleanOp::Xor => inside % 2 == 1,
+    }
+}

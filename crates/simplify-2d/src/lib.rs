@@ -8,7 +8,8 @@
 //! caller's predicate ([`FillRule`]). Assembling two boundaries and tracking
 //! each operand's winding number gives union, intersection, difference and
 //! xor ([`boolean`]); any number of operands go through one sweep
-//! ([`union_all`], [`boolean_n`]).
+//! ([`boolean_sets`] by operation, [`union_all`], [`boolean_n`] by any
+//! predicate).
 //!
 //! The arrangement is computed by the modified Bentley-Ottmann sweep of
 //! sections 7.4-7.6 on the *current* data: edges are split at computed
@@ -70,8 +71,8 @@ mod vertex_table;
 mod winding;
 
 pub use api::{
-    boolean, boolean_cells, boolean_n, cell_structure, cell_structure_n, simplify, union_all,
-    Simplified,
+    boolean, boolean_cells, boolean_n, boolean_sets, cell_structure, cell_structure_n, simplify,
+    union_all, Simplified,
 };
 pub use cells::{CellEdge, CellStructure, SweepStats};
 pub use collection::EdgeCollection;

@@ -163,6 +163,7 @@ fn _umbra(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_class::<mesh::Mesh>()?;
     m.add_function(wrap_pyfunction!(ops::boolean, m)?)?;
     m.add_function(wrap_pyfunction!(ops::union_all, m)?)?;
+    m.add_function(wrap_pyfunction!(ops::difference_all, m)?)?;
     m.add_function(wrap_pyfunction!(ops::smooth, m)?)?;
     m.add_function(wrap_pyfunction!(ops::csg, m)?)?;
     m.add_function(wrap_pyfunction!(planar::boolean_2d, m)?)?;

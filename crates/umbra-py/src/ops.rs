@@ -1,6 +1,6 @@
 //! The 3D operations: the Boolean of two meshes (optionally smoothed),
-//! smoothing, the union of many (the facade's n-ary union), and CSG trees
-//! in the JSON form of `umbra csg`.
+//! smoothing, the union of many and one minus many (the facade's n-ary
+//! Booleans), and CSG trees in the JSON form of `umbra csg`.
 
 use crate::mesh::Mesh;
 use crate::{error, run};
@@ -9,9 +9,9 @@ use pyo3::types::PyDict;
 use std::borrow::Cow;
 use umbra::{
     as_triangle_mesh, boolean_solid, boolean_solid_with_contacts, default_mesh_tolerance,
-    evaluate_csg, parse_csg, smooth_csg_result, smooth_solid, smooth_solid_near, turned_outward,
-    union_all_solids, BooleanOp, CsgOptions, MeshVariant, PolygonMesh, SmoothOptions, SmoothReport,
-    SolidsError, UmbraError,
+    difference_all_solids, evaluate_csg, parse_csg, smooth_csg_result, smooth_solid,
+    smooth_solid_near, turned_outward, union_all_solids, BooleanOp, CsgOptions, MeshVariant,
+    PolygonMesh, SmoothOptions, SmoothReport, SolidsError, UmbraError,
 };
 
 /// A result and the report of its smoothing, if it was smoothed.
@@ -177,6 +177,44 @@ pub fn smooth<'py>(
     Mesh::wrap(py, out.shape)
 }
 
+/// The meshes of the Python iterable `meshes`, named `{name}[i]` in
+/// messages, each turned outward (noted in `turned`) unless
+/// `keep_orientation`.
+fn meshes_of(
+    meshes: &Bound<'_, PyAny>,
+    name: &str,
+    keep_orientation: bool,
+    turned: &mut Vec<(String, f64)>,
+) -> PyResult<Vec<PolygonMesh>> {
+    let mut items = Vec::new();
+    for (i, m) in meshes.try_iter()?.enumerate() {
+        let m = m?;
+        let m = m
+            .cast_into::<Mesh>()
+            .map_err(|_| error(format!("{name}[{i}]: expected an umbra.Mesh")))?;
+        let mesh = &m.get().mesh;
+        items.push(if keep_orientation {
+            mesh.clone()
+        } else {
+            outward(mesh, &format!("{name}[{i}]"), turned).into_owned()
+        });
+    }
+    Ok(items)
+}
+
+/// An n-ary Boolean's error with the bad operand named as the Python
+/// argument (`operand(index)`).
+fn solids_error(e: SolidsError, operand: impl Fn(usize) -> String) -> String {
+    match e {
+        SolidsError::InvalidOperand { index, source } => UmbraError::InvalidShape {
+            file: operand(index),
+            source,
+        }
+        .to_string(),
+        other => other.to_string(),
+    }
+}
+
 /// The union of every mesh of ``meshes`` in one call
 /// (`umbra::union_all_solids`): a balanced tree of binary Booleans whose
 /// independent branches run in parallel, the same result whatever the
@@ -192,32 +230,50 @@ pub fn union_all<'py>(
     triangulate: bool,
     keep_orientation: bool,
 ) -> PyResult<WithTurned<'py>> {
-    let mut items: Vec<PolygonMesh> = Vec::new();
     let mut turned = Vec::new();
-    for (i, m) in meshes.try_iter()?.enumerate() {
-        let m = m?;
-        let m = m
-            .cast_into::<Mesh>()
-            .map_err(|_| error(format!("meshes[{i}]: expected an umbra.Mesh")))?;
-        let mesh = &m.get().mesh;
-        items.push(if keep_orientation {
-            mesh.clone()
-        } else {
-            outward(mesh, &format!("meshes[{i}]"), &mut turned).into_owned()
-        });
-    }
+    let items = meshes_of(meshes, "meshes", keep_orientation, &mut turned)?;
     let variant = variant(triangulate);
     let out = run(py, || {
         union_all_solids(&items, variant)
             .map(|out| out.mesh)
-            .map_err(|e| match e {
-                // The operand named as the Python argument.
-                SolidsError::InvalidOperand { index, source } => UmbraError::InvalidShape {
-                    file: format!("meshes[{index}]"),
-                    source,
-                }
-                .to_string(),
-                other => other.to_string(),
+            .map_err(|e| solids_error(e, |i| format!("meshes[{i}]")))
+    })?;
+    Ok((Mesh::wrap(py, out)?, turned))
+}
+
+/// ``a`` minus every mesh of ``others`` in one call
+/// (`umbra::difference_all_solids`): ``a`` minus the balanced union of the
+/// others, whose independent branches run in parallel, the same result
+/// whatever the thread count; ``a`` itself when ``others`` is empty.
+/// Meshes whose facets face inward are turned outward unless
+/// ``keep_orientation``. Returns the result and the signed volumes of the
+/// meshes that were turned, by name.
+#[pyfunction]
+#[pyo3(signature = (a, others, *, triangulate = false, keep_orientation = false))]
+pub fn difference_all<'py>(
+    py: Python<'py>,
+    a: &Bound<'py, Mesh>,
+    others: &Bound<'py, PyAny>,
+    triangulate: bool,
+    keep_orientation: bool,
+) -> PyResult<WithTurned<'py>> {
+    let mut turned = Vec::new();
+    let first = &a.get().mesh;
+    let first = if keep_orientation {
+        Cow::Borrowed(first)
+    } else {
+        outward(first, "a", &mut turned)
+    };
+    let items = meshes_of(others, "others", keep_orientation, &mut turned)?;
+    let (first, variant) = (first.as_ref(), variant(triangulate));
+    let out = run(py, || {
+        difference_all_solids(first, &items, variant)
+            .map(|out| out.mesh)
+            .map_err(|e| {
+                solids_error(e, |i| match i {
+                    0 => "a".to_string(),
+                    i => format!("others[{}]", i - 1),
+                })
             })
     })?;
     Ok((Mesh::wrap(py, out)?, turned))

@@ -1,5 +1,5 @@
-"""3D Booleans, n-ary unions and CSG trees against analytic volumes, with
-every operand left untouched and every bad argument refused."""
+"""3D Booleans, n-ary unions and differences and CSG trees against analytic
+volumes, with every operand left untouched and every bad argument refused."""
 
 import math
 import pickle
@@ -72,6 +72,47 @@ def test_union_all_balanced_tree():
         umbra.union_all([one, one, open_box])
     with pytest.raises(umbra.UmbraError, match=r"meshes\[1\]: expected an umbra.Mesh"):
         umbra.union_all([one, 3])
+
+
+@pytest.mark.parametrize("triangulate", [False, True])
+def test_difference_all_one_minus_many(triangulate):
+    # A 6 x 1 x 1 bar minus cubes of side 1.5 through its top half
+    # (y > 0.5, all z): each removes 0.5 per unit of x it spans, over
+    # x in [0, 1.25], [2, 3.5] and [3, 4.5] (overlapping) and [5, 6].
+    bar = cube((0.0, 0.0, 0.0), 1.0)
+    bar = umbra.Mesh(bar.vertices * np.array([6.0, 1.0, 1.0]), bar.faces)
+    assert bar.volume() == 6.0
+    tools = [cube((x, 0.5, -0.25), 1.5) for x in (-0.25, 2.0, 3.0, 5.0)]
+    before = [pickle.dumps(t) for t in tools]
+    d = umbra.difference_all(bar, tools, triangulate=triangulate)
+    assert d.is_valid() and d.check()["two_manifold"]
+    assert close(d.volume(), 6.0 - 0.5 * (1.25 + 2.5 + 1.0)), d.volume()
+    if triangulate:
+        assert d.faces.shape[1] == 3
+    # The same as one difference at a time, and the callers' meshes untouched.
+    chained = bar
+    for t in tools:
+        chained = umbra.boolean(chained, t, "difference", triangulate=triangulate)
+    assert close(chained.volume(), d.volume())
+    assert [pickle.dumps(t) for t in tools] == before
+    assert umbra.difference_all(bar, []) == bar
+    assert umbra.difference_all(bar, iter(tools), triangulate=triangulate) == d
+
+
+def test_difference_all_names_the_bad_operand():
+    one = cube()
+    open_box = umbra.Mesh(one.vertices, one.faces[1:])
+    with pytest.raises(umbra.UmbraError, match=r"^a: invalid shape"):
+        umbra.difference_all(open_box, [one])
+    with pytest.raises(umbra.UmbraError, match=r"others\[1\]: invalid shape"):
+        umbra.difference_all(one, [one, open_box])
+    with pytest.raises(umbra.UmbraError, match=r"others\[0\]: expected an umbra.Mesh"):
+        umbra.difference_all(one, [3])
+    with pytest.raises(TypeError):
+        umbra.difference_all("cube.obj", [one])
+    with pytest.warns(UserWarning, match=r"others\[0\]: the facets face inward"):
+        d = umbra.difference_all(one, [cube((0.5, 0.5, 0.5)).reversed()])
+    assert close(d.volume(), 0.875)
 
 
 def test_csg_tree_dict():

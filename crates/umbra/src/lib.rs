@@ -14,8 +14,9 @@
 //!   [`Operand`] for every engine.
 //! - 2D: the basic Boolean [`boolean`] (chapter 4, eq. 4.7-4.16; its output
 //!   is always topologically valid); through simplification (chapter 6):
-//!   [`simplify`] by a [`FillRule`], [`boolean_via_simplify`],
-//!   [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
+//!   [`simplify`] by a [`FillRule`], [`boolean_via_simplify`], and n-ary
+//!   in one sweep [`boolean_sets`] (by operation, as [`boolean_solids`] in
+//!   3D), [`boolean_n`] and [`union_all`]; [`Via`] names the algorithm.
 //! - 3D: [`boolean_mesh`] (polygon meshes), [`boolean_triangles`]
 //!   (triangle meshes; [`PreparedTriangles`] and [`boolean_prepared`] to
 //!   validate and index an operand once for many Booleans),
@@ -128,8 +129,8 @@ pub use robust_arith::{
 };
 pub use round_f32::{round_to_f32, F32Rounding, RoundedMesh, RoundedToF32};
 pub use simplify_2d::{
-    boolean as boolean_via_simplify, boolean_n, simplify, union_all, FillRule, Simplified,
-    SimplifyError, SweepStats,
+    boolean as boolean_via_simplify, boolean_n, boolean_sets, simplify, union_all, FillRule,
+    Simplified, SimplifyError, SweepStats,
 };
 pub use smooth::{
     smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, smooth_triangles_near,

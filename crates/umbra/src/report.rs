@@ -199,6 +199,11 @@ pub struct Boolean2Report {
     pub keep_orientation: bool,
     /// The operands.
     pub inputs: Operands<SetCounts>,
+    /// The operands after B of an n-ary Boolean in one sweep
+    /// ([`crate::boolean_sets`]; a difference is A minus all the others),
+    /// in order; absent for two operands.
+    #[serde(skip_serializing_if = "Vec::is_empty")]
+    pub more_inputs: Vec<SetCounts>,
     /// The result as written.
     pub output: SetCounts,
     /// Basic Boolean: edge pairs with `X11 != 0`.
@@ -241,6 +246,7 @@ impl Boolean2Report {
             algorithm: Via::Basic.algorithm(),
             keep_orientation,
             inputs,
+            more_inputs: Vec::new(),
             output,
             intersections: Some(out.intersections),
             topologically_valid,
@@ -269,6 +275,7 @@ impl Boolean2Report {
             algorithm: Via::Simplify.algorithm(),
             keep_orientation,
             inputs,
+            more_inputs: Vec::new(),
             output,
             intersections: None,
             topologically_valid,
@@ -279,6 +286,13 @@ impl Boolean2Report {
             smoothing: None,
             timings_ms: Timings::total(total_ms),
         }
+    }
+
+    /// The report of an n-ary Boolean in one sweep: the operands after B
+    /// counted in `more_inputs`.
+    pub fn with_more_inputs(mut self, more: Vec<SetCounts>) -> Self {
+        self.more_inputs = more;
+        self
     }
 
     /// The report once the result was smoothed in `smooth_ms`: `output`

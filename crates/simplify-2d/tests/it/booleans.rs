@@ -1,6 +1,7 @@
 //! Booleans through simplification (section 6.1): two operands with
 //! separately tracked winding numbers, and n operands in one sweep, checked
-//! against the exact per-operand winding-number oracle, including
+//! against the exact per-operand winding-number oracle (every operation
+//! over n operands too, `boolean_sets`), including
 //! geometrically invalid (self-intersecting, multiply enclosed) operands.
 
 use crate::common::*;
@@ -94,7 +95,8 @@ proptest! {
         let any_pos = boolean_n(&sets, |w| w.iter().any(|&x| x > 0)).unwrap();
         let two = boolean_n(&sets, |w| w.iter().filter(|&&x| x > 0).count() >= 2).unwrap();
         let summed = union_all(&sets).unwrap();
-        for out in [&any_pos, &two, &summed] {
+        let by_op: Vec<Simplified> = OPS.iter().map(|&op| boolean_sets(op, &sets).unwrap()).collect();
+        for out in [&any_pos, &two, &summed].into_iter().chain(&by_op) {
             out.shape.check_topology().unwrap();
         }
         // Boundary-only sweeps against selecting from every edge.
@@ -114,6 +116,30 @@ proptest! {
             prop_assert_eq!(winding_f64(&two.shape, p), i32::from(covered >= 2));
             let total: i32 = ws.iter().sum();
             prop_assert_eq!(winding_f64(&summed.shape, p), i32::from(total > 0));
+            for (op, out) in OPS.iter().zip(&by_op) {
+                let expected = match op {
+                    BooleanOp::Union => covered >= 1,
+                    BooleanOp::Intersection => covered == ws.len(),
+                    BooleanOp::Difference => ws[0] > 0 && covered == 1,
+                    BooleanOp::Xor => covered % 2 == 1,
+                };
+                prop_assert_eq!(winding_f64(&out.shape, p), i32::from(expected), "{:?} at {:?} w {:?}", op, p, ws);
+            }
+        }
+    }
+
+    /// The n-ary Boolean by operation on two operands is the binary one:
+    /// the same shape, bound and adjustment count.
+    #[test]
+    fn boolean_sets_of_two_is_the_binary_boolean(na in 3usize..=16, nb in 3usize..=16, sa in any::<u64>(), sb in any::<u64>()) {
+        let a = polygon(&random_polygon(na, sa));
+        let b = polygon(&offset(&random_polygon(nb, sb), 0.2, -0.1, 0.8));
+        let sets = [a.clone(), b.clone()];
+        for op in OPS {
+            let (two, n) = (boolean(&a, &b, op).unwrap(), boolean_sets(op, &sets).unwrap());
+            prop_assert_eq!(&two.shape, &n.shape, "{:?}", op);
+            prop_assert_eq!(two.k_max, n.k_max);
+            prop_assert_eq!(two.epsilon, n.epsilon);
         }
     }
 

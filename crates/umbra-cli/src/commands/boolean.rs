@@ -1,8 +1,12 @@
-//! `umbra boolean OP A B -o OUT`: the 2D Boolean (basic, or through
-//! simplification with `--via simplify`) or the 3D Boolean (polygon-mesh
-//! variant, or triangle-mesh variant with `--triangulate` or an output
-//! format of triangles only), by the files' extensions.
+//! `umbra boolean OP A B [C ...] -o OUT`: the 2D Boolean (basic, or
+//! through simplification with `--via simplify`) or the 3D Boolean
+//! (polygon-mesh variant, or triangle-mesh variant with `--triangulate` or
+//! an output format of triangles only), by the files' extensions. More
+//! than two operands: in 2D one sweep through simplification
+//! (`boolean_sets`), in 3D one operation node of the CSG evaluator (a
+//! balanced tree of binary Booleans, in parallel).
 
+use super::csg::Evaluation;
 use super::smooth::summary;
 use super::{
     invalid_result, millis_since, orientation, tolerance_arg, warn_f32_defects, warn_orphans,
@@ -15,26 +19,28 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
-    default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near,
-    turned_outward,
-    Boolean2Report,
-    Boolean3Report, BooleanOp, Contacts, FileKind, MeshCounts, MeshReadOptions, MeshVariant,
-    Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
+    boolean, boolean_sets, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
+    default_mesh_tolerance, default_set_tolerance, encode_mesh_with, encode_polygon_set,
+    read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near, turned_outward,
+    Boolean2Report, Boolean3Report, BooleanOp, Contacts, CsgNode, FileKind, MeshCounts,
+    MeshReadOptions, MeshVariant, Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions,
+    UmbraError, Via,
 };
 
-/// Union, intersection, difference or (2D only) xor of two files
+/// Union, intersection, difference or (2D only) xor of two or more files
 /// of the same dimension (2D: .wkt/.geojson; 3D: .obj/.off/.stl/.ply/.3mf/.glb/.gltf).
 #[derive(clap::Args, Debug)]
 pub struct BooleanArgs {
     /// The operation.
     #[arg(value_enum)]
     op: OpArg,
-    /// The first operand, A.
-    a: PathBuf,
-    /// The second operand, B.
-    b: PathBuf,
+    /// The operands A, B and any more. With more than two, union and
+    /// intersection take them all, difference is A minus all the others,
+    /// and xor (2D) keeps what an odd number of them cover; 2D runs one
+    /// sweep through simplification, 3D a balanced tree of binary
+    /// Booleans in parallel, reported as `umbra csg` reports.
+    #[arg(required = true, num_args = 2.., value_name = "FILE")]
+    operands: Vec<PathBuf>,
     #[command(flatten)]
     out: OutputArgs,
     /// Use the operands' orientation as written. 2D: read every ring as
@@ -45,11 +51,12 @@ pub struct BooleanArgs {
     /// 4.7); by default it is turned outward, with a warning.
     #[arg(long)]
     keep_orientation: bool,
-    /// 2D: the algorithm. `basic` is the basic Boolean of chapter 4
-    /// (tolerates invalid input); `simplify` assembles both boundaries
-    /// and simplifies (chapter 6: resolves self-intersections).
-    #[arg(long, value_enum, default_value = "basic")]
-    via: ViaArg,
+    /// 2D: the algorithm. `basic` (the default for two operands) is the
+    /// basic Boolean of chapter 4 (tolerates invalid input); `simplify`
+    /// assembles the boundaries and simplifies (chapter 6: resolves
+    /// self-intersections), which more than two operands always use.
+    #[arg(long, value_enum)]
+    via: Option<ViaArg>,
     /// 3D: run the triangle-mesh variant (section 4.8) instead of the
     /// polygon-mesh one: operands with other facets are triangulated by
     /// internal edges first, and the output is triangles. Implied when
@@ -108,22 +115,27 @@ impl BooleanArgs {
     /// Checks the arguments, runs the Boolean, writes the output (and the
     /// report) and prints a summary.
     pub fn run(self) -> anyhow::Result<ExitCode> {
-        let kinds = [
-            FileKind::from_path(&self.a)?,
-            FileKind::from_path(&self.b)?,
-            FileKind::from_path(&self.out.output)?,
-        ];
-        let meshes = kinds.iter().filter(|k| k.is_mesh()).count();
-        if meshes != 0 && meshes != 3 {
+        let out_kind = FileKind::from_path(&self.out.output)?;
+        let mut meshes = usize::from(out_kind.is_mesh());
+        for path in &self.operands {
+            meshes += usize::from(FileKind::from_path(path)?.is_mesh());
+        }
+        if meshes != 0 && meshes != self.operands.len() + 1 {
             return Err(usage(
-                "A, B and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
+                "the operands and the output must all be 2D files (.wkt, .geojson, .svg output) or all 3D files (.obj, .off, .stl, .ply, .3mf, .glb, .gltf)",
             ));
         }
-        self.out
-            .refuse_overlaps(&[("operand A", &self.a), ("operand B", &self.b)])?;
+        let labels: Vec<String> = (0..self.operands.len()).map(operand_label).collect();
+        let reads: Vec<(&str, &Path)> = labels
+            .iter()
+            .zip(&self.operands)
+            .map(|(label, path)| (label.as_str(), path.as_path()))
+            .collect();
+        self.out.refuse_overlaps(&reads)?;
         let op = self.op.op();
-        if meshes == 3 {
-            if self.via == ViaArg::Simplify {
+        let many = self.operands.len() > 2;
+        if meshes > 0 {
+            if self.via == Some(ViaArg::Simplify) {
                 return Err(usage("--via simplify is for 2D files only"));
             }
             if op == BooleanOp::Xor {
@@ -131,35 +143,78 @@ impl BooleanArgs {
                     "xor is for 2D files only (a 3D half-edge has no multiplicity for the doubled intersection curves)",
                 ));
             }
-            self.run_3d(op, kinds[2])
+            if many {
+                return self.run_3d_many(op, out_kind);
+            }
+            self.run_3d(op, out_kind)
         } else {
             if self.triangulate {
                 return Err(usage("--triangulate is for 3D files only"));
             }
             let via = match self.via {
-                ViaArg::Basic => Via::Basic,
-                ViaArg::Simplify => Via::Simplify,
+                Some(ViaArg::Basic) if many => {
+                    return Err(usage(
+                        "the basic Boolean takes two operands; more go through simplification in one sweep (--via simplify, the default for them)",
+                    ))
+                }
+                None | Some(ViaArg::Basic) if !many => Via::Basic,
+                _ => Via::Simplify,
             };
-            self.run_2d(op, via, kinds[2])
+            self.run_2d(op, via, out_kind)
         }
     }
 
+    /// More than two 3D operands: one operation node over the files,
+    /// evaluated as `umbra csg` evaluates it (inward-facing operands
+    /// turned outward, smoothed near the contacts, its report).
+    fn run_3d_many(&self, op: BooleanOp, out_kind: FileKind) -> anyhow::Result<ExitCode> {
+        if self.keep_orientation {
+            return Err(usage(
+                "--keep-orientation takes two 3D operands (more are evaluated as a CSG node, which turns inward-facing operands outward)",
+            ));
+        }
+        let tree = CsgNode::op(op, self.operands.iter().map(CsgNode::file).collect());
+        let evaluation = Evaluation {
+            triangulate: self.triangulate || out_kind.holds_triangles_only(),
+            smooth: self.smooth,
+            quiet: false,
+        };
+        let source = format!("{} of {} files", op.name(), self.operands.len());
+        evaluation.run(&tree, out_kind, &self.out, &source)
+    }
+
     fn run_2d(&self, op: BooleanOp, via: Via, out_kind: FileKind) -> anyhow::Result<ExitCode> {
-        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
+        let out_path = &self.out.output;
         let keep = self.keep_orientation;
         let options = ReadOptions {
             orientation: orientation(keep),
             ..ReadOptions::default()
         };
-        let a = super::read_set(a_path, options)?;
-        let b = super::read_set(b_path, options)?;
-        let inputs = Operands {
-            a: SetCounts::of_set(a_path.display().to_string(), &a),
-            b: SetCounts::of_set(b_path.display().to_string(), &b),
+        let mut sets = Vec::with_capacity(self.operands.len());
+        for path in &self.operands {
+            sets.push(super::read_set(path, options)?);
+        }
+        let files: Vec<&Path> = self.operands.iter().map(PathBuf::as_path).collect();
+        let (Some(a), Some(b), &[a_path, b_path, ..]) = (sets.first(), sets.get(1), &files[..])
+        else {
+            return Err(usage("a Boolean takes at least two operands"));
         };
+        let mut counts = self
+            .operands
+            .iter()
+            .zip(&sets)
+            .map(|(path, set)| SetCounts::of_set(path.display().to_string(), set));
+        let inputs = match (counts.next(), counts.next()) {
+            (Some(a), Some(b)) => Operands { a, b },
+            _ => return Err(usage("a Boolean takes at least two operands")),
+        };
+        let more_inputs: Vec<SetCounts> = counts.collect();
         let out_file = out_path.display().to_string();
-        let files = [a_path.as_path(), b_path.as_path()];
-        let tolerance = default_boolean_set_tolerance(&a, &b, keep);
+        let tolerance = if keep {
+            0.0
+        } else {
+            sets.iter().map(default_set_tolerance).fold(0.0, f64::max)
+        };
         let start = Instant::now();
         let (encoded, report) = match via {
             Via::Basic => {
@@ -167,19 +222,20 @@ impl BooleanArgs {
                 // file's overlapping parts or stray holes would otherwise
                 // be counted twice or inside out: `regularized_operand`).
                 // Their sweeps' error bound adds to the Boolean's.
+                let regular;
                 let (a, b, moved) = if keep {
                     (a, b, 0.0)
                 } else {
                     let set = |s: &PolygonSet2, file: &Path| {
                         regularized_operand(s).map_err(|e| errors::simplify(e, &[file]))
                     };
-                    let (a, b) = (set(&a, a_path)?, set(&b, b_path)?);
-                    let moved = a.epsilon.max(b.epsilon);
-                    (a.shape, b.shape, moved)
+                    regular = (set(a, a_path)?, set(b, b_path)?);
+                    let moved = regular.0.epsilon.max(regular.1.epsilon);
+                    (&regular.0.shape, &regular.1.shape, moved)
                 };
-                let result = boolean(&a, &b, op);
+                let result = boolean(a, b, op);
                 let total = millis_since(start);
-                let out = result.map_err(|e| errors::boolean2(e, files))?;
+                let out = result.map_err(|e| errors::boolean2(e, [a_path, b_path]))?;
                 let encoded =
                     encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
                 let mut report = Boolean2Report::basic(
@@ -194,7 +250,13 @@ impl BooleanArgs {
                 self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
             }
             Via::Simplify => {
-                let result = boolean_via_simplify(&a, &b, op);
+                // Two operands keep the binary sweep's fixed-size winding
+                // pairs; more are swept at once (the same selection).
+                let result = if more_inputs.is_empty() {
+                    boolean_via_simplify(a, b, op)
+                } else {
+                    boolean_sets(op, &sets)
+                };
                 let total = millis_since(start);
                 let out = result.map_err(|e| errors::simplify(e, &files))?;
                 let encoded =
@@ -206,7 +268,8 @@ impl BooleanArgs {
                     encoded.counts(&out_file),
                     &out,
                     total,
-                );
+                )
+                .with_more_inputs(more_inputs);
                 self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
             }
         };
@@ -242,7 +305,10 @@ impl BooleanArgs {
     }
 
     fn run_3d(&self, op: BooleanOp, out_kind: FileKind) -> anyhow::Result<ExitCode> {
-        let (a_path, b_path, out_path) = (&self.a, &self.b, &self.out.output);
+        let (Some(a_path), Some(b_path)) = (self.operands.first(), self.operands.get(1)) else {
+            return Err(usage("a Boolean takes at least two operands"));
+        };
+        let out_path = &self.out.output;
         let mut a = read_mesh(a_path, MeshReadOptions::default(), true)?;
         let mut b = read_mesh(b_path, MeshReadOptions::default(), true)?;
         if !self.keep_orientation {
@@ -359,5 +425,14 @@ impl BooleanArgs {
         )?;
         let report = report.smoothed(encoded.counts(&out_file), &smoothed, ms);
         Ok((encoded, report))
+    }
+}
+
+/// The name of operand `i` in messages: `operand A`, `operand B`, ...,
+/// `operand 27` past `Z`.
+fn operand_label(i: usize) -> String {
+    match u8::try_from(i) {
+        Ok(k @ 0..=25) => format!("operand {}", char::from(b'A' + k)),
+        _ => format!("operand {}", i + 1),
     }
 }

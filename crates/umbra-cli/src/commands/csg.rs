@@ -1,6 +1,7 @@
 //! `umbra csg SCRIPT.json -o OUT`: evaluates a CSG tree of primitives,
 //! files and Booleans (the JSON form below) with the 3D Boolean, batched and
-//! in parallel, deterministic whatever the thread count.
+//! in parallel, deterministic whatever the thread count. `Evaluation`
+//! also serves `umbra boolean` with more than two 3D operands.
 
 use super::{csg_options, millis_since, smooth_result, tolerance_arg, warn_f32_defects};
 use crate::files::OutputArgs;
@@ -10,7 +11,7 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use anyhow::Context;
-use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, FileKind};
+use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, CsgNode, FileKind};
 
 /// The script form, shown by `umbra csg --help`.
 const SCRIPT_HELP: &str = "\
@@ -73,27 +74,59 @@ impl CsgArgs {
         let leaves: Vec<(&str, &std::path::Path)> =
             tree.files().into_iter().map(|p| ("a file of the script", p)).collect();
         self.out.refuse_overlaps(&leaves)?;
+        let evaluation = Evaluation {
+            triangulate: self.triangulate || kind.holds_triangles_only(),
+            smooth: self.smooth,
+            quiet: self.quiet,
+        };
+        evaluation.run(&tree, kind, &self.out, &self.script.display().to_string())
+    }
+}
+
+/// How a CSG tree is evaluated and written: by `umbra csg`, and by
+/// `umbra boolean` for more than two 3D operands (one operation node over
+/// the files).
+pub(super) struct Evaluation {
+    /// The triangle-mesh variant.
+    pub(super) triangulate: bool,
+    /// `--smooth`.
+    pub(super) smooth: Option<f64>,
+    /// No progress bar and no summary.
+    pub(super) quiet: bool,
+}
+
+impl Evaluation {
+    /// Evaluates `tree`, smooths the result, writes it as `kind` (and the
+    /// report) and prints a summary; evaluation errors are given the
+    /// context `source` (the script, or the command's operands).
+    pub(super) fn run(
+        &self,
+        tree: &CsgNode,
+        kind: FileKind,
+        out: &OutputArgs,
+        source: &str,
+    ) -> anyhow::Result<ExitCode> {
         let start = Instant::now();
-        let triangulate = self.triangulate || kind.holds_triangles_only();
+        let triangulate = self.triangulate;
         let bar = Progress::new(tree.boolean_count(), self.quiet);
         let result = evaluate_csg_with_progress(
-            &tree,
+            tree,
             csg_options(triangulate, self.smooth),
             Some(&|done, _| bar.set(done)),
         );
         bar.finish();
-        // Evaluation errors name the node; the script names the file.
-        let result = result.with_context(|| self.script.display().to_string())?;
+        // Evaluation errors name the node; the source names the file(s).
+        let result = result.with_context(|| source.to_string())?;
         let result = smooth_result(result, triangulate, self.smooth)?;
-        let file = self.out.output.display().to_string();
+        let file = out.output.display().to_string();
         // The report describes the file: for a format of `f32`
         // coordinates, the mesh as rounded and repaired; for facets split
         // into triangles, the triangles.
-        let encoded = encode_mesh_with(kind, &result.mesh, self.out.mesh_options(), &file)?;
+        let encoded = encode_mesh_with(kind, &result.mesh, out.mesh_options(), &file)?;
         let report = result.report.written_as(&encoded);
-        self.out.write(&encoded.bytes, &report)?;
+        out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
-            warn_f32_defects(&rounded.report, &self.out.output);
+            warn_f32_defects(&rounded.report, &out.output);
         }
         if !self.quiet {
             let r = &report;

@@ -746,3 +746,188 @@ fn points_and_lines_beside_polygons_are_skipped_with_a_warning() {
         )
     );
 }
+
+/// Runs `umbra boolean OP FILES... -o OUT [extra...]`.
+fn boolean_of(op: &str, files: &[PathBuf], out: &Path, extra: &[&str]) -> std::process::Output {
+    let mut args: Vec<std::ffi::OsString> = vec!["boolean".into(), op.into()];
+    args.extend(files.iter().map(|f| f.clone().into_os_string()));
+    args.extend(["-o".into(), out.as_os_str().to_owned()]);
+    args.extend(extra.iter().map(Into::into));
+    umbra(&args)
+}
+
+/// Whether `op` over operands of winding numbers `w` covers a point:
+/// inside any (union), every (intersection), the first and no other
+/// (difference), an odd number (xor); inside meaning a positive winding
+/// number.
+fn selects(op: &str, w: &[i64]) -> bool {
+    let inside = w.iter().filter(|&&x| x > 0).count();
+    match op {
+        "union" => inside > 0,
+        "intersection" => inside == w.len(),
+        "difference" => w[0] > 0 && inside == 1,
+        "xor" => inside % 2 == 1,
+        _ => unreachable!("{op}"),
+    }
+}
+
+#[test]
+fn more_than_two_2d_operands_select_by_every_operands_winding_number() {
+    let dir = temp_dir("nary-2d");
+    // Two squares, a band across both and a bow tie (winding +1 and -1
+    // in its two lobes).
+    let texts = [
+        A_SQUARE,
+        B_SQUARE,
+        "POLYGON ((0 1, 4 1, 4 2, 0 2, 0 1))\n",
+        "POLYGON ((2 -1, 4 1, 4 -1, 2 1, 2 -1))\n",
+    ];
+    let files: Vec<PathBuf> = texts
+        .iter()
+        .enumerate()
+        .map(|(i, t)| write(&dir, &format!("op{i}.wkt"), t))
+        .collect();
+    let pts = samples(-2.0, 5.0);
+    // As written (the bow tie's negative lobe is outside it), and read by
+    // role (the simple operands only: by role they are as written too).
+    for (keep, n) in [(true, 4), (false, 3)] {
+        let inputs: Vec<Vec<Vec<[f64; 2]>>> = texts[..n].iter().map(|t| rings(t)).collect();
+        for op in ["union", "intersection", "difference", "xor"] {
+            let out = dir.join(format!("{op}-{keep}.wkt"));
+            let report = dir.join(format!("{op}-{keep}.json"));
+            let mut extra = vec!["--report", report.to_str().unwrap()];
+            if keep {
+                extra.push("--keep-orientation");
+            }
+            let o = boolean_of(op, &files[..n], &out, &extra);
+            assert!(o.status.success(), "{op}: {}", stderr(&o));
+            assert!(String::from_utf8_lossy(&o.stdout).starts_with(&format!("{op} (via simplify)")));
+            let written = rings(&std::fs::read_to_string(&out).unwrap());
+            assert_closed(&written);
+            for &p in &pts {
+                let w: Vec<i64> = inputs.iter().map(|r| winding(r, p)).collect();
+                assert_eq!(
+                    winding(&written, p),
+                    i64::from(selects(op, &w)),
+                    "{op} (keep {keep}) at {p:?}, operands' winding numbers {w:?}"
+                );
+            }
+            let r = crate::common::json(&report);
+            assert_eq!(r["operation"], op);
+            assert_eq!(r["inputs"]["b"]["file"], files[1].display().to_string());
+            let more = r["more_inputs"].as_array().unwrap();
+            assert_eq!(more.len(), n - 2);
+            assert_eq!(more[0]["file"], files[2].display().to_string());
+            assert_eq!(r["topologically_valid"], true);
+        }
+    }
+    // Two operands write no `more_inputs`.
+    let report = dir.join("two.json");
+    let o = boolean_of(
+        "union",
+        &files[..2],
+        &dir.join("two.wkt"),
+        &["--report", report.to_str().unwrap()],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    assert!(crate::common::json(&report).get("more_inputs").is_none());
+}
+
+#[test]
+fn more_than_two_3d_operands_are_one_csg_node() {
+    let dir = temp_dir("nary-3d");
+    // Three bars along x, [0, 2], [1, 3] and [1.5, 3.5], of section 1 x 1
+    // (coplanar sides: the symbolic perturbation decides them).
+    let files: Vec<PathBuf> = [[0.0, 2.0], [1.0, 3.0], [1.5, 3.5]]
+        .iter()
+        .enumerate()
+        .map(|(i, &[lo, hi])| {
+            let text = crate::cli_formats::box_stl([lo, 0.0, 0.0], [hi, 1.0, 1.0]);
+            write(&dir, &format!("bar{i}.stl"), &text)
+        })
+        .collect();
+    for (op, volume, ext) in [
+        ("union", 3.5, "obj"),
+        ("intersection", 0.5, "stl"),
+        ("difference", 1.0, "obj"),
+        ("difference", 1.0, "stl"),
+    ] {
+        let out = dir.join(format!("{op}.{ext}"));
+        let report = dir.join(format!("{op}-{ext}.json"));
+        let o = boolean_of(op, &files, &out, &["--report", report.to_str().unwrap()]);
+        assert!(o.status.success(), "{op} {ext}: {}", stderr(&o));
+        let r = crate::common::json(&report);
+        assert_eq!(r["booleans"], 2, "{op} {ext}");
+        assert_eq!(r["leaves"], 3);
+        let variant = if ext == "stl" { "triangle" } else { "polygon" };
+        assert_eq!(r["variant"], variant, "{op} {ext}");
+        assert_eq!(r["topologically_valid"], true);
+        assert_eq!(r["two_manifold"], true, "{op} {ext}");
+        let v = r["volume"].as_f64().unwrap();
+        assert!((v - volume).abs() < 1e-9, "{op} {ext}: volume {v}");
+        // The file read back agrees (`check`: its own reader and counts).
+        let o = umbra(["check".as_ref(), out.as_os_str(), "--json".as_ref()]);
+        assert!(o.status.success(), "{}", stderr(&o));
+        let c: serde_json::Value = serde_json::from_slice(&o.stdout).unwrap();
+        assert_eq!(c["facets"], r["facets"], "{op} {ext}");
+        let cv = c["signed_volume"].as_f64().unwrap();
+        assert!((cv - volume).abs() < 1e-6, "{op} {ext}: file volume {cv}");
+    }
+    // The same as two binary Booleans in turn.
+    let ab = dir.join("ab.obj");
+    let o = boolean_of("union", &files[..2], &ab, &[]);
+    assert!(o.status.success(), "{}", stderr(&o));
+    let abc = dir.join("abc.obj");
+    let o = boolean_of(
+        "union",
+        &[ab, files[2].clone()],
+        &abc,
+        &["--report", dir.join("abc.json").to_str().unwrap()],
+    );
+    assert!(o.status.success(), "{}", stderr(&o));
+    let chained = crate::common::json(&dir.join("abc.json"));
+    let v = chained["output"]["signed_volume"].as_f64().unwrap();
+    assert!((v - 3.5).abs() < 1e-9, "chained union volume {v}");
+}
+
+#[test]
+fn more_than_two_operands_usage_errors_exit_2_and_write_nothing() {
+    let dir = temp_dir("nary-usage");
+    let w: Vec<PathBuf> = (0..3)
+        .map(|i| write(&dir, &format!("s{i}.wkt"), A_SQUARE))
+        .collect();
+    let m: Vec<PathBuf> = (0..3)
+        .map(|i| {
+            write(
+                &dir,
+                &format!("m{i}.stl"),
+                &crate::cli_formats::box_stl([0.0; 3], [1.0; 3]),
+            )
+        })
+        .collect();
+    let mixed = [w[0].clone(), w[1].clone(), m[0].clone()];
+    for (op, files, out, extra) in [
+        ("union", &w[..], "o.wkt", vec!["--via", "basic"]),
+        ("union", &m[..], "o.obj", vec!["--keep-orientation"]),
+        ("xor", &m[..], "o.obj", vec![]),
+        ("union", &m[..], "o.obj", vec!["--via", "simplify"]),
+        ("union", &w[..], "o.wkt", vec!["--triangulate"]),
+        ("union", &mixed[..], "o.obj", vec![]),
+        ("union", &mixed[..], "o.wkt", vec![]),
+    ] {
+        let out = dir.join(out);
+        let o = boolean_of(op, files, &out, &extra);
+        assert_eq!(
+            o.status.code(),
+            Some(2),
+            "{op} {files:?} {extra:?}: {}",
+            stderr(&o)
+        );
+        assert!(!out.exists(), "{op} {extra:?}");
+    }
+    // An output that is the third operand is refused, and left as it was.
+    let o = boolean_of("union", &w, &w[2], &[]);
+    assert!(!o.status.success());
+    assert!(stderr(&o).contains("operand C"), "{}", stderr(&o));
+    assert_eq!(std::fs::read_to_string(&w[2]).unwrap(), A_SQUARE);
+}

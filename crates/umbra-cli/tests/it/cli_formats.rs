@@ -20,7 +20,7 @@ const BOX_QUADS: [[usize; 4]; 6] = [
 ];
 
 /// An ASCII STL of the axis-aligned box `[lo, hi]`, outward triangles.
-fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {
+pub(crate) fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {
     let p = |i: usize| {
         [
             if i & 1 == 0 { lo[0] } else { hi[0] },

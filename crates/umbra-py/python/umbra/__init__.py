@@ -5,7 +5,7 @@ geometric computation".
 Any input that satisfies the closure constraints (section 4.2) yields output
 that satisfies them too, whatever floating-point rounding does.
 
-3D: ``Mesh`` (numpy arrays in and out), ``boolean``, ``union_all``,
+3D: ``Mesh`` (numpy arrays in and out), ``boolean``, ``union_all``, ``difference_all``,
 ``csg`` (the JSON tree form of ``umbra csg`` as a dict), ``Mesh.from_trimesh``
 and ``Mesh.to_trimesh``.
 
@@ -45,6 +45,7 @@ __all__ = [
     "simplify",
     "smooth",
     "union_all",
+    "difference_all",
     "write",
     "__version__",
 ]
@@ -244,6 +245,28 @@ def union_all(
     """
     out, turned = _umbra.union_all(
         list(meshes), triangulate=triangulate, keep_orientation=keep_orientation
+    )
+    _warn_turned(turned)
+    return out
+
+
+def difference_all(
+    a: Mesh,
+    others: Iterable[Mesh],
+    *,
+    triangulate: bool = False,
+    keep_orientation: bool = False,
+) -> Mesh:
+    """``a`` minus every mesh of ``others`` in one call.
+
+    ``a`` minus the balanced union of the others (independent branches run
+    in parallel; the result is the same whatever the thread count); ``a``
+    itself when ``others`` is empty. Meshes whose facets face inward are
+    turned outward with a ``UserWarning`` unless ``keep_orientation`` (see
+    ``boolean``).
+    """
+    out, turned = _umbra.difference_all(
+        a, list(others), triangulate=triangulate, keep_orientation=keep_orientation
     )
     _warn_turned(turned)
     return out

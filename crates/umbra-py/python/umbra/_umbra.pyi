@@ -17,6 +17,7 @@ __all__ = [
     "simplify",
     "smooth",
     "union_all",
+    "difference_all",
     "write_mesh",
     "write_polygons",
     "_panic_for_tests",
@@ -87,6 +88,13 @@ def boolean(
 def smooth(mesh: Mesh, tolerance: float | None = None) -> Mesh: ...
 def union_all(
     meshes: Iterable[Mesh], *, triangulate: bool = False, keep_orientation: bool = False
+) -> Tuple[Mesh, List[Tuple[str, float]]]: ...
+def difference_all(
+    a: Mesh,
+    others: Iterable[Mesh],
+    *,
+    triangulate: bool = False,
+    keep_orientation: bool = False,
 ) -> Tuple[Mesh, List[Tuple[str, float]]]: ...
 def csg(
     tree: dict[str, Any], *, triangulate: bool = False, smooth: float | None = None
