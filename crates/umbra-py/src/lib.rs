@@ -167,6 +167,7 @@ fn _umbra(m: &Bound<'_, PyModule>) -> PyResult<()> {
     m.add_function(wrap_pyfunction!(ops::smooth, m)?)?;
     m.add_function(wrap_pyfunction!(ops::csg, m)?)?;
     m.add_function(wrap_pyfunction!(planar::boolean_2d, m)?)?;
+    m.add_function(wrap_pyfunction!(planar::boolean_2d_all, m)?)?;
     m.add_function(wrap_pyfunction!(planar::simplify, m)?)?;
     m.add_function(wrap_pyfunction!(files::read, m)?)?;
     m.add_function(wrap_pyfunction!(files::write_mesh, m)?)?;

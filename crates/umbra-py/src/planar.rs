@@ -10,9 +10,10 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name, from_geo,
-    layout_polygons, regularized_operand, simplify as simplify_set, smooth_polygon_set, FillRule,
-    PolygonSet2, Polygons, RingOrientation, SmoothOptions, UmbraError, Via,
+    boolean, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance,
+    default_set_tolerance, fill_rule_name, from_geo, layout_polygons, regularized_operand,
+    simplify as simplify_set, smooth_polygon_set, FillRule, PolygonSet2, Polygons, RingOrientation,
+    SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -182,18 +183,67 @@ pub fn boolean_2d<'py>(
                     source,
                 }),
         }?;
-        if tolerance == 0.0 {
-            return Ok(raw);
+        smoothed_set(raw, tolerance)
+    })?;
+    output(py, shape, keep_orientation && !layout_by_role)
+}
+
+/// `raw` smoothed at `tolerance` (Appendix A), itself at 0.
+fn smoothed_set(raw: PolygonSet2, tolerance: f64) -> Result<PolygonSet2, UmbraError> {
+    if tolerance == 0.0 {
+        return Ok(raw);
+    }
+    let opts = SmoothOptions::new(tolerance);
+    let smooth_error = |source| UmbraError::Smooth {
+        file: String::new(),
+        source,
+    };
+    opts.validate().map_err(smooth_error)?;
+    smooth_polygon_set(&raw, &opts)
+        .map(|s| s.shape)
+        .map_err(smooth_error)
+}
+
+/// The n-ary 2D Boolean of a list of polygon lists in one sweep
+/// (`umbra::boolean_sets`; see the Python docstring), smoothed as
+/// [`boolean_2d`] smooths: by default at 1e-9 times the operands' largest
+/// extent, 0 for the raw output.
+#[pyfunction]
+#[pyo3(signature = (geoms, op, *, keep_orientation = false, smooth = None, layout_by_role = false))]
+pub fn boolean_2d_all<'py>(
+    py: Python<'py>,
+    geoms: &Bound<'py, PyAny>,
+    op: &str,
+    keep_orientation: bool,
+    smooth: Option<f64>,
+    layout_by_role: bool,
+) -> PyResult<Bound<'py, PyAny>> {
+    let op = parse_op(op)?;
+    let mut sets = Vec::new();
+    for (i, geom) in geoms.try_iter()?.enumerate() {
+        sets.push(input_set(
+            py,
+            &geom?,
+            keep_orientation,
+            &format!("geoms[{i}]"),
+        )?);
+    }
+    let tolerance = smooth.unwrap_or_else(|| {
+        if keep_orientation {
+            0.0
+        } else {
+            sets.iter().map(default_set_tolerance).fold(0.0, f64::max)
         }
-        let opts = SmoothOptions::new(tolerance);
-        let smooth_error = |source| UmbraError::Smooth {
-            file: String::new(),
-            source,
-        };
-        opts.validate().map_err(smooth_error)?;
-        smooth_polygon_set(&raw, &opts)
-            .map(|s| s.shape)
-            .map_err(smooth_error)
+    });
+    let shape = run(py, || {
+        let raw =
+            boolean_sets(op, &sets)
+                .map(|o| o.shape)
+                .map_err(|source| UmbraError::Simplify {
+                    file: String::new(),
+                    source,
+                })?;
+        smoothed_set(raw, tolerance)
     })?;
     output(py, shape, keep_orientation && !layout_by_role)
 }

@@ -244,3 +244,64 @@ def test_random_valid_operands_give_valid_results():
                 assert out.symmetric_difference(want).area <= 1e-9 * scale, (a.wkt, b.wkt, op)
                 checked += 1
     assert checked > 200
+
+
+def test_boolean_2d_all_matches_shapely_over_many_operands():
+    # Three to six random valid operands on a small integer grid (shared
+    # vertices, collinear edges, touching rings), every operation in one
+    # sweep against GEOS folding the binary operations: union_all,
+    # intersection_all, the first minus the union of the others, and the
+    # symmetric difference folded left (what an odd number cover).
+    import functools
+    import random
+
+    rng = random.Random(20261129)
+
+    def operand():
+        pts = [(rng.randint(0, 9), rng.randint(0, 9)) for _ in range(rng.randint(3, 8))]
+        g = shapely.make_valid(shapely.Polygon(pts))
+        return shapely.union_all(
+            [p for p in shapely.get_parts(g) if p.geom_type in ("Polygon", "MultiPolygon")]
+        )
+
+    checked = 0
+    for _ in range(25):
+        geoms = [g for g in (operand() for _ in range(rng.randint(3, 6))) if not g.is_empty]
+        if len(geoms) < 3:
+            continue
+        wants = {
+            "union": shapely.union_all(geoms),
+            "intersection": shapely.intersection_all(geoms),
+            "difference": geoms[0].difference(shapely.union_all(geoms[1:])),
+            "xor": functools.reduce(lambda x, y: x.symmetric_difference(y), geoms),
+        }
+        scale = sum(g.area for g in geoms)
+        for op, want in wants.items():
+            out = umbra.boolean_2d_all(geoms, op)
+            assert out.is_valid, ([g.wkt for g in geoms], op, shapely.is_valid_reason(out))
+            assert abs(out.area - want.area) <= 1e-9 * scale, ([g.wkt for g in geoms], op)
+            assert out.symmetric_difference(want).area <= 1e-9 * scale, op
+            checked += 1
+        # Two operands select what the binary Boolean through simplification does.
+        for op in wants:
+            two = umbra.boolean_2d_all(geoms[:2], op)
+            assert two.symmetric_difference(
+                umbra.boolean_2d(geoms[0], geoms[1], op, via="simplify")
+            ).area <= 1e-12 * scale, op
+    assert checked > 60
+    # An iterator, the plain form in and out, and no operands at all.
+    square = [[np.array([[0.0, 0.0], [2.0, 0.0], [2.0, 2.0], [0.0, 2.0]])]]
+    shifted = [[r + 1.0 for r in square[0]]]
+    plain = umbra.boolean_2d_all(iter([square, shifted, square]), "xor")
+    assert isinstance(plain, list)
+    assert math.isclose(sum(abs(_ring_area(r[0])) for r in plain), 4.0)  # the shifted square
+    assert umbra.boolean_2d_all([], "union") == []
+    with pytest.raises(umbra.UmbraError, match=r"unknown operation"):
+        umbra.boolean_2d_all([square, square], "unoin")
+    with pytest.raises(umbra.UmbraError, match=r"geoms\[1\]"):
+        umbra.boolean_2d_all([square, [[np.array([[0.0, 0.0], [np.nan, 1.0], [1.0, 1.0]])]]])
+
+
+def _ring_area(r):
+    x, y = np.asarray(r)[:, 0], np.asarray(r)[:, 1]
+    return 0.5 * float(np.dot(x, np.roll(y, -1)) - np.dot(y, np.roll(x, -1)))

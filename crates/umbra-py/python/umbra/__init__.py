@@ -9,8 +9,9 @@ that satisfies them too, whatever floating-point rounding does.
 ``csg`` (the JSON tree form of ``umbra csg`` as a dict), ``Mesh.from_trimesh``
 and ``Mesh.to_trimesh``.
 
-2D: ``boolean_2d`` and ``simplify`` on shapely geometries (Polygon,
-MultiPolygon, or a GeometryCollection of those), returned as shapely
+2D: ``boolean_2d``, ``boolean_2d_all`` (any number of operands) and
+``simplify`` on shapely geometries (Polygon, MultiPolygon, or a
+GeometryCollection of those), returned as shapely
 geometries; without shapely, on the plain form: a list of polygons, each a
 list of rings (exterior first, then holes), each ring an (k, 2) float64
 array.
@@ -46,6 +47,7 @@ __all__ = [
     "smooth",
     "union_all",
     "difference_all",
+    "boolean_2d_all",
     "write",
     "__version__",
 ]
@@ -332,6 +334,38 @@ def boolean_2d(
         _polygons_in(b, "b"),
         op,
         via=via,
+        keep_orientation=keep_orientation,
+        smooth=smooth,
+        layout_by_role=to_shapely,
+    )
+    return _to_shapely(out) if to_shapely else out
+
+
+def boolean_2d_all(
+    geoms: Iterable[Any],
+    op: str = "union",
+    *,
+    keep_orientation: bool = False,
+    smooth: Optional[float] = None,
+) -> Any:
+    """The 2D Boolean ``op`` of any number of geometries, in one sweep.
+
+    Union and intersection take every geometry, "difference" is the first
+    minus all the others and "xor" keeps what an odd number of them cover;
+    a point is inside a geometry where its winding number is positive
+    (section 6.1, through simplification: self-intersecting operands are
+    resolved as ``boolean_2d(..., via="simplify")`` resolves them, and for
+    two geometries the selection is the same). Operands are shapely
+    geometries or the plain form; the result is shapely when any operand
+    is. Rings are read by role unless ``keep_orientation``; the result is
+    smoothed as ``boolean_2d`` smooths it (``smooth=0`` for the raw
+    output). No geometries give the empty result.
+    """
+    geoms = list(geoms)
+    to_shapely = any(_is_shapely(g) for g in geoms)
+    out = _umbra.boolean_2d_all(
+        [_polygons_in(g, f"geoms[{i}]") for i, g in enumerate(geoms)],
+        op,
         keep_orientation=keep_orientation,
         smooth=smooth,
         layout_by_role=to_shapely,

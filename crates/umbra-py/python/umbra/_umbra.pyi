@@ -18,6 +18,7 @@ __all__ = [
     "smooth",
     "union_all",
     "difference_all",
+    "boolean_2d_all",
     "write_mesh",
     "write_polygons",
     "_panic_for_tests",
@@ -105,6 +106,14 @@ def boolean_2d(
     op: str,
     *,
     via: Literal["basic", "simplify"] | str = "basic",
+    keep_orientation: bool = False,
+    smooth: float | None = None,
+    layout_by_role: bool = False,
+) -> _Polygons: ...
+def boolean_2d_all(
+    geoms: Iterable[Sequence[Sequence[npt.ArrayLike]]],
+    op: str,
+    *,
     keep_orientation: bool = False,
     smooth: float | None = None,
     layout_by_role: bool = False,
