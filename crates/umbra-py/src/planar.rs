@@ -10,10 +10,9 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance,
-    default_set_tolerance, fill_rule_name, from_geo, layout_polygons, regularized_operand,
-    simplify as simplify_set, smooth_polygon_set, FillRule, PolygonSet2, Polygons, RingOrientation,
-    SmoothOptions, UmbraError, Via,
+    boolean, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name,
+    from_geo, layout_polygons, regularized_operand, simplify as simplify_set, smooth_polygon_set,
+    FillRule, PolygonSet2, Polygons, RingOrientation, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -150,7 +149,7 @@ pub fn boolean_2d<'py>(
     let a = input_set(py, a, keep_orientation, "a")?;
     let b = input_set(py, b, keep_orientation, "b")?;
     let tolerance =
-        smooth.unwrap_or_else(|| default_boolean_set_tolerance(&a, &b, keep_orientation));
+        smooth.unwrap_or_else(|| default_boolean_set_tolerance([&a, &b], keep_orientation));
     let shape = run(py, || {
         let raw = match via {
             Via::Basic => {
@@ -228,13 +227,8 @@ pub fn boolean_2d_all<'py>(
             &format!("geoms[{i}]"),
         )?);
     }
-    let tolerance = smooth.unwrap_or_else(|| {
-        if keep_orientation {
-            0.0
-        } else {
-            sets.iter().map(default_set_tolerance).fold(0.0, f64::max)
-        }
-    });
+    let tolerance =
+        smooth.unwrap_or_else(|| default_boolean_set_tolerance(&sets, keep_orientation));
     let shape = run(py, || {
         let raw =
             boolean_sets(op, &sets)

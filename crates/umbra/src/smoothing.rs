@@ -65,23 +65,24 @@ pub fn default_set_tolerance(set: &PolygonSet2) -> f64 {
     DEFAULT_RELATIVE_TOLERANCE * extent(set.bounding_box())
 }
 
-/// The tolerance at which a 2D Boolean of `a` and `b` is smoothed unless
-/// the caller names one (`umbra boolean`, Python's `boolean_2d`): the
-/// larger [`default_set_tolerance`] of the two, which removes the
-/// zero-width features the basic Boolean leaves where operands share
-/// boundary (rings GEOS calls invalid); 0 (the raw result) when the ring
-/// orientation is kept, since the winding numbers are then the result and
-/// smoothing, made for regions of winding number 0 and 1, does not keep
-/// them.
-pub fn default_boolean_set_tolerance(
-    a: &PolygonSet2,
-    b: &PolygonSet2,
+/// The tolerance at which a 2D Boolean of `sets` (two, or any number) is
+/// smoothed unless the caller names one (`umbra boolean`, Python's
+/// `boolean_2d` and `boolean_2d_all`): the largest
+/// [`default_set_tolerance`] of them, which removes the zero-width
+/// features the basic Boolean leaves where operands share boundary (rings
+/// GEOS calls invalid); 0 (the raw result) when the ring orientation is
+/// kept, since the winding numbers are then the result and smoothing, made
+/// for regions of winding number 0 and 1, does not keep them.
+pub fn default_boolean_set_tolerance<'a>(
+    sets: impl IntoIterator<Item = &'a PolygonSet2>,
     keep_orientation: bool,
 ) -> f64 {
     if keep_orientation {
         0.0
     } else {
-        default_set_tolerance(a).max(default_set_tolerance(b))
+        sets.into_iter()
+            .map(default_set_tolerance)
+            .fold(0.0, f64::max)
     }
 }
 

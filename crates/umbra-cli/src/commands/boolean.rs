@@ -20,7 +20,7 @@ use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     boolean, boolean_sets, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
-    default_mesh_tolerance, default_set_tolerance, encode_mesh_with, encode_polygon_set,
+    default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
     read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near, turned_outward,
     Boolean2Report, Boolean3Report, BooleanOp, Contacts, CsgNode, FileKind, MeshCounts,
     MeshReadOptions, MeshVariant, Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions,
@@ -195,26 +195,24 @@ impl BooleanArgs {
             sets.push(super::read_set(path, options)?);
         }
         let files: Vec<&Path> = self.operands.iter().map(PathBuf::as_path).collect();
-        let (Some(a), Some(b), &[a_path, b_path, ..]) = (sets.first(), sets.get(1), &files[..])
+        let mut counts: Vec<SetCounts> = files
+            .iter()
+            .zip(&sets)
+            .map(|(path, set)| SetCounts::of_set(path.display().to_string(), set))
+            .collect();
+        let more_inputs = counts.split_off(2.min(counts.len()));
+        // Two operands at least (clap requires them).
+        let ([a, b, ..], [a_path, b_path, ..], Ok([a_counts, b_counts])) =
+            (&sets[..], &files[..], <[SetCounts; 2]>::try_from(counts))
         else {
             return Err(usage("a Boolean takes at least two operands"));
         };
-        let mut counts = self
-            .operands
-            .iter()
-            .zip(&sets)
-            .map(|(path, set)| SetCounts::of_set(path.display().to_string(), set));
-        let inputs = match (counts.next(), counts.next()) {
-            (Some(a), Some(b)) => Operands { a, b },
-            _ => return Err(usage("a Boolean takes at least two operands")),
+        let inputs = Operands {
+            a: a_counts,
+            b: b_counts,
         };
-        let more_inputs: Vec<SetCounts> = counts.collect();
         let out_file = out_path.display().to_string();
-        let tolerance = if keep {
-            0.0
-        } else {
-            sets.iter().map(default_set_tolerance).fold(0.0, f64::max)
-        };
+        let tolerance = default_boolean_set_tolerance(&sets, keep);
         let start = Instant::now();
         let (encoded, report) = match via {
             Via::Basic => {

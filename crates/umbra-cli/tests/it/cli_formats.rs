@@ -7,33 +7,17 @@
 
 use crate::common::{examples, json, stderr, temp_dir, umbra};
 use std::path::{Path, PathBuf};
-
-/// The six faces of a box whose corner `i` takes the upper bound on axis
-/// `a` when bit `a` of `i` is set, each facing outwards.
-const BOX_QUADS: [[usize; 4]; 6] = [
-    [0, 2, 3, 1],
-    [4, 5, 7, 6],
-    [0, 1, 5, 4],
-    [2, 6, 7, 3],
-    [0, 4, 6, 2],
-    [1, 3, 7, 5],
-];
+use test_support::shapes::{box_corners, CUBE_FACES};
 
 /// An ASCII STL of the axis-aligned box `[lo, hi]`, outward triangles.
 pub(crate) fn box_stl(lo: [f64; 3], hi: [f64; 3]) -> String {
-    let p = |i: usize| {
-        [
-            if i & 1 == 0 { lo[0] } else { hi[0] },
-            if i & 2 == 0 { lo[1] } else { hi[1] },
-            if i & 4 == 0 { lo[2] } else { hi[2] },
-        ]
-    };
+    let corners = box_corners(lo, hi);
     let mut s = String::from("solid box\n");
-    for q in BOX_QUADS {
+    for q in CUBE_FACES {
         for t in [[q[0], q[1], q[2]], [q[0], q[2], q[3]]] {
             s.push_str("facet normal 0 0 0\nouter loop\n");
             for v in t {
-                let c = p(v);
+                let c = corners[v as usize];
                 s.push_str(&format!("vertex {} {} {}\n", c[0], c[1], c[2]));
             }
             s.push_str("endloop\nendfacet\n");
@@ -593,8 +577,9 @@ fn ascii_stl_binary_stl_and_obj_of_one_mesh_check_alike() {
     let dir = temp_dir("weld");
     let (lo, hi) = ([-0.5f32, 0.0, -2.0], [0.25f32, 1.5, 0.0]);
     let corner = |i: usize| [0, 1, 2].map(|a| if i >> a & 1 == 0 { lo[a] } else { hi[a] });
-    let tris: Vec<[usize; 3]> = BOX_QUADS
+    let tris: Vec<[usize; 3]> = CUBE_FACES
         .iter()
+        .map(|q| q.map(|v| v as usize))
         .flat_map(|q| [[q[0], q[1], q[2]], [q[0], q[2], q[3]]])
         .collect();
     // ASCII: zero written `-0.000000e+00` in odd triangles.
