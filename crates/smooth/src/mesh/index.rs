@@ -175,6 +175,57 @@ fn build(boxes: &mut [(IdBox, u32)], base: usize, level: u32) -> Vec<Node> {
     nodes
 }
 
+/// The 21 low bits of `q` moved to every third bit (bit `i` to `3 i`).
+fn spread_bits(q: u64) -> u64 {
+    let mut x = q & 0x1f_ffff;
+    x = (x | (x << 32)) & 0x001f_0000_0000_ffff;
+    x = (x | (x << 16)) & 0x001f_0000_ff00_00ff;
+    x = (x | (x << 8)) & 0x100f_00f0_0f00_f00f;
+    x = (x | (x << 4)) & 0x10c3_0c30_c30c_30c3;
+    x = (x | (x << 2)) & 0x1249_2492_4924_9249;
+    x
+}
+
+/// Appends the subtree over `boxes` (already in leaf order, the boxes
+/// `base..base + len`) to `nodes` in pre-order, halving the run at every
+/// level; returns its root's index.
+fn build_halving(boxes: &[IdBox], base: usize, nodes: &mut Vec<Node>) -> u32 {
+    let me = nodes.len() as u32;
+    nodes.push(Node {
+        lo: [f64::INFINITY; 3],
+        hi: [f64::NEG_INFINITY; 3],
+        first: base as u32,
+        second: 0,
+        count: boxes.len() as u32,
+    });
+    let (lo, hi) = if boxes.len() <= LEAF {
+        let (mut lo, mut hi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for b in boxes {
+            for k in 0..3 {
+                lo[k] = lo[k].min(b.lo[k]);
+                hi[k] = hi[k].max(b.hi[k]);
+            }
+        }
+        (lo, hi)
+    } else {
+        let mid = boxes.len() / 2;
+        let first = build_halving(&boxes[..mid], base, nodes);
+        let second = build_halving(&boxes[mid..], base + mid, nodes);
+        let (a, b) = (&nodes[first as usize], &nodes[second as usize]);
+        let lo = std::array::from_fn(|k| a.lo[k].min(b.lo[k]));
+        let hi = std::array::from_fn(|k| a.hi[k].max(b.hi[k]));
+        let node = &mut nodes[me as usize];
+        node.first = first;
+        node.second = second;
+        node.count = 0;
+        (lo, hi)
+    };
+    let node = &mut nodes[me as usize];
+    node.lo = lo;
+    node.hi = hi;
+    me
+}
+
 impl BoxIndex {
     pub fn new(boxes: Vec<IdBox>) -> BoxIndex {
         // Each box with its input position (the tie-break of the median
@@ -193,6 +244,59 @@ impl BoxIndex {
             boxes: items.into_iter().map(|(b, _)| b).collect(),
             nodes,
         }
+    }
+
+    /// The index of `boxes` built by Morton order instead of median
+    /// splits: the box centres quantised to 21 bits per axis over their
+    /// bounding box, the boxes sorted by the interleaved code (tie-broken
+    /// by input position), then the sorted run halved recursively, each
+    /// node's box the union of its children's. `O(n log n)` for the sort
+    /// and `O(n)` for the tree, several times cheaper to build than
+    /// [`BoxIndex::new`] (whose median selections pass over every box at
+    /// every level) and about as good to query where the boxes are small
+    /// against their spread and about as numerous everywhere: the
+    /// vertices and short edges of a map or a mesh's outline, which 2D
+    /// smoothing indexes several times per pass. Queries answer the same
+    /// ids either way; only the order of the answers differs.
+    pub fn by_morton_order(boxes: Vec<IdBox>) -> BoxIndex {
+        const BITS: u32 = 21;
+        let (mut clo, mut chi) = ([f64::INFINITY; 3], [f64::NEG_INFINITY; 3]);
+        for b in &boxes {
+            for k in 0..3 {
+                let c = 0.5 * b.lo[k] + 0.5 * b.hi[k];
+                clo[k] = clo[k].min(c);
+                chi[k] = chi[k].max(c);
+            }
+        }
+        let scale: [f64; 3] = std::array::from_fn(|k| {
+            let ext = chi[k] - clo[k];
+            let s = f64::from((1u32 << BITS) - 1) / ext;
+            if s.is_finite() && s > 0.0 {
+                s
+            } else {
+                0.0
+            }
+        });
+        let code = |b: &IdBox| -> u64 {
+            (0..3).fold(0u64, |acc, k| {
+                let c = 0.5 * b.lo[k] + 0.5 * b.hi[k];
+                // Saturating: a NaN or out-of-range product lands on an end.
+                let q = (((c - clo[k]) * scale[k]) as u64).min((1 << BITS) - 1);
+                acc | (spread_bits(q) << k)
+            })
+        };
+        let mut keyed: Vec<(u64, u32, IdBox)> = boxes
+            .iter()
+            .enumerate()
+            .map(|(i, b)| (code(b), i as u32, *b))
+            .collect();
+        keyed.par_sort_unstable_by_key(|&(c, i, _)| (c, i));
+        let boxes: Vec<IdBox> = keyed.into_iter().map(|(_, _, b)| b).collect();
+        let mut nodes = Vec::with_capacity(boxes.len() / 2 + 1);
+        if !boxes.is_empty() {
+            build_halving(&boxes, 0, &mut nodes);
+        }
+        BoxIndex { boxes, nodes }
     }
 
     /// Calls `f` with the id of every box meeting `[lo, hi]` (closed), in
@@ -579,17 +683,27 @@ mod tests {
                     (lo, hi)
                 })
                 .collect();
-            let index = BoxIndex::new(
-                boxes
-                    .iter()
-                    .enumerate()
-                    .map(|(i, &(lo, hi))| IdBox {
-                        lo,
-                        hi,
-                        id: i as u32,
-                    })
-                    .collect(),
-            );
+            let id_boxes: Vec<IdBox> = boxes
+                .iter()
+                .enumerate()
+                .map(|(i, &(lo, hi))| IdBox {
+                    lo,
+                    hi,
+                    id: i as u32,
+                })
+                .collect();
+            for index in [
+                BoxIndex::new(id_boxes.clone()),
+                BoxIndex::by_morton_order(id_boxes),
+            ] {
+                check_against_all_pairs(&index, &boxes, &mut rng);
+            }
+        }
+    }
+
+    fn check_against_all_pairs(index: &BoxIndex, boxes: &[(Point3, Point3)], rng: &mut SplitMix64) {
+        let n = boxes.len();
+        {
             let mut want = Vec::new();
             for i in 0..n {
                 for j in i + 1..n {

@@ -23,7 +23,7 @@ mod cancel;
 mod crack;
 mod geom;
 mod guard;
-mod index;
+pub(crate) mod index;
 mod plane;
 mod region;
 mod sanity;

@@ -134,20 +134,23 @@ pub fn sanity_check_polygon_set(set: &PolygonSet2, tolerance: f64) -> Result<(),
     for (i, e) in edges.iter().enumerate() {
         let (pa, pb) = (pts[e.a as usize], pts[e.b as usize]);
         let (lo, hi) = segment_box(pa, pb, tolerance);
-        for v in index.in_box(lo, hi) {
-            if v == e.a || v == e.b {
-                continue;
+        // The least such vertex, whatever order the index gives them in.
+        let mut near: Option<u32> = None;
+        index.visit(lo, hi, |v| {
+            if v != e.a && v != e.b && cracks_at(pts[v as usize], pa, pb, tol2) {
+                near = Some(near.map_or(v, |u| u.min(v)));
             }
-            if cracks_at(pts[v as usize], pa, pb, tol2) {
-                return Err(PlanarDefect::VertexNearEdge { vertex: v, edge: i });
-            }
+        });
+        if let Some(v) = near {
+            return Err(PlanarDefect::VertexNearEdge { vertex: v, edge: i });
         }
     }
-    for (i, j) in edge_pairs(pts, &edges, 0.0) {
+    let crossing = edge_pairs(pts, &edges, 0.0, |i, j| {
         let (e, f) = (edges[i], edges[j]);
-        if edges_conflict([e.a, e.b], [f.a, f.b], pts) {
-            return Err(PlanarDefect::Crossing { a: i, b: j });
-        }
+        edges_conflict([e.a, e.b], [f.a, f.b], pts)
+    });
+    if let Some(&(a, b)) = crossing.first() {
+        return Err(PlanarDefect::Crossing { a, b });
     }
     let cells = simplify_2d::cell_structure(set).map_err(|e| match e {
         simplify_2d::SimplifyError::InvalidInput { source, .. } => PlanarDefect::Topology(source),

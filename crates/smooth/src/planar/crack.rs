@@ -19,6 +19,8 @@ use super::budget::Budget;
 use super::geom::{cracks_at, crossing_point, point_segment_dist2, properly_cross};
 use super::work::{VertexRecord, WEdge, Work};
 use crate::{merge_vertices, SmoothCounts, SmoothError};
+use rayon::prelude::*;
+use robust_arith::Point2;
 
 /// Cracks every pair of properly crossing edges at their crossing point
 /// (snapped to a vertex within `tol`). Returns whether it computed any
@@ -33,16 +35,15 @@ pub fn crack_between_edges(
     let mut new_pts = Vec::new();
     let mut new_k = Vec::new();
     let mut cracks: Vec<Vec<u32>> = vec![Vec::new(); w.edges.len()];
-    for (i, j) in edge_pairs(&w.pts, &w.edges, 0.0) {
+    let p = |v: u32| w.pts[v as usize];
+    let crossing = edge_pairs(&w.pts, &w.edges, 0.0, |i, j| {
         let (e, f) = (w.edges[i], w.edges[j]);
-        if e.a == f.a || e.a == f.b || e.b == f.a || e.b == f.b {
-            continue;
-        }
-        let p = |v: u32| w.pts[v as usize];
+        let distinct = e.a != f.a && e.a != f.b && e.b != f.a && e.b != f.b;
+        distinct && properly_cross(p(e.a), p(e.b), p(f.a), p(f.b))
+    });
+    for (i, j) in crossing {
+        let (e, f) = (w.edges[i], w.edges[j]);
         let (a, b, c, d) = (p(e.a), p(e.b), p(f.a), p(f.b));
-        if !properly_cross(a, b, c, d) {
-            continue;
-        }
         if !budget.spend(1) {
             break;
         }
@@ -119,46 +120,83 @@ pub fn crack_between_edges(
 }
 
 /// Cracks edges at the vertices near their interiors until none
-/// qualifies (or the budget is spent).
-pub fn crack_by_vertices(w: &mut Work, tol: f64, counts: &mut SmoothCounts, budget: &mut Budget) {
-    let index = VertexIndex::new(&w.pts);
+/// qualifies (or the budget is spent). `index` is an index of `w.pts` or
+/// `None`, then built here (the vertex set is fixed: it stays valid).
+pub fn crack_by_vertices(
+    w: &mut Work,
+    tol: f64,
+    counts: &mut SmoothCounts,
+    budget: &mut Budget,
+    index: &mut Option<VertexIndex>,
+) {
+    let index = &*index.get_or_insert_with(|| VertexIndex::new(&w.pts));
+    debug_assert_eq!(index.len(), w.pts.len());
     let tol2 = tol * tol;
-    let mut stack: Vec<WEdge> = w.edges.iter().rev().copied().collect();
+    let pts = &w.pts;
+    // The vertex that cracks an edge depends on the edge and the fixed
+    // vertex set alone, so it is found for every edge of the input in
+    // parallel; the halves of split edges are looked up as they come.
+    let first: Vec<Option<u32>> = w
+        .edges
+        .par_iter()
+        .map(|&e| cracking_vertex(index, pts, e, tol, tol2))
+        .collect();
+    let mut stack: Vec<(WEdge, Option<Option<u32>>)> = w
+        .edges
+        .iter()
+        .zip(first)
+        .rev()
+        .map(|(&e, v)| (e, Some(v)))
+        .collect();
     let mut out = Vec::with_capacity(w.edges.len());
-    while let Some(e) = stack.pop() {
+    while let Some((e, known)) = stack.pop() {
         if budget.exhausted() {
             out.push(e);
             continue;
         }
-        let (pa, pb) = (w.pts[e.a as usize], w.pts[e.b as usize]);
-        let (lo, hi) = segment_box(pa, pb, tol);
-        let mut best: Option<(f64, u32)> = None;
-        for v in index.in_box(lo, hi) {
-            if v == e.a || v == e.b {
-                continue;
-            }
-            let pv = w.pts[v as usize];
-            if cracks_at(pv, pa, pb, tol2) {
-                let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
-                let d2 = if d2.is_nan() { 0.0 } else { d2 };
-                if best.is_none_or(|(bd, bv)| (d2, v) < (bd, bv)) {
-                    best = Some((d2, v));
-                }
-            }
-        }
+        let best = known.unwrap_or_else(|| cracking_vertex(index, &w.pts, e, tol, tol2));
         match best {
-            Some((_, v)) if budget.spend(1) => {
+            Some(v) if budget.spend(1) => {
                 counts.edges_cracked_by_vertex += 1;
                 let ke = w.rec[e.a as usize].k.max(w.rec[e.b as usize].k);
                 let kv = &mut w.rec[v as usize].k;
                 *kv = (*kv).max(ke.saturating_add(1));
                 // `e` is `a -> b` counted `m` (signed): so are its halves.
-                stack.push(WEdge::directed(v, e.b, e.m));
-                stack.push(WEdge::directed(e.a, v, e.m));
+                stack.push((WEdge::directed(v, e.b, e.m), None));
+                stack.push((WEdge::directed(e.a, v, e.m), None));
             }
             _ => out.push(e),
         }
     }
     w.edges = out;
     w.normalize(counts);
+}
+
+/// The vertex at which edge `e` is cracked: of the vertices (not its ends)
+/// that crack it by Appendix A's rule, the least by (squared distance to
+/// the edge, id), the same whatever order the index gives them in.
+fn cracking_vertex(
+    index: &VertexIndex,
+    pts: &[Point2],
+    e: WEdge,
+    tol: f64,
+    tol2: f64,
+) -> Option<u32> {
+    let (pa, pb) = (pts[e.a as usize], pts[e.b as usize]);
+    let (lo, hi) = segment_box(pa, pb, tol);
+    let mut best: Option<(f64, u32)> = None;
+    index.visit(lo, hi, |v| {
+        if v == e.a || v == e.b {
+            return;
+        }
+        let pv = pts[v as usize];
+        if cracks_at(pv, pa, pb, tol2) {
+            let (d2, _) = point_segment_dist2(&pv, &pa, &pb);
+            let d2 = if d2.is_nan() { 0.0 } else { d2 };
+            if best.is_none_or(|(bd, bv)| (d2, v) < (bd, bv)) {
+                best = Some((d2, v));
+            }
+        }
+    });
+    best.map(|(_, v)| v)
 }

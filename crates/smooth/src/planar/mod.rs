@@ -130,16 +130,21 @@ fn smooth_in_range(
         passes += 1;
         merge::merge_phase(&mut w, tol, &mut counts, &mut budget);
         debug_check(&w, "vertex merging")?;
-        straighten::straighten(&mut w, tol, &mut counts);
+        // One index of the vertex positions serves every phase until
+        // cracking between edges or the removal of unreferenced vertices
+        // changes them.
+        let mut index = None;
+        straighten::straighten(&mut w, tol, &mut counts, &mut index);
         debug_check(&w, "straight-through vertex removal")?;
         let alpha = intersection_error_bound(max_abs(&w));
         if crack::crack_between_edges(&mut w, tol, &mut counts, &mut budget)? {
             crossing_error += alpha;
+            index = None;
         }
         debug_check(&w, "edge cracking between edges")?;
-        crack::crack_by_vertices(&mut w, tol, &mut counts, &mut budget);
+        crack::crack_by_vertices(&mut w, tol, &mut counts, &mut budget, &mut index);
         debug_check(&w, "edge cracking by vertex")?;
-        straighten::straighten(&mut w, tol, &mut counts);
+        straighten::straighten(&mut w, tol, &mut counts, &mut index);
         debug_check(&w, "straight-through vertex removal")?;
         w.remove_unreferenced(&mut counts);
         match resolve::resolve(&mut w, &mut counts)? {

@@ -24,27 +24,27 @@ use crate::SmoothCounts;
 
 /// Removes the straight-through vertices (repeatedly along collinear
 /// chains) whose joined edge no other vertex cracks at tolerance `tol`,
-/// then normalises. Returns how many were removed.
-pub fn straighten(w: &mut Work, tol: f64, counts: &mut SmoothCounts) -> u64 {
+/// then normalises. Returns how many were removed. `index` is an index
+/// of `w.pts` or `None`, then built at the first candidate (the points do
+/// not move here, so the caller may keep it for later phases).
+pub fn straighten(
+    w: &mut Work,
+    tol: f64,
+    counts: &mut SmoothCounts,
+    index: &mut Option<VertexIndex>,
+) -> u64 {
     let n = w.pts.len();
     let tol2 = tol * tol;
-    // Built at the first candidate: the points do not move here.
-    let mut index: Option<VertexIndex> = None;
     let mut edges: Vec<Option<WEdge>> = w.edges.iter().copied().map(Some).collect();
-    let mut adj: Vec<Vec<usize>> = vec![Vec::new(); n];
-    for (i, e) in w.edges.iter().enumerate() {
-        adj[e.a as usize].push(i);
-        adj[e.b as usize].push(i);
-    }
+    let mut adj = Incidence::new(n, &w.edges);
     let mut stack: Vec<u32> = (0..n as u32).rev().collect();
     let mut removed = 0;
     while let Some(v) = stack.pop() {
         let vi = v as usize;
-        adj[vi].retain(|&i| edges[i].is_some());
-        let [i1, i2] = adj[vi][..] else {
+        let Some([i1, i2]) = adj.pair(vi) else {
             continue;
         };
-        let (Some(e1), Some(e2)) = (edges[i1], edges[i2]) else {
+        let (Some(e1), Some(e2)) = (edges[i1 as usize], edges[i2 as usize]) else {
             continue;
         };
         // The flow into `v` along each edge (`a -> b` counted `m`).
@@ -64,24 +64,25 @@ pub fn straighten(w: &mut Work, tol: f64, counts: &mut SmoothCounts) -> u64 {
             continue;
         }
         let index = index.get_or_insert_with(|| VertexIndex::new(&w.pts));
+        debug_assert_eq!(index.len(), w.pts.len());
         let (lo, hi) = segment_box(pa, pb, tol);
-        let cracked = index.in_box(lo, hi).into_iter().any(|u| {
-            u != v
-                && u != from
-                && u != to
-                && adj[u as usize].iter().any(|&i| edges[i].is_some())
-                && cracks_at(w.pts[u as usize], pa, pb, tol2)
+        let mut cracked = false;
+        index.visit(lo, hi, |u| {
+            cracked = cracked
+                || (u != v
+                    && u != from
+                    && u != to
+                    && adj.has_edges(u as usize)
+                    && cracks_at(w.pts[u as usize], pa, pb, tol2));
         });
         if cracked {
             continue;
         }
-        edges[i1] = None;
-        edges[i2] = None;
-        adj[vi].clear();
-        let idx = edges.len();
+        edges[i1 as usize] = None;
+        edges[i2 as usize] = None;
+        let idx = edges.len() as u32;
         edges.push(Some(WEdge::directed(from, to, m)));
-        adj[from as usize].push(idx);
-        adj[to as usize].push(idx);
+        adj.join(vi, [(from, i1, i2), (to, i1, i2)], idx);
         stack.push(from);
         stack.push(to);
         removed += 1;
@@ -91,6 +92,63 @@ pub fn straighten(w: &mut Work, tol: f64, counts: &mut SmoothCounts) -> u64 {
         w.normalize(counts);
     }
     removed
+}
+
+/// The live edges at each vertex, as far as this phase needs them: how
+/// many (counted up to three) and, for a vertex with at most two, which.
+/// A removal takes both edges of its vertex and gives each of the two
+/// neighbours the joined edge in place of the one it loses, so no other
+/// vertex's count ever drops: a vertex with three edges or more is never
+/// a candidate, and its edges need not be known.
+struct Incidence {
+    count: Vec<u8>,
+    slots: Vec<[u32; 2]>,
+}
+
+impl Incidence {
+    fn new(n: usize, edges: &[WEdge]) -> Incidence {
+        let mut inc = Incidence {
+            count: vec![0; n],
+            slots: vec![[u32::MAX; 2]; n],
+        };
+        for (i, e) in edges.iter().enumerate() {
+            for v in [e.a as usize, e.b as usize] {
+                let c = &mut inc.count[v];
+                if let Some(slot) = inc.slots[v].get_mut(usize::from(*c)) {
+                    *slot = i as u32;
+                }
+                *c = (*c + 1).min(3);
+            }
+        }
+        inc
+    }
+
+    /// The two edges of a vertex that has exactly two.
+    fn pair(&self, v: usize) -> Option<[u32; 2]> {
+        (self.count[v] == 2).then_some(self.slots[v])
+    }
+
+    /// Whether a vertex has an edge left.
+    fn has_edges(&self, v: usize) -> bool {
+        self.count[v] > 0
+    }
+
+    /// Vertex `v` removed, its edges `i1` and `i2` joined into edge `idx`
+    /// between its two neighbours `ends`, each listed with `v`'s edges.
+    fn join(&mut self, v: usize, ends: [(u32, u32, u32); 2], idx: u32) {
+        self.count[v] = 0;
+        for (u, i1, i2) in ends {
+            let u = u as usize;
+            if self.count[u] <= 2 {
+                for s in &mut self.slots[u] {
+                    if *s == i1 || *s == i2 {
+                        *s = idx;
+                        break;
+                    }
+                }
+            }
+        }
+    }
 }
 
 #[cfg(test)]
@@ -112,7 +170,7 @@ mod tests {
         let mut w = Work::from_set(&s);
         let mut c = SmoothCounts::default();
         w.normalize(&mut c);
-        assert_eq!(straighten(&mut w, 0.1, &mut c), 2);
+        assert_eq!(straighten(&mut w, 0.1, &mut c, &mut None), 2);
         assert_eq!(w.edges.len(), 4);
         w.remove_unreferenced(&mut c);
         assert_eq!(w.to_set().signed_area(), 3.0);
@@ -122,7 +180,7 @@ mod tests {
         s.add_loop(&[[0.0, 0.0], [1.0, f64::from_bits(1)], [2.0, 0.0], [2.0, 1.0]]);
         let mut w = Work::from_set(&s);
         w.normalize(&mut c);
-        assert_eq!(straighten(&mut w, 0.1, &mut c), 0);
+        assert_eq!(straighten(&mut w, 0.1, &mut c, &mut None), 0);
     }
 
     #[test]
@@ -138,7 +196,11 @@ mod tests {
         for (tol, removed) in [(0.5, 0), (0.49, 1)] {
             let mut w = Work::from_set(&s);
             w.normalize(&mut c);
-            assert_eq!(straighten(&mut w, tol, &mut c), removed, "tolerance {tol}");
+            assert_eq!(
+                straighten(&mut w, tol, &mut c, &mut None),
+                removed,
+                "tolerance {tol}"
+            );
         }
     }
 }

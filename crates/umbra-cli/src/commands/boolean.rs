@@ -211,7 +211,6 @@ impl BooleanArgs {
             a: a_counts,
             b: b_counts,
         };
-        let out_file = out_path.display().to_string();
         let tolerance = default_boolean_set_tolerance(&sets, keep);
         let start = Instant::now();
         let (encoded, report) = match via {
@@ -234,18 +233,12 @@ impl BooleanArgs {
                 let result = boolean(a, b, op);
                 let total = millis_since(start);
                 let out = result.map_err(|e| errors::boolean2(e, [a_path, b_path]))?;
-                let encoded =
-                    encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
-                let mut report = Boolean2Report::basic(
-                    op,
-                    keep,
-                    inputs,
-                    encoded.counts(&out_file),
-                    &out,
-                    total,
-                );
-                report.epsilon += moved;
-                self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
+                let report = |output| {
+                    let mut report = Boolean2Report::basic(op, keep, inputs, output, &out, total);
+                    report.epsilon += moved;
+                    report
+                };
+                self.finish_2d(&out.shape, report, out_kind, tolerance)?
             }
             Via::Simplify => {
                 // Two operands keep the binary sweep's fixed-size winding
@@ -257,18 +250,11 @@ impl BooleanArgs {
                 };
                 let total = millis_since(start);
                 let out = result.map_err(|e| errors::simplify(e, &files))?;
-                let encoded =
-                    encode_polygon_set(out_kind, &out.shape, orientation(keep), &out_file)?;
-                let report = Boolean2Report::via_simplify(
-                    op,
-                    keep,
-                    inputs,
-                    encoded.counts(&out_file),
-                    &out,
-                    total,
-                )
-                .with_more_inputs(more_inputs);
-                self.smooth_2d(out.shape, (encoded, report), out_kind, tolerance)?
+                let report = |output| {
+                    Boolean2Report::via_simplify(op, keep, inputs, output, &out, total)
+                        .with_more_inputs(more_inputs)
+                };
+                self.finish_2d(&out.shape, report, out_kind, tolerance)?
             }
         };
         self.out.write(&encoded.bytes, &report)?;
@@ -391,37 +377,37 @@ impl BooleanArgs {
         Ok(ExitCode::SUCCESS)
     }
 
-    /// Smooths a 2D result at `--smooth T`, by default at
+    /// Finishes a 2D result: smoothed at `--smooth T`, by default at
     /// [`umbra::DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of
-    /// either operand (`tolerance`): the smoothed set encoded and the
-    /// report updated; unchanged at a tolerance of 0.
-    fn smooth_2d(
+    /// either operand (`tolerance`), as it is at a tolerance of 0; then
+    /// encoded once, and reported by `report` given the counts of what is
+    /// written.
+    fn finish_2d(
         &self,
-        shape: PolygonSet2,
-        (encoded, report): (umbra::EncodedPolygons, Boolean2Report),
+        shape: &PolygonSet2,
+        report: impl FnOnce(SetCounts) -> Boolean2Report,
         out_kind: FileKind,
         tolerance: f64,
     ) -> anyhow::Result<(umbra::EncodedPolygons, Boolean2Report)> {
+        let out_file = self.out.output.display().to_string();
+        let orientation = orientation(self.keep_orientation);
         let tol = self.smooth.unwrap_or(tolerance);
         if tol <= 0.0 {
+            let encoded = encode_polygon_set(out_kind, shape, orientation, &out_file)?;
+            let report = report(encoded.counts(&out_file));
             return Ok((encoded, report));
         }
         let start = Instant::now();
-        let smoothed = smooth_polygon_set(&shape, &SmoothOptions::new(tol)).map_err(|source| {
+        let smoothed = smooth_polygon_set(shape, &SmoothOptions::new(tol)).map_err(|source| {
             UmbraError::Smooth {
                 file: String::new(),
                 source,
             }
         })?;
         let ms = millis_since(start);
-        let out_file = self.out.output.display().to_string();
-        let encoded = encode_polygon_set(
-            out_kind,
-            &smoothed.shape,
-            orientation(self.keep_orientation),
-            &out_file,
-        )?;
-        let report = report.smoothed(encoded.counts(&out_file), &smoothed, ms);
+        let encoded = encode_polygon_set(out_kind, &smoothed.shape, orientation, &out_file)?;
+        let counts = encoded.counts(&out_file);
+        let report = report(counts.clone()).smoothed(counts, &smoothed, ms);
         Ok((encoded, report))
     }
 }

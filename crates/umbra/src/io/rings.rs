@@ -11,6 +11,8 @@
 
 use crate::UmbraError;
 use robust_arith::{validate_coordinate, Point2};
+use rstar::primitives::{GeomWithData, Rectangle};
+use rstar::{RTree, AABB};
 use topology::{ring_signed_area, PolygonSet2, RingIndex, RingSide};
 
 /// How the direction of a ring is decided when reading, and how loops are
@@ -249,11 +251,33 @@ pub fn layout_polygons(
     let mut orphan_holes = 0;
     // Point-location indices of the outer rings, built on first use.
     let mut indices: Vec<Option<RingIndex>> = (0..rings.len()).map(|_| None).collect();
+    // The boxes of the outer rings of positive area, each with its rank in
+    // `outers`: a hole's candidates are found by one query instead of a
+    // pass over every outer ring (thousands of rings on a real map's
+    // Boolean made that pass most of the writing time).
+    let outer_boxes = RTree::bulk_load(
+        outers
+            .iter()
+            .enumerate()
+            .filter(|&(_, &o)| areas[o] > 0.0)
+            .map(|(rank, &o)| {
+                GeomWithData::new(Rectangle::from_corners(boxes[o][0], boxes[o][1]), rank)
+            })
+            .collect(),
+    );
+    let mut candidates: Vec<usize> = Vec::new();
     for h in (0..rings.len()).filter(|&i| areas[i] < 0.0) {
-        let container = outers.iter().copied().find(|&o| {
-            if !(areas[o] > 0.0 && box_contains(&boxes[o], &boxes[h])) {
-                return false;
-            }
+        // The candidates in `outers` order: the first container found is
+        // the smallest one, as a pass over `outers` would find it.
+        candidates.clear();
+        candidates.extend(
+            outer_boxes
+                .locate_in_envelope_intersecting(&AABB::from_corners(boxes[h][0], boxes[h][1]))
+                .map(|g| g.data)
+                .filter(|&rank| box_contains(&boxes[outers[rank]], &boxes[h])),
+        );
+        candidates.sort_unstable();
+        let container = candidates.iter().map(|&rank| outers[rank]).find(|&o| {
             let index = indices[o].get_or_insert_with(|| RingIndex::new(&rings[o]));
             ring_inside(&rings[h], &rings[o], index)
         });
@@ -279,17 +303,22 @@ pub fn layout_polygons(
 /// balances that were zero; it only lets [`PolygonSet2::loops`] split rings
 /// that touch at a vertex and drop back-and-forth spikes.
 fn normalized(set: &PolygonSet2) -> PolygonSet2 {
-    use std::collections::HashMap;
+    // Hashing that needs no protection against chosen keys (the map lives
+    // for this call only): a tenth of the cost of `std`'s on a map's
+    // hundred thousand vertices.
+    use rustc_hash::FxHashMap as HashMap;
     // -0.0 and 0.0 are the same point.
     let key = |p: Point2| (p[0] + 0.0).to_bits() as u128 | (((p[1] + 0.0).to_bits() as u128) << 64);
-    let mut ids: HashMap<u128, u32> = HashMap::with_capacity(set.vertex_count());
+    let mut ids: HashMap<u128, u32> =
+        HashMap::with_capacity_and_hasher(set.vertex_count(), Default::default());
     let mut out = PolygonSet2::new();
     let remap: Vec<u32> = set
         .vertices()
         .iter()
         .map(|&p| *ids.entry(key(p)).or_insert_with(|| out.add_vertex(p)))
         .collect();
-    let mut net: HashMap<(u32, u32), i64> = HashMap::with_capacity(set.edge_count());
+    let mut net: HashMap<(u32, u32), i64> =
+        HashMap::with_capacity_and_hasher(set.edge_count(), Default::default());
     let mut order: Vec<(u32, u32)> = Vec::new();
     for e in set.edges() {
         let (Some(&s), Some(&t)) = (remap.get(e.start as usize), remap.get(e.end as usize)) else {
