@@ -8,8 +8,10 @@
 //! turns on (`smooth_near_guarded`, what it runs), in both variants.
 //! The goal (issue: smoothing adds at most 25% to the Boolean's time at
 //! 1M triangles) is the ratio of `boolean_contacts + smooth_near` minus
-//! `boolean` to `boolean` at the same size; the figures are in `docs/performance.md`. The 2D group smooths the basic
-//! Boolean's union of two 1k-to-100k-gons.
+//! `boolean` to `boolean` at the same size; the figures are in `docs/performance.md`. The 2D groups smooth the basic
+//! Boolean's union of two 1k-to-100k-gons, and its union and symmetric
+//! difference of a real map (Natural Earth's countries) with a rotated
+//! and with a minutely scaled copy of itself.
 //!
 //! ```text
 //! cargo bench -p umbra-benches --bench smooth
@@ -145,5 +147,51 @@ fn polygons(c: &mut Criterion) {
     group.finish();
 }
 
-criterion_group!(benches, spheres, polygons);
+/// A real map: Natural Earth's countries (shipped with `test-support`),
+/// the basic Boolean of the map with a copy of itself (rotated by 0.37
+/// degrees and shifted by about 1% of its width: a few hundred crossings;
+/// scaled by `1 + 1e-7` about the origin: thousands of crossings and
+/// slivers along every border), and smoothing its result at the default
+/// tolerance, as `umbra boolean` runs them.
+fn map(c: &mut Criterion) {
+    let mut group = c.benchmark_group("smooth_map_boolean");
+    let world = umbra::read_polygon_set(
+        &test_support::data_path("naturalearth/countries.geojson"),
+        umbra::ReadOptions::default(),
+    )
+    .unwrap();
+    let moved = |f: &dyn Fn([f64; 2]) -> [f64; 2]| {
+        let (vertices, edges) = world.clone().into_parts();
+        umbra::PolygonSet2::from_parts(vertices.into_iter().map(f).collect(), edges)
+    };
+    let (sin, cos) = (0.37f64.to_radians().sin(), 0.37f64.to_radians().cos());
+    let copies = [
+        (
+            "rotated",
+            moved(&|p| [cos * p[0] - sin * p[1] + 4.3, sin * p[0] + cos * p[1] - 2.5]),
+        ),
+        (
+            "scaled",
+            moved(&|p| [p[0] * (1.0 + 1e-7), p[1] * (1.0 + 1e-7)]),
+        ),
+    ];
+    group.sample_size(10);
+    for (name, copy) in &copies {
+        for op in [BooleanOp::Union, BooleanOp::Xor] {
+            let id = format!("{name}/{}", op.name());
+            let out = boolean_2d::boolean(&world, copy, op).unwrap().shape;
+            let opts =
+                SmoothOptions::new(umbra::default_boolean_set_tolerance([&world, copy], false));
+            group.bench_with_input(BenchmarkId::new("boolean", &id), &(), |bench, _| {
+                bench.iter(|| black_box(boolean_2d::boolean(&world, copy, op).unwrap()));
+            });
+            group.bench_with_input(BenchmarkId::new("smooth", &id), &(), |bench, _| {
+                bench.iter(|| black_box(smooth_polygon_set(&out, &opts).unwrap()));
+            });
+        }
+    }
+    group.finish();
+}
+
+criterion_group!(benches, spheres, polygons, map);
 criterion_main!(benches);

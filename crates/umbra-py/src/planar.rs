@@ -11,8 +11,8 @@ use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
     boolean, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name,
-    from_geo, layout_polygons, regularized_operand, simplify as simplify_set, smooth_polygon_set,
-    FillRule, PolygonSet2, Polygons, RingOrientation, SmoothOptions, UmbraError, Via,
+    from_geo, layout_polygons, regularized_operands, simplify as simplify_set, smooth_polygon_set,
+    FillRule, PolygonSet2, Polygons, RingOrientation, Simplified, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -155,18 +155,17 @@ pub fn boolean_2d<'py>(
             Via::Basic => {
                 // Operands read by role are made sets first, as the
                 // command line does (`regularized_operand`).
-                let regular = |s: &PolygonSet2| {
-                    regularized_operand(s)
-                        .map(|r| r.shape)
-                        .map_err(|source| UmbraError::Simplify {
-                            file: String::new(),
-                            source,
-                        })
+                let regular = |r: Result<Simplified, _>| {
+                    r.map(|r| r.shape).map_err(|source| UmbraError::Simplify {
+                        file: String::new(),
+                        source,
+                    })
                 };
                 let (a, b) = if keep_orientation {
                     (a.clone(), b.clone())
                 } else {
-                    (regular(&a)?, regular(&b)?)
+                    let [ra, rb] = regularized_operands(&a, &b);
+                    (regular(ra)?, regular(rb)?)
                 };
                 boolean(&a, &b, op)
                     .map(|o| o.shape)

@@ -116,7 +116,8 @@ pub use nary::{
 };
 pub use ops::{
     as_triangle_mesh, boolean_solid, boolean_solid_triangles, boolean_solid_with_contacts,
-    regularized_operand, turned_outward, MeshVariant, SolidOutput, TriangleSolidOutput, Via,
+    regularized_operand, regularized_operands, turned_outward, MeshVariant, SolidOutput,
+    TriangleSolidOutput, Via,
 };
 #[cfg(feature = "render")]
 pub use render::*;

@@ -79,6 +79,29 @@ pub fn regularized_operand(
     simplify_2d::simplify(set, simplify_2d::FillRule::Positive)
 }
 
+/// [`regularized_operand`] of both operands of a binary Boolean, side by
+/// side on two threads (each is one sweep, tens of milliseconds on a map
+/// of 100,000 vertices, and a map without crossings sweeps on one
+/// thread). The results are those of two calls, in operand order.
+///
+/// ```
+/// use umbra::{regularized_operand, regularized_operands, PolygonSet2};
+/// let mut a = PolygonSet2::new();
+/// a.add_loop(&[[0.0, 0.0], [2.0, 2.0], [2.0, 0.0], [0.0, 2.0]]); // a bow tie
+/// let mut b = PolygonSet2::new();
+/// b.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// let [ra, rb] = regularized_operands(&a, &b);
+/// assert_eq!(ra.unwrap().shape, regularized_operand(&a).unwrap().shape);
+/// assert_eq!(rb.unwrap().shape, regularized_operand(&b).unwrap().shape);
+/// ```
+pub fn regularized_operands(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+) -> [Result<simplify_2d::Simplified, simplify_2d::SimplifyError>; 2] {
+    let (ra, rb) = rayon::join(|| regularized_operand(a), || regularized_operand(b));
+    [ra, rb]
+}
+
 /// The algorithm of a 2D Boolean.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Hash)]
 pub enum Via {

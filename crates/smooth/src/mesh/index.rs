@@ -285,13 +285,19 @@ impl BoxIndex {
                 acc | (spread_bits(q) << k)
             })
         };
-        let mut keyed: Vec<(u64, u32, IdBox)> = boxes
-            .iter()
+        // The codes with the positions, sorted as one `u128` each (the
+        // position in the low bits breaks ties), then the boxes gathered
+        // once: a sort of 16-byte keys instead of 72-byte records.
+        let mut keyed: Vec<u128> = boxes
+            .par_iter()
             .enumerate()
-            .map(|(i, b)| (code(b), i as u32, *b))
+            .map(|(i, b)| (u128::from(code(b)) << 32) | i as u128)
             .collect();
-        keyed.par_sort_unstable_by_key(|&(c, i, _)| (c, i));
-        let boxes: Vec<IdBox> = keyed.into_iter().map(|(_, _, b)| b).collect();
+        keyed.par_sort_unstable();
+        let boxes: Vec<IdBox> = keyed
+            .par_iter()
+            .map(|&k| boxes[(k & 0xffff_ffff) as usize])
+            .collect();
         let mut nodes = Vec::with_capacity(boxes.len() / 2 + 1);
         if !boxes.is_empty() {
             build_halving(&boxes, 0, &mut nodes);

@@ -21,7 +21,7 @@ use std::time::Instant;
 use umbra::{
     boolean, boolean_sets, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
     default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, regularized_operand, smooth_polygon_set, smooth_solid_near, turned_outward,
+    read_mesh, regularized_operands, smooth_polygon_set, smooth_solid_near, turned_outward,
     Boolean2Report, Boolean3Report, BooleanOp, Contacts, CsgNode, FileKind, MeshCounts,
     MeshReadOptions, MeshVariant, Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions,
     UmbraError, Via,
@@ -223,10 +223,11 @@ impl BooleanArgs {
                 let (a, b, moved) = if keep {
                     (a, b, 0.0)
                 } else {
-                    let set = |s: &PolygonSet2, file: &Path| {
-                        regularized_operand(s).map_err(|e| errors::simplify(e, &[file]))
-                    };
-                    regular = (set(a, a_path)?, set(b, b_path)?);
+                    let [ra, rb] = regularized_operands(a, b);
+                    regular = (
+                        ra.map_err(|e| errors::simplify(e, &[a_path]))?,
+                        rb.map_err(|e| errors::simplify(e, &[b_path]))?,
+                    );
                     let moved = regular.0.epsilon.max(regular.1.epsilon);
                     (&regular.0.shape, &regular.1.shape, moved)
                 };
