@@ -8,7 +8,11 @@
 //! longer than the Boolean the smoothing follows.) Long edges are joined
 //! by pieces ([`near_segment_pairs_where`]) and facets by opposed normal
 //! directions ([`opposed_pairs_where`]), so that long triangles side by
-//! side in a plane, whose boxes overlap in bulk, do not pair up.
+//! side in a plane, whose boxes overlap in bulk, do not pair up. 2D
+//! smoothing (`planar/broad.rs`) uses the same hierarchy with its boxes
+//! lifted to `z = 0`, built in Morton order
+//! ([`BoxIndex::by_morton_order`]: a sort and a linear pass), which suits
+//! the small, evenly spread boxes of a polygon set's vertices and edges.
 
 use rayon::prelude::*;
 use topology::Point3;

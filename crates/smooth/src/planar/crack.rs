@@ -133,13 +133,24 @@ pub fn crack_by_vertices(
     debug_assert_eq!(index.len(), w.pts.len());
     let tol2 = tol * tol;
     let pts = &w.pts;
+    // Only the set's vertices crack: the index also holds the positions
+    // that straight-through removal has just taken out of the edges
+    // (exactly on the joined edge, each would split it again, and the
+    // second removal would join it again). Splits keep this set: they
+    // only give a vertex of the set more edges.
+    let mut live = vec![false; pts.len()];
+    for e in &w.edges {
+        live[e.a as usize] = true;
+        live[e.b as usize] = true;
+    }
+    let live = &live;
     // The vertex that cracks an edge depends on the edge and the fixed
     // vertex set alone, so it is found for every edge of the input in
     // parallel; the halves of split edges are looked up as they come.
     let first: Vec<Option<u32>> = w
         .edges
         .par_iter()
-        .map(|&e| cracking_vertex(index, pts, e, tol, tol2))
+        .map(|&e| cracking_vertex(index, pts, live, e, tol, tol2))
         .collect();
     let mut stack: Vec<(WEdge, Option<Option<u32>>)> = w
         .edges
@@ -154,7 +165,7 @@ pub fn crack_by_vertices(
             out.push(e);
             continue;
         }
-        let best = known.unwrap_or_else(|| cracking_vertex(index, &w.pts, e, tol, tol2));
+        let best = known.unwrap_or_else(|| cracking_vertex(index, &w.pts, live, e, tol, tol2));
         match best {
             Some(v) if budget.spend(1) => {
                 counts.edges_cracked_by_vertex += 1;
@@ -172,12 +183,14 @@ pub fn crack_by_vertices(
     w.normalize(counts);
 }
 
-/// The vertex at which edge `e` is cracked: of the vertices (not its ends)
-/// that crack it by Appendix A's rule, the least by (squared distance to
-/// the edge, id), the same whatever order the index gives them in.
+/// The vertex at which edge `e` is cracked: of the `live` vertices (not
+/// its ends) that crack it by Appendix A's rule, the least by (squared
+/// distance to the edge, id), the same whatever order the index gives them
+/// in.
 fn cracking_vertex(
     index: &VertexIndex,
     pts: &[Point2],
+    live: &[bool],
     e: WEdge,
     tol: f64,
     tol2: f64,
@@ -186,7 +199,7 @@ fn cracking_vertex(
     let (lo, hi) = segment_box(pa, pb, tol);
     let mut best: Option<(f64, u32)> = None;
     index.visit(lo, hi, |v| {
-        if v == e.a || v == e.b {
+        if v == e.a || v == e.b || !live[v as usize] {
             return;
         }
         let pv = pts[v as usize];
@@ -199,4 +212,38 @@ fn cracking_vertex(
         }
     });
     best.map(|(_, v)| v)
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use topology::PolygonSet2;
+
+    /// A position no edge uses any more (as straight-through removal
+    /// leaves one, exactly on the edge it joined) cracks nothing; the same
+    /// position as a vertex of the set cracks the edge.
+    #[test]
+    fn only_vertices_of_the_set_crack() {
+        let mut s = PolygonSet2::new();
+        s.add_loop(&[[0.0, 0.0], [2.0, 0.0], [2.0, 1.0], [0.0, 1.0]]);
+        let mut w = Work::from_set(&s);
+        let mut counts = SmoothCounts::default();
+        w.normalize(&mut counts);
+        // An unreferenced vertex at the middle of the bottom side.
+        w.pts.push([1.0, 0.0]);
+        w.rec.push(VertexRecord { k: 0 });
+        let edges = w.edges.clone();
+        crack_by_vertices(&mut w, 0.1, &mut counts, &mut Budget::new(100), &mut None);
+        assert_eq!(
+            (w.edges.clone(), counts.edges_cracked_by_vertex),
+            (edges, 0)
+        );
+        // A triangle with a corner there: now it is a vertex of the set.
+        let mut s = s.clone();
+        s.add_loop(&[[1.0, 0.0], [1.5, -1.0], [0.5, -1.0]]);
+        let mut w = Work::from_set(&s);
+        w.normalize(&mut counts);
+        crack_by_vertices(&mut w, 0.1, &mut counts, &mut Budget::new(100), &mut None);
+        assert_eq!(counts.edges_cracked_by_vertex, 1);
+    }
 }
