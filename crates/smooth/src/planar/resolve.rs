@@ -48,7 +48,10 @@ fn internal(e: impl std::fmt::Display) -> SmoothError {
 /// that meet other than at a shared vertex (every crossing, touching and
 /// overlapping pair is adjacent on its line at some event and tested
 /// there exactly, and two vertices at one position are one point to it),
-/// so the exact pair tests of the broad phase run only when it did.
+/// so the exact pair tests of the broad phase run only when it did. A set
+/// with crossings is then swept twice (the cell structure, then the
+/// simplification that replaces it); the clean sets every run ends with
+/// are swept once and skip the pair tests.
 pub fn resolve(w: &mut Work, counts: &mut SmoothCounts) -> Result<Resolution, SmoothError> {
     let set = w.to_set();
     let simple_windings = |cells: &CellStructure<i32>| {
@@ -59,19 +62,17 @@ pub fn resolve(w: &mut Work, counts: &mut SmoothCounts) -> Result<Resolution, Sm
                     && e.left.min(e.right) == 0)
         })
     };
-    let mut cells = None;
-    let mut crossing = None;
-    if w.max_multiplicity() <= 1 {
-        let c = cell_structure(&set).map_err(internal)?;
-        if sweep_found_nothing(&c, w) {
+    let cells = if w.max_multiplicity() <= 1 {
+        Some(cell_structure(&set).map_err(internal)?)
+    } else {
+        None
+    };
+    let crossing = match &cells {
+        Some(c) if sweep_found_nothing(c, w) => {
             debug_assert_eq!(conflicts(w), 0, "the sweep missed a conflicting pair");
-            crossing = Some(0);
+            0
         }
-        cells = Some(c);
-    }
-    let crossing = match crossing {
-        Some(c) => c,
-        None => conflicts(w),
+        _ => conflicts(w),
     };
     let (shape, epsilon, sweep_k) = match cells {
         Some(cells) if crossing == 0 => {

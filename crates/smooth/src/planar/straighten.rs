@@ -82,7 +82,7 @@ pub fn straighten(
         edges[i2 as usize] = None;
         let idx = edges.len() as u32;
         edges.push(Some(WEdge::directed(from, to, m)));
-        adj.join(vi, [(from, i1, i2), (to, i1, i2)], idx);
+        adj.join(vi, [from, to], [i1, i2], idx);
         stack.push(from);
         stack.push(to);
         removed += 1;
@@ -133,15 +133,15 @@ impl Incidence {
         self.count[v] > 0
     }
 
-    /// Vertex `v` removed, its edges `i1` and `i2` joined into edge `idx`
-    /// between its two neighbours `ends`, each listed with `v`'s edges.
-    fn join(&mut self, v: usize, ends: [(u32, u32, u32); 2], idx: u32) {
+    /// Vertex `v` removed, its edges `lost` joined into edge `idx` between
+    /// its two neighbours `ends`.
+    fn join(&mut self, v: usize, ends: [u32; 2], lost: [u32; 2], idx: u32) {
         self.count[v] = 0;
-        for (u, i1, i2) in ends {
+        for u in ends {
             let u = u as usize;
             if self.count[u] <= 2 {
                 for s in &mut self.slots[u] {
-                    if *s == i1 || *s == i2 {
+                    if lost.contains(s) {
                         *s = idx;
                         break;
                     }
