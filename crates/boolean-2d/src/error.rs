@@ -13,6 +13,9 @@ pub enum BooleanError {
         /// The violated constraint.
         source: TopologyError,
     },
+    /// The proximity asked of [`crate::PlanarContacts`] is not a finite
+    /// number at least 0.
+    InvalidProximity(f64),
     /// An invariant that the theorems of section 4.9 guarantee failed: this
     /// is a bug, please report it with the input.
     Internal(String),
@@ -23,6 +26,12 @@ impl fmt::Display for BooleanError {
         match self {
             BooleanError::InvalidInput { operand, source } => {
                 write!(f, "operand {operand:?}: {source}")
+            }
+            BooleanError::InvalidProximity(p) => {
+                write!(
+                    f,
+                    "the contact proximity must be finite and at least 0, not {p}"
+                )
             }
             BooleanError::Internal(msg) => {
                 write!(f, "internal error (a bug, please report): {msg}")
@@ -35,7 +44,7 @@ impl std::error::Error for BooleanError {
     fn source(&self) -> Option<&(dyn std::error::Error + 'static)> {
         match self {
             BooleanError::InvalidInput { source, .. } => Some(source),
-            BooleanError::Internal(_) => None,
+            BooleanError::InvalidProximity(_) | BooleanError::Internal(_) => None,
         }
     }
 }

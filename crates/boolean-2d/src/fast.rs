@@ -105,12 +105,12 @@ pub(crate) struct Level2Times {
 /// The closed box of one edge with non-zero multiplicity, its y range
 /// widened by the broad-phase margin.
 #[derive(Clone, Copy, Debug)]
-struct EdgeBox {
-    x0: f64,
-    x1: f64,
-    y0: f64,
-    y1: f64,
-    index: u32,
+pub(crate) struct EdgeBox {
+    pub(crate) x0: f64,
+    pub(crate) x1: f64,
+    pub(crate) y0: f64,
+    pub(crate) y1: f64,
+    pub(crate) index: u32,
 }
 
 /// Boxes of every edge with non-zero multiplicity, sorted by `x0`.
@@ -169,7 +169,7 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
 /// one, so each `S01`/`S10` equals its `X` or is 0 for the whole pair, and
 /// the X terms of `X11` cancel by the closure of the two edges' end points
 /// (the argument of Theorem 1, case 2).
-fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
+pub(crate) fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
     pairs_by_lists(a, b, LIST_BUDGET).unwrap_or_else(|| pairs_by_trees(a, b))
 }
 

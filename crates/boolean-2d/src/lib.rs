@@ -38,6 +38,7 @@
 
 mod composite;
 mod construct;
+mod contacts;
 mod error;
 mod fast;
 mod interval_set;
@@ -46,6 +47,7 @@ mod reference;
 mod timing;
 
 pub use composite::{pair_composite_edge, CompositeEdge};
+pub use contacts::{boolean_with_contacts, planar_contacts, PlanarContacts};
 pub use error::BooleanError;
 pub use level_data::LevelData;
 use std::time::Instant;

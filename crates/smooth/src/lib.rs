@@ -35,5 +35,8 @@ pub use mesh::{
     smooth_triangles_near, MAX_GROWTHS, REACH,
 };
 pub use options::SmoothOptions;
-pub use planar::{sanity_check_polygon_set, smooth_polygon_set, PlanarDefect, MAX_PLANAR_PASSES};
+pub use planar::{
+    sanity_check_polygon_set, smooth_polygon_set, smooth_polygon_set_near, PlanarDefect,
+    MAX_PLANAR_PASSES,
+};
 pub use report::{MeshDefects, Reverted, SmoothCounts, SmoothReport, Smoothed};

@@ -2,9 +2,9 @@
 //! vertices and order their facets differently (smoothing near contacts
 //! against whole smoothing, say): every facet as the sorted list of its
 //! half-edges by coordinate bits, every triangle rotated to start at its
-//! least corner, both lists sorted.
+//! least corner, both lists sorted; a polygon set's edges by coordinates.
 
-use topology::{PolygonMesh, TriangleMesh};
+use topology::{PolygonMesh, PolygonSet2, TriangleMesh};
 
 /// A half-edge as the bits of its end points' coordinates.
 pub type HalfEdgeKey = [[u64; 3]; 2];
@@ -45,6 +45,25 @@ pub fn triangles(m: &TriangleMesh) -> Vec<[[u64; 3]; 3]> {
         .collect();
     v.sort_unstable();
     v
+}
+
+/// An edge of a polygon set as the bits of its end points' coordinates
+/// and its multiplicity.
+pub type EdgeKey = ([[u64; 2]; 2], i32);
+
+/// The edges of a polygon set by coordinates, sorted (the vertex
+/// numbering and edge order dropped).
+pub fn set_edges(s: &PolygonSet2) -> Vec<EdgeKey> {
+    let mut out: Vec<EdgeKey> = s
+        .edges()
+        .iter()
+        .map(|e| {
+            let (p, q) = s.edge_points(e);
+            ([p.map(f64::to_bits), q.map(f64::to_bits)], e.mult)
+        })
+        .collect();
+    out.sort_unstable();
+    out
 }
 
 #[cfg(test)]

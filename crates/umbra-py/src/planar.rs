@@ -10,9 +10,10 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance, fill_rule_name,
-    from_geo, layout_polygons, regularized_operands, simplify as simplify_set, smooth_polygon_set,
-    FillRule, PolygonSet2, Polygons, RingOrientation, Simplified, SmoothOptions, UmbraError, Via,
+    boolean, boolean_sets, boolean_via_simplify, boolean_with_contacts,
+    default_boolean_set_tolerance, fill_rule_name, from_geo, layout_polygons, regularized_operands,
+    simplify as simplify_set, smooth_set_result, FillRule, PlanarContacts, PolygonSet2, Polygons,
+    RingOrientation, Simplified, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -151,7 +152,7 @@ pub fn boolean_2d<'py>(
     let tolerance =
         smooth.unwrap_or_else(|| default_boolean_set_tolerance([&a, &b], keep_orientation));
     let shape = run(py, || {
-        let raw = match via {
+        let (raw, contacts) = match via {
             Via::Basic => {
                 // Operands read by role are made sets first, as the
                 // command line does (`regularized_operand`).
@@ -167,27 +168,37 @@ pub fn boolean_2d<'py>(
                     let [ra, rb] = regularized_operands(&a, &b);
                     (regular(ra)?, regular(rb)?)
                 };
-                boolean(&a, &b, op)
-                    .map(|o| o.shape)
-                    .map_err(|source| UmbraError::Boolean {
-                        file: String::new(),
-                        source,
-                    })
+                // Smoothing looks only near the operands' contacts, found
+                // beside the Boolean, as on the command line.
+                let result = if tolerance > 0.0 && tolerance.is_finite() {
+                    boolean_with_contacts(&a, &b, op, tolerance).map(|(o, c)| (o.shape, Some(c)))
+                } else {
+                    boolean(&a, &b, op).map(|o| (o.shape, None))
+                };
+                result.map_err(|source| UmbraError::Boolean {
+                    file: String::new(),
+                    source,
+                })
             }
             Via::Simplify => boolean_via_simplify(&a, &b, op)
-                .map(|o| o.shape)
+                .map(|o| (o.shape, None))
                 .map_err(|source| UmbraError::Simplify {
                     file: String::new(),
                     source,
                 }),
         }?;
-        smoothed_set(raw, tolerance)
+        smoothed_set(raw, tolerance, contacts.as_ref())
     })?;
     output(py, shape, keep_orientation && !layout_by_role)
 }
 
-/// `raw` smoothed at `tolerance` (Appendix A), itself at 0.
-fn smoothed_set(raw: PolygonSet2, tolerance: f64) -> Result<PolygonSet2, UmbraError> {
+/// `raw` smoothed at `tolerance` (Appendix A), near `contacts` when given
+/// (`umbra::smooth_set_result`), itself at 0.
+fn smoothed_set(
+    raw: PolygonSet2,
+    tolerance: f64,
+    contacts: Option<&PlanarContacts>,
+) -> Result<PolygonSet2, UmbraError> {
     if tolerance == 0.0 {
         return Ok(raw);
     }
@@ -197,7 +208,7 @@ fn smoothed_set(raw: PolygonSet2, tolerance: f64) -> Result<PolygonSet2, UmbraEr
         source,
     };
     opts.validate().map_err(smooth_error)?;
-    smooth_polygon_set(&raw, &opts)
+    smooth_set_result(&raw, &opts, contacts)
         .map(|s| s.shape)
         .map_err(smooth_error)
 }
@@ -236,7 +247,7 @@ pub fn boolean_2d_all<'py>(
                     file: String::new(),
                     source,
                 })?;
-        smoothed_set(raw, tolerance)
+        smoothed_set(raw, tolerance, None)
     })?;
     output(py, shape, keep_orientation && !layout_by_role)
 }

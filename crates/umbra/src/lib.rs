@@ -27,7 +27,11 @@
 //! - Smoothing (chapter 5, Appendix A): [`smooth_mesh`],
 //!   [`smooth_triangles`], [`smooth_polygon_set`] and [`smooth_solid`] (by
 //!   variant) with [`SmoothOptions`]; [`default_mesh_tolerance`] is the
-//!   rule the CLI uses when none is given. No other call smooths.
+//!   rule the CLI uses when none is given. After a Boolean, smoothing only
+//!   near the operands' contacts costs what the Boolean changed:
+//!   [`boolean_with_contacts`] and [`smooth_polygon_set_near`] in 2D,
+//!   [`boolean_solid_with_contacts`] and [`smooth_solid_near`] in 3D. No
+//!   other call smooths.
 //! - Reports: [`Boolean2Report`], [`SimplifyReport`], [`Boolean3Report`]
 //!   and their parts, `serde::Serialize`, built from an operation's output.
 //! - WKT: [`read_wkt_file`], [`read_wkt_str`], [`write_wkt_file`],
@@ -99,7 +103,10 @@ mod report;
 mod round_f32;
 mod smoothing;
 
-pub use boolean_2d::{boolean, BooleanError, BooleanOutput, Timings as BooleanTimings};
+pub use boolean_2d::{
+    boolean, boolean_with_contacts, planar_contacts, BooleanError, BooleanOutput, PlanarContacts,
+    Timings as BooleanTimings,
+};
 pub use boolean_3d::{
     boolean_mesh, boolean_mesh_with_contacts, boolean_prepared, boolean_triangles,
     boolean_triangles_with_contacts, triangulate_mesh, Boolean3Error, Contacts, MeshOutput,
@@ -134,12 +141,14 @@ pub use simplify_2d::{
     Simplified, SimplifyError, SweepStats,
 };
 pub use smooth::{
-    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles, smooth_triangles_near,
-    MeshDefects, Reverted, SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed,
+    smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_polygon_set_near, smooth_triangles,
+    smooth_triangles_near, MeshDefects, Reverted, SmoothCounts, SmoothError, SmoothOptions,
+    SmoothReport, Smoothed,
 };
 pub use smoothing::{
     default_boolean_set_tolerance, default_mesh_tolerance, default_set_tolerance,
-    smooth_csg_result, smooth_solid, smooth_solid_near, DEFAULT_RELATIVE_TOLERANCE,
+    smooth_csg_result, smooth_set_result, smooth_solid, smooth_solid_near,
+    DEFAULT_RELATIVE_TOLERANCE,
 };
 pub use topology::{
     check_mesh, check_polygon_set, mesh_signed_volume, ring_side, ring_signed_area, BooleanOp,

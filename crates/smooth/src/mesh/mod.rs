@@ -25,7 +25,7 @@ mod geom;
 mod guard;
 pub(crate) mod index;
 mod plane;
-mod region;
+pub(crate) mod region;
 mod sanity;
 mod structure;
 mod triangles;

@@ -184,7 +184,7 @@ impl Occupancy {
 }
 
 /// The facets whose box comes within `reach` of a contact box.
-fn near_facets<F: Facets + ?Sized>(
+pub(crate) fn near_facets<F: Facets + ?Sized>(
     pos: &[Point3],
     facets: &F,
     contacts: &[[Point3; 2]],
@@ -232,7 +232,7 @@ fn near_facets<F: Facets + ?Sized>(
 }
 
 /// The facets sharing a vertex with a facet of `region`.
-fn widen<F: Facets + ?Sized>(n: usize, facets: &F, region: &[bool]) -> Vec<bool> {
+pub(crate) fn widen<F: Facets + ?Sized>(n: usize, facets: &F, region: &[bool]) -> Vec<bool> {
     let mut hot = vec![false; n];
     for f in (0..facets.count()).filter(|&f| region[f]) {
         for v in facets.starts(f) {

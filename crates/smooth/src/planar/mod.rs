@@ -21,11 +21,13 @@ mod crack;
 /// Plane geometry, dimension-generic where it can be shared with 3D.
 pub(crate) mod geom;
 mod merge;
+mod near;
 mod resolve;
 mod straighten;
 mod work;
 
 pub use check::{sanity_check_polygon_set, PlanarDefect};
+pub use near::smooth_polygon_set_near;
 
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use budget::Budget;
@@ -128,25 +130,7 @@ fn smooth_in_range(
     let mut crossing_error = 0.0;
     loop {
         passes += 1;
-        merge::merge_phase(&mut w, tol, &mut counts, &mut budget);
-        debug_check(&w, "vertex merging")?;
-        // One index of the vertex positions serves every phase until
-        // cracking between edges or the removal of unreferenced vertices
-        // changes them.
-        let mut index = None;
-        straighten::straighten(&mut w, tol, &mut counts, &mut index);
-        debug_check(&w, "straight-through vertex removal")?;
-        let alpha = intersection_error_bound(max_abs(&w));
-        if crack::crack_between_edges(&mut w, tol, &mut counts, &mut budget)? {
-            crossing_error += alpha;
-            index = None;
-        }
-        debug_check(&w, "edge cracking between edges")?;
-        crack::crack_by_vertices(&mut w, tol, &mut counts, &mut budget, &mut index);
-        debug_check(&w, "edge cracking by vertex")?;
-        straighten::straighten(&mut w, tol, &mut counts, &mut index);
-        debug_check(&w, "straight-through vertex removal")?;
-        w.remove_unreferenced(&mut counts);
+        crossing_error += local_phases(&mut w, tol, &mut counts, &mut budget, true)?;
         match resolve::resolve(&mut w, &mut counts)? {
             Resolution::Clean => break,
             Resolution::Swept(eps) => {
@@ -185,6 +169,50 @@ fn smooth_in_range(
             reverted: None,
         },
     })
+}
+
+/// One pass of the phases that work on neighbourhoods (everything but
+/// the check and simplification), in the order of the module header, the
+/// unreferenced vertices removed at the end. Returns the rounding that
+/// cracking between edges added to the distortion (0 when it computed no
+/// position). `closed` says whether `w` satisfies the closure constraints
+/// (a whole set) or is a region cut out of one, whose phases are then not
+/// checked for closure in debug builds.
+fn local_phases(
+    w: &mut Work,
+    tol: f64,
+    counts: &mut SmoothCounts,
+    budget: &mut Budget,
+    closed: bool,
+) -> Result<f64, SmoothError> {
+    let check = |w: &Work, phase: &str| {
+        if closed {
+            debug_check(w, phase)
+        } else {
+            Ok(())
+        }
+    };
+    merge::merge_phase(w, tol, counts, budget);
+    check(w, "vertex merging")?;
+    // One index of the vertex positions serves every phase until
+    // cracking between edges or the removal of unreferenced vertices
+    // changes them.
+    let mut index = None;
+    straighten::straighten(w, tol, counts, &mut index);
+    check(w, "straight-through vertex removal")?;
+    let alpha = intersection_error_bound(max_abs(w));
+    let mut crossing_error = 0.0;
+    if crack::crack_between_edges(w, tol, counts, budget)? {
+        crossing_error = alpha;
+        index = None;
+    }
+    check(w, "edge cracking between edges")?;
+    crack::crack_by_vertices(w, tol, counts, budget, &mut index);
+    check(w, "edge cracking by vertex")?;
+    straighten::straighten(w, tol, counts, &mut index);
+    check(w, "straight-through vertex removal")?;
+    w.remove_unreferenced(counts);
+    Ok(crossing_error)
 }
 
 fn max_abs(w: &Work) -> f64 {

@@ -54,21 +54,13 @@ fn internal(e: impl std::fmt::Display) -> SmoothError {
 /// are swept once and skip the pair tests.
 pub fn resolve(w: &mut Work, counts: &mut SmoothCounts) -> Result<Resolution, SmoothError> {
     let set = w.to_set();
-    let simple_windings = |cells: &CellStructure<i32>| {
-        cells.edges().iter().all(|e| {
-            e.mult == 0
-                || (e.left - e.right == e.mult
-                    && e.left.max(e.right) == 1
-                    && e.left.min(e.right) == 0)
-        })
-    };
     let cells = if w.max_multiplicity() <= 1 {
         Some(cell_structure(&set).map_err(internal)?)
     } else {
         None
     };
     let crossing = match &cells {
-        Some(c) if sweep_found_nothing(c, w) => {
+        Some(c) if sweep_found_nothing(c, w.pts.len()) => {
             debug_assert_eq!(conflicts(w), 0, "the sweep missed a conflicting pair");
             0
         }
@@ -91,17 +83,40 @@ pub fn resolve(w: &mut Work, counts: &mut SmoothCounts) -> Result<Resolution, Sm
     Ok(Resolution::Swept(epsilon))
 }
 
-/// Whether the sweep of `w`'s edges left them as they were: no crossing
-/// computed, no edge split or merged with another, and one point per
-/// vertex (the working copy's vertices are all referenced here).
-fn sweep_found_nothing(cells: &CellStructure<i32>, w: &Work) -> bool {
+/// Whether every edge of the cell structure separates winding number 1 on
+/// its left from 0 on its right.
+fn simple_windings(cells: &CellStructure<i32>) -> bool {
+    cells.edges().iter().all(|e| {
+        e.mult == 0
+            || (e.left - e.right == e.mult && e.left.max(e.right) == 1 && e.left.min(e.right) == 0)
+    })
+}
+
+/// Whether a set is what [`resolve`] calls clean, without a working copy:
+/// every edge of multiplicity 1, and one sweep that split, merged and
+/// computed nothing and met `referenced` points (the number of vertices
+/// an edge uses: two at one position are one point to the sweep), each
+/// edge with winding number 1 on its left and 0 on its right. A set with
+/// two entries on one vertex pair is merged by the sweep, so not clean.
+pub fn is_simple(set: &PolygonSet2, referenced: usize) -> Result<bool, SmoothError> {
+    if set.edges().iter().any(|e| e.mult != 1) {
+        return Ok(false);
+    }
+    let cells = cell_structure(set).map_err(internal)?;
+    Ok(sweep_found_nothing(&cells, referenced) && simple_windings(&cells))
+}
+
+/// Whether the sweep left the edges as they were: no crossing computed,
+/// no edge split or merged with another, and one point per vertex
+/// (`vertices` of them, all referenced).
+fn sweep_found_nothing(cells: &CellStructure<i32>, vertices: usize) -> bool {
     let s = cells.stats();
     s.intersections == 0
         && s.vertex_on_edge_splits == 0
         && s.through_splits == 0
         && s.misgrouped_splits == 0
         && s.merged_input_edges == s.input_edges
-        && cells.vertices().len() == w.pts.len()
+        && cells.vertices().len() == vertices
 }
 
 /// Replaces the working copy by the sweep's output, keeping the records
@@ -160,7 +175,7 @@ mod tests {
             w.normalize(&mut SmoothCounts::default());
             w.remove_unreferenced(&mut SmoothCounts::default());
             let cells = cell_structure(&w.to_set()).unwrap();
-            if sweep_found_nothing(&cells, &w) {
+            if sweep_found_nothing(&cells, w.pts.len()) {
                 untouched += 1;
                 assert_eq!(conflicts(&w), 0, "round {round}: {set:?}");
             } else {

@@ -21,5 +21,6 @@ mod planar_cases;
 mod planar_checker;
 mod planar_errors;
 mod planar_map;
+mod planar_near;
 mod planar_properties;
 mod planar_scale;

@@ -20,11 +20,11 @@ use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
     boolean, boolean_sets, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
-    default_boolean_set_tolerance, default_mesh_tolerance, encode_mesh_with, encode_polygon_set,
-    read_mesh, regularized_operands, smooth_polygon_set, smooth_solid_near, turned_outward,
-    Boolean2Report, Boolean3Report, BooleanOp, Contacts, CsgNode, FileKind, MeshCounts,
-    MeshReadOptions, MeshVariant, Operands, PolygonSet2, ReadOptions, SetCounts, SmoothOptions,
-    UmbraError, Via,
+    boolean_with_contacts, default_boolean_set_tolerance, default_mesh_tolerance,
+    encode_mesh_with, encode_polygon_set, read_mesh, regularized_operands, smooth_set_result,
+    smooth_solid_near, turned_outward, Boolean2Report, Boolean3Report, BooleanOp, Contacts,
+    CsgNode, FileKind, MeshCounts, MeshReadOptions, MeshVariant, Operands, PlanarContacts,
+    PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
 };
 
 /// Union, intersection, difference or (2D only) xor of two or more files
@@ -231,15 +231,23 @@ impl BooleanArgs {
                     let moved = regular.0.epsilon.max(regular.1.epsilon);
                     (&regular.0.shape, &regular.1.shape, moved)
                 };
-                let result = boolean(a, b, op);
+                // Smoothing looks only near where the operands come
+                // within its tolerance; those places come from a broad
+                // phase run beside the Boolean.
+                let tol = self.smooth.unwrap_or(tolerance);
+                let result = if tol > 0.0 && tol.is_finite() {
+                    boolean_with_contacts(a, b, op, tol).map(|(out, c)| (out, Some(c)))
+                } else {
+                    boolean(a, b, op).map(|out| (out, None))
+                };
                 let total = millis_since(start);
-                let out = result.map_err(|e| errors::boolean2(e, [a_path, b_path]))?;
+                let (out, contacts) = result.map_err(|e| errors::boolean2(e, [a_path, b_path]))?;
                 let report = |output| {
                     let mut report = Boolean2Report::basic(op, keep, inputs, output, &out, total);
                     report.epsilon += moved;
                     report
                 };
-                self.finish_2d(&out.shape, report, out_kind, tolerance)?
+                self.finish_2d(&out.shape, report, out_kind, tolerance, contacts.as_ref())?
             }
             Via::Simplify => {
                 // Two operands keep the binary sweep's fixed-size winding
@@ -255,7 +263,7 @@ impl BooleanArgs {
                     Boolean2Report::via_simplify(op, keep, inputs, output, &out, total)
                         .with_more_inputs(more_inputs)
                 };
-                self.finish_2d(&out.shape, report, out_kind, tolerance)?
+                self.finish_2d(&out.shape, report, out_kind, tolerance, None)?
             }
         };
         self.out.write(&encoded.bytes, &report)?;
@@ -382,13 +390,15 @@ impl BooleanArgs {
     /// [`umbra::DEFAULT_RELATIVE_TOLERANCE`] times the largest extent of
     /// either operand (`tolerance`), as it is at a tolerance of 0; then
     /// encoded once, and reported by `report` given the counts of what is
-    /// written.
+    /// written. With the operands' `contacts`, smoothing looks only near
+    /// them ([`smooth_set_result`]).
     fn finish_2d(
         &self,
         shape: &PolygonSet2,
         report: impl FnOnce(SetCounts) -> Boolean2Report,
         out_kind: FileKind,
         tolerance: f64,
+        contacts: Option<&PlanarContacts>,
     ) -> anyhow::Result<(umbra::EncodedPolygons, Boolean2Report)> {
         let out_file = self.out.output.display().to_string();
         let orientation = orientation(self.keep_orientation);
@@ -399,7 +409,7 @@ impl BooleanArgs {
             return Ok((encoded, report));
         }
         let start = Instant::now();
-        let smoothed = smooth_polygon_set(shape, &SmoothOptions::new(tol)).map_err(|source| {
+        let smoothed = smooth_set_result(shape, &SmoothOptions::new(tol), contacts).map_err(|source| {
             UmbraError::Smooth {
                 file: String::new(),
                 source,
