@@ -11,7 +11,9 @@
 //! `boolean` to `boolean` at the same size; the figures are in `docs/performance.md`. The 2D groups smooth the basic
 //! Boolean's union of two 1k-to-100k-gons, and its union and symmetric
 //! difference of a real map (Natural Earth's countries) with a rotated
-//! and with a minutely scaled copy of itself.
+//! and with a minutely scaled copy of itself, whole (`smooth`) and near
+//! the contacts of the Boolean that found them (`boolean_contacts`,
+//! `smooth_near`: what `umbra boolean` runs).
 //!
 //! ```text
 //! cargo bench -p umbra-benches --bench smooth
@@ -25,8 +27,8 @@ use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Through
 use std::hint::black_box;
 use std::time::Duration;
 use umbra::{
-    default_mesh_tolerance, smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_triangles,
-    smooth_triangles_near,
+    default_mesh_tolerance, smooth_mesh, smooth_mesh_near, smooth_polygon_set,
+    smooth_polygon_set_near, smooth_triangles, smooth_triangles_near,
 };
 use umbra::{default_set_tolerance, SmoothOptions};
 use umbra_benches::solid::{sphere_pair, sphere_pair_quads};
@@ -152,14 +154,18 @@ fn polygons(c: &mut Criterion) {
 /// degrees and shifted by about 1% of its width: a few hundred crossings;
 /// scaled by `1 + 1e-7` about the origin: thousands of crossings and
 /// slivers along every border), and smoothing its result at the default
-/// tolerance, as `umbra boolean` runs them.
+/// tolerance, whole and near the contacts, as `umbra boolean` runs them.
 fn map(c: &mut Criterion) {
     let mut group = c.benchmark_group("smooth_map_boolean");
-    let world = umbra::read_polygon_set(
+    let raw = umbra::read_polygon_set(
         &test_support::data_path("naturalearth/countries.geojson"),
         umbra::ReadOptions::default(),
     )
     .unwrap();
+    // Made a set first, as `umbra boolean` makes its operands (shared
+    // borders drawn once; raw, their duplicate positions send smoothing
+    // near the contacts to whole smoothing).
+    let world = umbra::regularized_operand(&raw).unwrap().shape;
     let moved = |f: &dyn Fn([f64; 2]) -> [f64; 2]| {
         let (vertices, edges) = world.clone().into_parts();
         umbra::PolygonSet2::from_parts(vertices.into_iter().map(f).collect(), edges)
@@ -187,6 +193,24 @@ fn map(c: &mut Criterion) {
             });
             group.bench_with_input(BenchmarkId::new("smooth", &id), &(), |bench, _| {
                 bench.iter(|| black_box(smooth_polygon_set(&out, &opts).unwrap()));
+            });
+            let tol = opts.tolerance;
+            let (near_out, contacts) = umbra::boolean_with_contacts(&world, copy, op, tol).unwrap();
+            group.bench_with_input(
+                BenchmarkId::new("boolean_contacts", &id),
+                &(),
+                |bench, _| {
+                    bench.iter(|| {
+                        black_box(umbra::boolean_with_contacts(&world, copy, op, tol).unwrap())
+                    });
+                },
+            );
+            group.bench_with_input(BenchmarkId::new("smooth_near", &id), &(), |bench, _| {
+                bench.iter(|| {
+                    black_box(
+                        smooth_polygon_set_near(&near_out.shape, &opts, &contacts.boxes).unwrap(),
+                    )
+                });
             });
         }
     }

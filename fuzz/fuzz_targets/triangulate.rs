@@ -18,7 +18,10 @@ use umbra_fuzz::FacetInput;
 fn assert_same_boundary(half_edges: &[(u32, u32)], triangles: &[[u32; 3]], n: usize) {
     let mut net: HashMap<(u32, u32), i64> = HashMap::new();
     for t in triangles {
-        assert!(t.iter().all(|&v| (v as usize) < n), "triangle {t:?} beyond {n} vertices");
+        assert!(
+            t.iter().all(|&v| (v as usize) < n),
+            "triangle {t:?} beyond {n} vertices"
+        );
         for k in 0..3 {
             *net.entry((t[k], t[(k + 1) % 3])).or_default() += 1;
         }
@@ -46,15 +49,23 @@ fuzz_target!(|input: FacetInput| {
     assert_same_boundary(&half_edges, &out, positions.len());
     // At most the bridged polygon's ear count: zero-area ears over a
     // repeated vertex (a spike along a bridge) are dropped, never emitted.
-    assert!(out.len() <= plane.len() + 2 * holes - 2, "triangle count of a plate");
     assert!(
-        out.iter().all(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]),
+        out.len() <= plane.len() + 2 * holes - 2,
+        "triangle count of a plate"
+    );
+    assert!(
+        out.iter()
+            .all(|t| t[0] != t[1] && t[1] != t[2] && t[2] != t[0]),
         "a triangle repeats a vertex"
     );
     let mut twice_area = 0.0;
     for t in &out {
         let [a, b, c] = t.map(|v| plane[v as usize]);
-        assert_eq!(orient2d(a, b, c), Ordering::Greater, "reversed or flat triangle {t:?}");
+        assert_eq!(
+            orient2d(a, b, c),
+            Ordering::Greater,
+            "reversed or flat triangle {t:?}"
+        );
         twice_area += (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
     }
     // Small integers: every term and sum is exact.

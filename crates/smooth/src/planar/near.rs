@@ -127,12 +127,12 @@ fn cut(set: &PolygonSet2, region: &[bool]) -> Cut {
     }
 }
 
-/// The global index of every vertex of the smoothed region: the region's
-/// vertex at the same position (smoothing keeps a surviving vertex where
-/// it was), or a new index from `next` for a created one. `None` when two
-/// of the region's vertices share a position.
-fn place(out: &[Point2], c: &Cut, next: &mut u32) -> Option<Vec<u32>> {
-    let key = |p: &Point2| (p[0].to_bits(), p[1].to_bits());
+/// The global index of the region's vertex at each position, or `None`
+/// when two of them share a position (then positions do not name the
+/// region's vertices, and the whole set is smoothed: checked before any
+/// work, since raw maps with borders drawn twice have such pairs
+/// everywhere).
+fn positions(c: &Cut) -> Option<FxHashMap<(u64, u64), u32>> {
     let mut at: FxHashMap<(u64, u64), u32> = FxHashMap::default();
     at.reserve(c.global.len());
     for (i, p) in c.sub.vertices().iter().enumerate() {
@@ -140,16 +140,25 @@ fn place(out: &[Point2], c: &Cut, next: &mut u32) -> Option<Vec<u32>> {
             return None;
         }
     }
-    Some(
-        out.iter()
-            .map(|p| {
-                at.get(&key(p)).copied().unwrap_or_else(|| {
-                    *next += 1;
-                    *next - 1
-                })
+    Some(at)
+}
+
+fn key(p: &Point2) -> (u64, u64) {
+    (p[0].to_bits(), p[1].to_bits())
+}
+
+/// The global index of every vertex of the smoothed region: the region's
+/// vertex at the same position (smoothing keeps a surviving vertex where
+/// it was), or a new index from `next` for a created one.
+fn place(out: &[Point2], at: &FxHashMap<(u64, u64), u32>, next: &mut u32) -> Vec<u32> {
+    out.iter()
+        .map(|p| {
+            at.get(&key(p)).copied().unwrap_or_else(|| {
+                *next += 1;
+                *next - 1
             })
-            .collect(),
-    )
+        })
+        .collect()
 }
 
 /// What smoothing the region gave: its edges in global indices (positive
@@ -200,15 +209,16 @@ fn smooth_region(
             region = widen(set.vertex_count(), edges, &region);
         }
         let c = cut(set, &region);
+        let Some(at) = positions(&c) else {
+            return Ok(None);
+        };
         let mut counts = SmoothCounts::default();
         let mut budget = Budget::new(options.budget_for(c.sub.vertex_count(), c.sub.edge_count()));
         let mut w = Work::from_set(&c.sub);
         w.normalize(&mut counts);
         let crossing_error = local_phases(&mut w, delta, &mut counts, &mut budget, false)?;
         let mut next = set.vertex_count() as u32;
-        let Some(global) = place(&w.pts, &c, &mut next) else {
-            return Ok(None);
-        };
+        let global = place(&w.pts, &at, &mut next);
         let smoothed = w.to_set();
         let new_edges: Vec<Edge2> = smoothed
             .edges()
