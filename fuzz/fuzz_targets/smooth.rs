@@ -118,7 +118,7 @@ fuzz_target!(|input: SmoothInput| {
     let q = input.planar[1].to_set();
     let set = boolean_2d::boolean(&p, &q, BooleanOp::Union)
         .map(|o| o.shape)
-        .unwrap_or(p);
+        .unwrap_or_else(|_| p.clone());
     let opts = SmoothOptions::new(tolerance(set.max_abs_coordinate(), input.tolerance_exp));
     // Near the 2D contacts: always closed; where both operands need no
     // smoothing, whole smoothing's set bit for bit.

@@ -33,11 +33,16 @@
 //! input's area under the positive fill rule, computed by an independent
 //! slab decomposition, by at most the input's perimeter x bound: the final
 //! sweep legitimately fills inside-out and multiply covered input by that
-//! rule).
+//! rule), `near` (smoothing near one contact box over the whole set gives
+//! whole smoothing's set bit for bit: `smooth_polygon_set_near` cuts out
+//! every edge, or hands the set to whole smoothing).
 
 use crate::verify::{Check, Corpus, Outcome, Suite};
 use boolean_3d::{boolean_mesh, BooleanOp};
-use smooth::{smooth_mesh, smooth_polygon_set, smooth_triangles, SmoothOptions, Smoothed};
+use smooth::{
+    smooth_mesh, smooth_polygon_set, smooth_polygon_set_near, smooth_triangles, SmoothOptions,
+    Smoothed,
+};
 use test_support::rng::SplitMix64;
 use test_support::shapes::push_box;
 use topology::{PolygonMesh, PolygonSet2};
@@ -602,6 +607,29 @@ fn idempotent2(case: &CaseP) -> Outcome {
     })
 }
 
+/// Smoothing near one contact box over the whole set is whole smoothing,
+/// bit for bit: on a set whole smoothing cleans in one pass the region is
+/// every edge and the phases are the same, and on any other the exact
+/// check sends near smoothing to whole smoothing.
+fn near2(case: &CaseP) -> Outcome {
+    with2(case, |out| {
+        let Some([lo, hi]) = case.set.bounding_box() else {
+            return Ok(());
+        };
+        let everything = [[lo.map(|x| x - x.abs() - 1.0), hi.map(|x| x + x.abs() + 1.0)]];
+        let near = smooth_polygon_set_near(&case.set, &SmoothOptions::new(case.delta), &everything)
+            .map_err(|e| e.to_string())?;
+        if near.shape != out.shape {
+            return Err(format!(
+                "near smoothing gave {} edges, whole smoothing {}",
+                near.shape.edge_count(),
+                out.shape.edge_count()
+            ));
+        }
+        Ok(())
+    })
+}
+
 fn features2(case: &CaseP) -> Outcome {
     with2(case, |out| {
         let s = &out.shape;
@@ -767,6 +795,11 @@ pub fn smooth_2d_suite() -> Suite<CaseP> {
                 name: "area",
                 source: "perimeter x bound",
                 run: area2,
+            },
+            Check {
+                name: "near",
+                source: "near = whole",
+                run: near2,
             },
         ],
     }
