@@ -159,7 +159,8 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
 /// touching ranges). Each overlapping pair is found exactly once, by
 /// whichever of its two boxes enters second. The active boxes are plain
 /// lists ([`pairs_by_lists`]) unless those exceed their work budget, then
-/// interval sets over y ([`pairs_by_trees`]); both report the same set.
+/// buckets over y ([`pairs_by_buckets`]) unless those do, then interval
+/// sets over y ([`pairs_by_trees`]); all three report the same set.
 ///
 /// Why a pair outside this set has `X11 = 0`: if the closed x ranges are
 /// disjoint, every `X01`/`X10` of the pair is 0 (Table 4.1), hence every
@@ -170,7 +171,87 @@ fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
 /// the X terms of `X11` cancel by the closure of the two edges' end points
 /// (the argument of Theorem 1, case 2).
 pub(crate) fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
-    pairs_by_lists(a, b, LIST_BUDGET).unwrap_or_else(|| pairs_by_trees(a, b))
+    pairs_by_lists(a, b, LIST_BUDGET)
+        .or_else(|| pairs_by_buckets(a, b, LIST_BUDGET))
+        .unwrap_or_else(|| pairs_by_trees(a, b))
+}
+
+/// Boxes per y-bucket of [`pairs_by_buckets`] (about), and the most
+/// buckets.
+const BUCKET_BOXES: usize = 32;
+const MAX_BUCKETS: usize = 1 << 14;
+
+/// The sweep of [`overlapping_pairs`] with each operand's active boxes in
+/// buckets over y: `count` equal slices of the boxes' y range, a box in
+/// every bucket its y range meets (the bucket of a y is a monotone
+/// rounding of it, so two boxes whose y ranges meet have bucket ranges
+/// that meet). An entering box scans only the other operand's buckets in
+/// its own range, dropping the boxes that ended to its left, and reports
+/// a pair in the first bucket the two share, so once. `O(n + c)` on real
+/// maps, where a vertical line crosses hundreds of edges (the plain lists
+/// then scan them all for every box and give up: New York's boroughs,
+/// 75,000 edges each, 5,000 pairs) but few share a slice of y with one
+/// edge; `None` as soon as the scans and insertions exceed `budget` (many
+/// long edges spanning many buckets), then the interval sets take over.
+fn pairs_by_buckets(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<(u32, u32)>> {
+    let (lo, hi) = a
+        .iter()
+        .chain(b)
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), bx| {
+            (lo.min(bx.y0), hi.max(bx.y1))
+        });
+    let wanted = ((a.len() + b.len()) / BUCKET_BOXES).clamp(1, MAX_BUCKETS);
+    let scale = wanted as f64 / (hi - lo);
+    let (count, scale) = if scale.is_finite() && scale > 0.0 {
+        (wanted, scale)
+    } else {
+        (1, 0.0)
+    };
+    // `y - lo` and the product round monotonically, the cast floors (and
+    // saturates), so the bucket never decreases as y grows.
+    let bucket = |y: f64| (((y - lo) * scale) as usize).min(count - 1);
+    let mut active_a: Vec<Vec<EdgeBox>> = vec![Vec::new(); count];
+    let mut active_b: Vec<Vec<EdgeBox>> = vec![Vec::new(); count];
+    let mut pairs = Vec::new();
+    let (mut i, mut j) = (0, 0);
+    let mut work = 0usize;
+    let mut check = BudgetCheck::new(budget);
+    while i < a.len() || j < b.len() {
+        let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
+        let (entering, others, own) = if take_a {
+            i += 1;
+            (a[i - 1], &mut active_b, &mut active_a)
+        } else {
+            j += 1;
+            (b[j - 1], &mut active_a, &mut active_b)
+        };
+        let (first, last) = (bucket(entering.y0), bucket(entering.y1));
+        for k in first..=last {
+            let list = &mut others[k];
+            work += list.len() + 1;
+            let mut m = 0;
+            while m < list.len() {
+                let o = list[m];
+                if o.x1 < entering.x0 {
+                    list.swap_remove(m);
+                    continue;
+                }
+                if o.y0 <= entering.y1 && entering.y0 <= o.y1 && k == first.max(bucket(o.y0)) {
+                    pairs.push(if take_a {
+                        (entering.index, o.index)
+                    } else {
+                        (o.index, entering.index)
+                    });
+                }
+                m += 1;
+            }
+            own[k].push(entering);
+        }
+        if check.exceeded(work, i + j + pairs.len()) {
+            return None;
+        }
+    }
+    Some(pairs)
 }
 
 /// The sweep of [`overlapping_pairs`] with each operand's active boxes in a
@@ -979,7 +1060,7 @@ mod tests {
     const ALL_COORDS: [Coords; 3] = [Coords::Grid, Coords::Unit, Coords::Garbage];
 
     #[test]
-    fn both_sweeps_find_exactly_the_overlapping_pairs() {
+    fn every_sweep_finds_exactly_the_overlapping_pairs() {
         let mut rng = Xorshift64::new(0x2545_f491_4f6c_dd1d);
         for round in 0..600 {
             let coords = ALL_COORDS[round % 3];
@@ -989,6 +1070,8 @@ mod tests {
             let want = brute_pairs(&ba, &bb);
             let lists = pairs_by_lists(&ba, &bb, UNLIMITED).expect("no budget");
             assert_eq!(sorted(lists), want, "lists, round {round}");
+            let buckets = pairs_by_buckets(&ba, &bb, UNLIMITED).expect("no budget");
+            assert_eq!(sorted(buckets), want, "buckets, round {round}");
             assert_eq!(
                 sorted(pairs_by_trees(&ba, &bb)),
                 want,
@@ -1014,6 +1097,48 @@ mod tests {
         assert!(pairs_by_lists(&a, &b, (8, 0)).is_none());
         assert_eq!(pairs_by_lists(&a, &b, UNLIMITED), Some(Vec::new()));
         assert!(pairs_by_trees(&a, &b).is_empty());
+    }
+
+    /// Many stacked long boxes: the lists scan every active box and give
+    /// up; the buckets scan only a slice of y and finish in the same
+    /// budget with the same pairs. Boxes as tall as the whole range make
+    /// every entering box visit every bucket: the buckets give up too.
+    #[test]
+    fn buckets_finish_where_lists_give_up() {
+        let stack = |offset: f64| {
+            boxes(
+                &(0..4096)
+                    .map(|i| {
+                        let y = 2.0 * f64::from(i) + offset;
+                        (offset, 9.0, y, y + 1.25)
+                    })
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let (a, b) = (stack(0.0), stack(1.0));
+        let want = brute_pairs(&a, &b);
+        assert_eq!(want.len(), 2 * 4096 - 1);
+        assert!(pairs_by_lists(&a, &b, (16, 0)).is_none());
+        let got = pairs_by_buckets(&a, &b, (16, 0)).expect("within budget");
+        assert_eq!(sorted(got), want);
+        assert_eq!(sorted(overlapping_pairs(&a, &b)), want);
+        let tall = |offset: f64| {
+            boxes(
+                &(0..4096)
+                    .map(|i| {
+                        (
+                            f64::from(i) * 3.0 + offset,
+                            f64::from(i) * 3.0 + offset + 1.0,
+                            0.0,
+                            1e6,
+                        )
+                    })
+                    .collect::<Vec<_>>(),
+            )
+        };
+        let (a, b) = (tall(0.0), tall(1.5));
+        assert!(pairs_by_buckets(&a, &b, (16, 0)).is_none());
+        assert_eq!(sorted(overlapping_pairs(&a, &b)), brute_pairs(&a, &b));
     }
 
     /// The casts by brute force: the sum over every edge, as
