@@ -176,6 +176,35 @@ pub(crate) fn overlapping_pairs(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)>
         .unwrap_or_else(|| pairs_by_trees(a, b))
 }
 
+/// The boxes of `a` and `b` (each sorted by `x0`) merged by `x0`, A's
+/// first on ties: the order in which every sweep of [`overlapping_pairs`]
+/// enters them, as `(from A, position in its operand's slice, box)`.
+fn by_x0<'s>(
+    a: &'s [EdgeBox],
+    b: &'s [EdgeBox],
+) -> impl Iterator<Item = (bool, usize, EdgeBox)> + 's {
+    let (mut i, mut j) = (0, 0);
+    std::iter::from_fn(move || {
+        if j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0) {
+            i += 1;
+            a.get(i - 1).map(|bx| (true, i - 1, *bx))
+        } else {
+            j += 1;
+            b.get(j - 1).map(|bx| (false, j - 1, *bx))
+        }
+    })
+}
+
+/// A pair found by a sweep, as `(edge of A, edge of B)`: `entering` is
+/// A's when `from_a`.
+fn oriented(from_a: bool, entering: u32, other: u32) -> (u32, u32) {
+    if from_a {
+        (entering, other)
+    } else {
+        (other, entering)
+    }
+}
+
 /// Boxes per y-bucket of [`pairs_by_buckets`] (about), and the most
 /// buckets.
 const BUCKET_BOXES: usize = 32;
@@ -213,17 +242,13 @@ fn pairs_by_buckets(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<
     let mut active_a: Vec<Vec<EdgeBox>> = vec![Vec::new(); count];
     let mut active_b: Vec<Vec<EdgeBox>> = vec![Vec::new(); count];
     let mut pairs = Vec::new();
-    let (mut i, mut j) = (0, 0);
     let mut work = 0usize;
     let mut check = BudgetCheck::new(budget);
-    while i < a.len() || j < b.len() {
-        let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
-        let (entering, others, own) = if take_a {
-            i += 1;
-            (a[i - 1], &mut active_b, &mut active_a)
+    for (entered, (from_a, _, entering)) in by_x0(a, b).enumerate() {
+        let (others, own) = if from_a {
+            (&mut active_b, &mut active_a)
         } else {
-            j += 1;
-            (b[j - 1], &mut active_a, &mut active_b)
+            (&mut active_a, &mut active_b)
         };
         let (first, last) = (bucket(entering.y0), bucket(entering.y1));
         for k in first..=last {
@@ -237,17 +262,13 @@ fn pairs_by_buckets(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<
                     continue;
                 }
                 if o.y0 <= entering.y1 && entering.y0 <= o.y1 && k == first.max(bucket(o.y0)) {
-                    pairs.push(if take_a {
-                        (entering.index, o.index)
-                    } else {
-                        (o.index, entering.index)
-                    });
+                    pairs.push(oriented(from_a, entering.index, o.index));
                 }
                 m += 1;
             }
             own[k].push(entering);
         }
-        if check.exceeded(work, i + j + pairs.len()) {
+        if check.exceeded(work, entered + 1 + pairs.len()) {
             return None;
         }
     }
@@ -264,17 +285,13 @@ fn pairs_by_lists(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<(u
     let mut pairs = Vec::new();
     let mut active_a: Vec<EdgeBox> = Vec::new();
     let mut active_b: Vec<EdgeBox> = Vec::new();
-    let (mut i, mut j) = (0, 0);
     let mut work = 0usize;
     let mut check = BudgetCheck::new(budget);
-    while i < a.len() || j < b.len() {
-        let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
-        let (entering, others, own) = if take_a {
-            i += 1;
-            (a[i - 1], &mut active_b, &mut active_a)
+    for (entered, (from_a, _, entering)) in by_x0(a, b).enumerate() {
+        let (others, own) = if from_a {
+            (&mut active_b, &mut active_a)
         } else {
-            j += 1;
-            (b[j - 1], &mut active_a, &mut active_b)
+            (&mut active_a, &mut active_b)
         };
         work += others.len();
         let mut k = 0;
@@ -285,16 +302,12 @@ fn pairs_by_lists(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<(u
                 continue;
             }
             if o.y0 <= entering.y1 && entering.y0 <= o.y1 {
-                pairs.push(if take_a {
-                    (entering.index, o.index)
-                } else {
-                    (o.index, entering.index)
-                });
+                pairs.push(oriented(from_a, entering.index, o.index));
             }
             k += 1;
         }
         own.push(entering);
-        if check.exceeded(work, i + j + pairs.len()) {
+        if check.exceeded(work, entered + 1 + pairs.len()) {
             return None;
         }
     }
@@ -318,15 +331,11 @@ fn pairs_by_trees(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
     let mut set_b = IntervalSet::new(&y_ranges(b));
     let mut pairs = Vec::new();
     let mut found = Vec::new();
-    let (mut i, mut j) = (0, 0);
-    while i < a.len() || j < b.len() {
-        let take_a = j == b.len() || (i < a.len() && a[i].x0 <= b[j].x0);
-        let (entering, others, other_boxes, own, own_item) = if take_a {
-            i += 1;
-            (a[i - 1], &mut set_b, b, &mut set_a, i - 1)
+    for (from_a, own_item, entering) in by_x0(a, b) {
+        let (others, other_boxes, own) = if from_a {
+            (&mut set_b, b, &mut set_a)
         } else {
-            j += 1;
-            (b[j - 1], &mut set_a, a, &mut set_b, j - 1)
+            (&mut set_a, a, &mut set_b)
         };
         others.overlapping(entering.y0, entering.y1, &mut found);
         for &k in &found {
@@ -334,11 +343,7 @@ fn pairs_by_trees(a: &[EdgeBox], b: &[EdgeBox]) -> Vec<(u32, u32)> {
             if o.x1 < entering.x0 {
                 others.remove(k);
             } else {
-                pairs.push(if take_a {
-                    (entering.index, o.index)
-                } else {
-                    (o.index, entering.index)
-                });
+                pairs.push(oriented(from_a, entering.index, o.index));
             }
         }
         own.insert(own_item as u32);

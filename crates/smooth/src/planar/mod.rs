@@ -153,22 +153,45 @@ fn smooth_in_range(
         .filter_map(|(i, t)| t.map(|v| (input[i], shape.vertex(v))))
         .map(|(p, q)| geom::dist2(&p, &q).sqrt())
         .fold(0.0f64, f64::max);
-    let distortion_bound =
-        f64::from(k) * tol * (1.0 + 8.0 * UNIT_ROUNDOFF) + sweep_epsilon + crossing_error;
     Ok(Smoothed {
         shape,
-        report: SmoothReport {
-            tolerance: tol,
+        report: report(
+            tol,
             counts,
             passes,
-            budget_hit: budget.hit(),
-            max_adjustments: k,
-            distortion_bound,
+            &budget,
+            k,
+            sweep_epsilon + crossing_error,
             max_displacement,
-            epsilon: distortion_bound,
-            reverted: None,
-        },
+        ),
     })
+}
+
+/// The report of a 2D run at tolerance `tol`: `k` the largest adjustment
+/// count of a vertex, `rounding` what the sweeps and cracking between
+/// edges added; the distortion bound is `k tol (1 + 8u)` plus that
+/// (section 8.4).
+fn report(
+    tol: f64,
+    counts: SmoothCounts,
+    passes: u32,
+    budget: &Budget,
+    k: u32,
+    rounding: f64,
+    max_displacement: f64,
+) -> SmoothReport {
+    let distortion_bound = f64::from(k) * tol * (1.0 + 8.0 * UNIT_ROUNDOFF) + rounding;
+    SmoothReport {
+        tolerance: tol,
+        counts,
+        passes,
+        budget_hit: budget.hit(),
+        max_adjustments: k,
+        distortion_bound,
+        max_displacement,
+        epsilon: distortion_bound,
+        reverted: None,
+    }
 }
 
 /// One pass of the phases that work on neighbourhoods (everything but

@@ -37,12 +37,12 @@
 use super::budget::Budget;
 use super::resolve::is_simple;
 use super::work::Work;
-use super::{geom, local_phases, smooth_in_range};
+use super::{geom, local_phases, report, smooth_in_range};
 use crate::mesh::region::{near_facets, widen, Facets};
 use crate::mesh::{MAX_GROWTHS, REACH};
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
 use rayon::prelude::*;
-use robust_arith::{lex_cmp, UNIT_ROUNDOFF};
+use robust_arith::lex_cmp;
 use rustc_hash::FxHashMap;
 use topology::{Edge2, Point2, Point3, PolygonSet2};
 
@@ -258,22 +258,19 @@ fn smooth_region(
             .filter_map(|(i, t)| t.map(|v| (c.sub.vertex(i as u32), w.pts[v as usize])))
             .map(|(p, q)| geom::dist2(&p, &q).sqrt())
             .fold(0.0f64, f64::max);
-        let distortion_bound = f64::from(k) * delta * (1.0 + 8.0 * UNIT_ROUNDOFF) + crossing_error;
         return Ok(Some(Region {
             edges: new_edges,
             created,
             region,
-            report: SmoothReport {
-                tolerance: delta,
+            report: report(
+                delta,
                 counts,
-                passes: 1,
-                budget_hit: budget.hit(),
-                max_adjustments: k,
-                distortion_bound,
+                1,
+                &budget,
+                k,
+                crossing_error,
                 max_displacement,
-                epsilon: distortion_bound,
-                reverted: None,
-            },
+            ),
         }));
     }
     Ok(None)
@@ -281,7 +278,7 @@ fn smooth_region(
 
 /// The set with the region's edges replaced by the smoothed ones, the
 /// vertices no edge uses dropped (the rest keep their order, created ones
-/// follow), and the number of vertices it has.
+/// follow).
 fn put_back(set: &PolygonSet2, r: &Region) -> PolygonSet2 {
     let n = set.vertex_count();
     let mut used = vec![false; n + r.created.len()];
