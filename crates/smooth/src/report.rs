@@ -34,6 +34,36 @@ pub struct SmoothCounts {
 }
 
 impl SmoothCounts {
+    /// Adds the counts of a later run on this run's output.
+    pub(crate) fn add(&mut self, o: &SmoothCounts) {
+        let SmoothCounts {
+            vertices_merged,
+            edges_cracked_by_vertex,
+            edges_cracked_between_edges,
+            vertices_created,
+            half_edges_cancelled,
+            facets_cancelled,
+            facets_partially_cancelled,
+            zero_length_edges_removed,
+            empty_facets_removed,
+            unreferenced_vertices_removed,
+            facets_retriangulated,
+            crossings_resolved,
+        } = *o;
+        self.vertices_merged += vertices_merged;
+        self.edges_cracked_by_vertex += edges_cracked_by_vertex;
+        self.edges_cracked_between_edges += edges_cracked_between_edges;
+        self.vertices_created += vertices_created;
+        self.half_edges_cancelled += half_edges_cancelled;
+        self.facets_cancelled += facets_cancelled;
+        self.facets_partially_cancelled += facets_partially_cancelled;
+        self.zero_length_edges_removed += zero_length_edges_removed;
+        self.empty_facets_removed += empty_facets_removed;
+        self.unreferenced_vertices_removed += unreferenced_vertices_removed;
+        self.facets_retriangulated += facets_retriangulated;
+        self.crossings_resolved += crossings_resolved;
+    }
+
     /// The number of adjustments made: every count above except the
     /// bookkeeping removals and re-triangulations.
     pub fn adjustments(&self) -> u64 {

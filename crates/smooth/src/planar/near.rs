@@ -178,6 +178,7 @@ fn smooth_region(
     set: &PolygonSet2,
     options: &SmoothOptions,
     contacts: &[[Point2; 2]],
+    also: Option<&[bool]>,
 ) -> Result<Option<Region>, SmoothError> {
     let delta = options.tolerance;
     let lifted: Vec<Point3> = set.vertices().iter().map(|p| [p[0], p[1], 0.0]).collect();
@@ -188,6 +189,11 @@ fn smooth_region(
     let edges = set.edges();
     let mut region = near_facets(&lifted, edges, &boxes, REACH * delta);
     drop(lifted);
+    if let Some(also) = also {
+        for (r, &a) in region.iter_mut().zip(also) {
+            *r |= a;
+        }
+    }
     let count = region.iter().filter(|&&r| r).count();
     if most_of(count, edges.len()) {
         return Ok(None);
@@ -278,8 +284,8 @@ fn smooth_region(
 
 /// The set with the region's edges replaced by the smoothed ones, the
 /// vertices no edge uses dropped (the rest keep their order, created ones
-/// follow).
-fn put_back(set: &PolygonSet2, r: &Region) -> PolygonSet2 {
+/// follow), and the global index of each of its vertices.
+fn put_back(set: &PolygonSet2, r: &Region) -> (PolygonSet2, Vec<u32>) {
     let n = set.vertex_count();
     let mut used = vec![false; n + r.created.len()];
     let kept = set
@@ -295,9 +301,11 @@ fn put_back(set: &PolygonSet2, r: &Region) -> PolygonSet2 {
     }
     let mut map = vec![u32::MAX; used.len()];
     let mut pts = Vec::with_capacity(used.len());
+    let mut global = Vec::with_capacity(used.len());
     for (i, &u) in used.iter().enumerate() {
         if u {
             map[i] = pts.len() as u32;
+            global.push(i as u32);
             pts.push(if i < n {
                 set.vertex(i as u32)
             } else {
@@ -313,7 +321,37 @@ fn put_back(set: &PolygonSet2, r: &Region) -> PolygonSet2 {
             mult: e.mult,
         })
         .collect();
-    PolygonSet2::from_parts(pts, edges)
+    (PolygonSet2::from_parts(pts, edges), global)
+}
+
+/// The vertices of `set` that straight-through removal looks at: two
+/// edges, one in and one out with the same multiplicity, and the vertex
+/// exactly on the open segment between the two neighbours.
+fn straight_through(set: &PolygonSet2) -> Vec<u32> {
+    let n = set.vertex_count();
+    // Per vertex: edge count, and the (neighbour, signed multiplicity) of
+    // its first two edges (positive: out of the vertex).
+    let mut count = vec![0u8; n];
+    let mut ends = vec![[(u32::MAX, 0i32); 2]; n];
+    for e in set.edges() {
+        for (v, o, m) in [(e.start, e.end, e.mult), (e.end, e.start, -e.mult)] {
+            let c = &mut count[v as usize];
+            if let Some(slot) = ends[v as usize].get_mut(usize::from(*c)) {
+                *slot = (o, m);
+            }
+            *c = c.saturating_add(1);
+        }
+    }
+    (0..n)
+        .filter(|&v| {
+            let [(a, ma), (b, mb)] = ends[v];
+            count[v] == 2
+                && ma == -mb
+                && ma != 0
+                && geom::on_open_segment(set.vertex(v as u32), set.vertex(a), set.vertex(b))
+        })
+        .map(|v| v as u32)
+        .collect()
 }
 
 /// Smooths a polygon set only near `contacts` (boxes `[lo, hi]`, such as
@@ -367,16 +405,43 @@ pub fn smooth_polygon_set_near(
     if most_of(contacts.len(), set.edge_count()) {
         return smooth_in_range(set, options);
     }
-    let Some(region) = smooth_region(set, options, contacts)? else {
+    let Some(region) = smooth_region(set, options, contacts, None)? else {
         return smooth_in_range(set, options);
     };
-    let shape = put_back(set, &region);
+    let (mut shape, _) = put_back(set, &region);
+    let mut report = region.report;
+    // Straight-through removal also joins an operand's own straight sides
+    // wherever they are, far from the contacts or across the region's
+    // cut: such vertices left in the result send their edges (and one
+    // ring more) through the phases once more, on the result.
+    let loose = straight_through(&shape);
+    if !loose.is_empty() {
+        let mut mark = vec![false; shape.vertex_count()];
+        for v in loose {
+            mark[v as usize] = true;
+        }
+        let also: Vec<bool> = shape
+            .edges()
+            .iter()
+            .map(|e| mark[e.start as usize] || mark[e.end as usize])
+            .collect();
+        let Some(second) = smooth_region(&shape, options, &[], Some(&also))? else {
+            return smooth_in_range(set, options);
+        };
+        shape = put_back(&shape, &second).0;
+        report.counts.add(&second.report.counts);
+        report.budget_hit |= second.report.budget_hit;
+        report.max_adjustments += second.report.max_adjustments;
+        report.distortion_bound += second.report.distortion_bound;
+        report.max_displacement += second.report.max_displacement;
+        report.epsilon = report.distortion_bound;
+    }
     if !is_simple(&shape, shape.vertex_count())? {
         return smooth_in_range(set, options);
     }
     Ok(Smoothed {
         shape: canonical(shape),
-        report: region.report,
+        report,
     })
 }
 

@@ -223,3 +223,35 @@ fn bad_input_is_refused_as_whole_smoothing_refuses_it() {
         );
     }
 }
+
+/// An operand's own exactly collinear vertex, far from every contact:
+/// whole smoothing joins its two edges, and so does near smoothing (the
+/// check for straight-through vertices left anywhere; New York's borough
+/// map carries dozens), so both give the same set.
+#[test]
+fn straight_through_vertices_away_from_the_contacts_are_joined_as_whole_smoothing_joins_them() {
+    let opts = SmoothOptions::new(1e-6);
+    // A hexagon with a vertex in the middle of its far left side (whose
+    // edges' boxes are far from every contact box), and a square touching
+    // its right side across a gap below the tolerance.
+    let a = set_of(&[vec![
+        [0.0, 0.0],
+        [3.0, -1.0],
+        [4.0, 0.0],
+        [4.0, 1.0],
+        [3.0, 2.0],
+        [0.0, 1.0],
+        [0.0, 0.5],
+    ]]);
+    let b = set_of(&[square(4.0 + 1e-9, 0.0, 1.0)]);
+    for op in OPS {
+        let (out, contacts) = boolean_with_contacts(&a, &b, op, 1e-6).unwrap();
+        let whole = smooth_polygon_set(&out.shape, &opts).unwrap();
+        let near = smooth_polygon_set_near(&out.shape, &opts, &contacts.boxes).unwrap();
+        assert_eq!(near.shape, whole.shape, "{op:?}");
+        let left = |s: &PolygonSet2| s.vertices().iter().filter(|p| p[0] == 0.0).count();
+        if op != BooleanOp::Intersection {
+            assert_eq!(left(&near.shape), 2, "{op:?}: the left side is one edge");
+        }
+    }
+}
