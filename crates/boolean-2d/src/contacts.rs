@@ -10,10 +10,10 @@
 //! conservative segment distance test then keeps the pairs that may come
 //! within the proximity.
 
-use crate::fast::{overlapping_pairs, EdgeBox};
+use crate::fast::{edge_boxes, overlapping_pairs, EdgeBox};
 use crate::{validate, BooleanError, BooleanOp, BooleanOutput};
 use rayon::prelude::*;
-use robust_arith::{orient2d, total_order_key, Point2};
+use robust_arith::{orient2d, Point2};
 use std::cmp::Ordering;
 use topology::{Operand, PolygonSet2};
 
@@ -48,27 +48,15 @@ fn grow(lo: f64, hi: f64, d: f64) -> (f64, f64) {
 }
 
 /// The boxes of `set`'s edges of non-zero multiplicity, grown by `d` on
-/// every side, sorted by `x0` (as the sweep needs).
+/// every side, sorted by `x0` (as the sweep needs): the Boolean's boxes
+/// grown in place, which keeps them sorted (`x0 - d` rounded down never
+/// decreases as `x0` grows).
 fn grown_boxes(set: &PolygonSet2, d: f64) -> Vec<EdgeBox> {
-    let mut boxes: Vec<EdgeBox> = set
-        .edges()
-        .iter()
-        .enumerate()
-        .filter(|(_, e)| e.mult != 0)
-        .map(|(i, e)| {
-            let (p, q) = set.edge_points(e);
-            let (x0, x1) = grow(p[0].min(q[0]), p[0].max(q[0]), d);
-            let (y0, y1) = grow(p[1].min(q[1]), p[1].max(q[1]), d);
-            EdgeBox {
-                x0,
-                x1,
-                y0,
-                y1,
-                index: i as u32,
-            }
-        })
-        .collect();
-    boxes.sort_unstable_by_key(|b| (total_order_key(b.x0), b.index));
+    let mut boxes = edge_boxes(set, 0.0);
+    for b in &mut boxes {
+        (b.x0, b.x1) = grow(b.x0, b.x1, d);
+        (b.y0, b.y1) = grow(b.y0, b.y1, d);
+    }
     boxes
 }
 

@@ -118,7 +118,7 @@ pub(crate) struct EdgeBox {
 /// The y range is widened by `margin` on both sides. x is never widened:
 /// `X01` and `X10` compare x coordinates exactly (`S00`, eq. 4.1), so an
 /// edge whose closed x range misses a vertex's x has `X01 = X10 = 0` there.
-fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
+pub(crate) fn edge_boxes(set: &PolygonSet2, margin: f64) -> Vec<EdgeBox> {
     let edges = set.edges();
     // Sort `(x0 by f64::total_cmp, edge index)` as integer keys (the same
     // order, cheaper to compare and move than whole boxes).
@@ -205,6 +205,32 @@ fn oriented(from_a: bool, entering: u32, other: u32) -> (u32, u32) {
     }
 }
 
+/// Scans one list of active boxes for the `entering` box (A's when
+/// `from_a`): drops the boxes that ended to its left (`x1 < x0`: no later
+/// box can overlap them either, boxes enter by ascending `x0`) and
+/// reports each other box that overlaps it in y and that `here` accepts.
+#[inline]
+fn scan(
+    list: &mut Vec<EdgeBox>,
+    entering: EdgeBox,
+    from_a: bool,
+    pairs: &mut Vec<(u32, u32)>,
+    here: impl Fn(&EdgeBox) -> bool,
+) {
+    let mut m = 0;
+    while m < list.len() {
+        let o = list[m];
+        if o.x1 < entering.x0 {
+            list.swap_remove(m);
+            continue;
+        }
+        if o.y0 <= entering.y1 && entering.y0 <= o.y1 && here(&o) {
+            pairs.push(oriented(from_a, entering.index, o.index));
+        }
+        m += 1;
+    }
+}
+
 /// Boxes per y-bucket of [`pairs_by_buckets`] (about), and the most
 /// buckets.
 const BUCKET_BOXES: usize = 32;
@@ -252,20 +278,10 @@ fn pairs_by_buckets(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<
         };
         let (first, last) = (bucket(entering.y0), bucket(entering.y1));
         for k in first..=last {
-            let list = &mut others[k];
-            work += list.len() + 1;
-            let mut m = 0;
-            while m < list.len() {
-                let o = list[m];
-                if o.x1 < entering.x0 {
-                    list.swap_remove(m);
-                    continue;
-                }
-                if o.y0 <= entering.y1 && entering.y0 <= o.y1 && k == first.max(bucket(o.y0)) {
-                    pairs.push(oriented(from_a, entering.index, o.index));
-                }
-                m += 1;
-            }
+            work += others[k].len() + 1;
+            scan(&mut others[k], entering, from_a, &mut pairs, |o| {
+                k == first.max(bucket(o.y0))
+            });
             own[k].push(entering);
         }
         if check.exceeded(work, entered + 1 + pairs.len()) {
@@ -294,18 +310,7 @@ fn pairs_by_lists(a: &[EdgeBox], b: &[EdgeBox], budget: Budget) -> Option<Vec<(u
             (&mut active_a, &mut active_b)
         };
         work += others.len();
-        let mut k = 0;
-        while k < others.len() {
-            let o = others[k];
-            if o.x1 < entering.x0 {
-                others.swap_remove(k);
-                continue;
-            }
-            if o.y0 <= entering.y1 && entering.y0 <= o.y1 {
-                pairs.push(oriented(from_a, entering.index, o.index));
-            }
-            k += 1;
-        }
+        scan(others, entering, from_a, &mut pairs, |_| true);
         own.push(entering);
         if check.exceeded(work, entered + 1 + pairs.len()) {
             return None;

@@ -41,8 +41,6 @@ use super::{geom, local_phases, report, smooth_in_range};
 use crate::mesh::region::{near_facets, widen, Facets};
 use crate::mesh::{MAX_GROWTHS, REACH};
 use crate::{SmoothCounts, SmoothError, SmoothOptions, SmoothReport, Smoothed};
-use rayon::prelude::*;
-use robust_arith::lex_cmp;
 use rustc_hash::FxHashMap;
 use topology::{Edge2, Point2, Point3, PolygonSet2};
 
@@ -72,6 +70,15 @@ impl Facets for [Edge2] {
     }
     fn half_edges(&self, f: usize) -> impl Iterator<Item = (u32, u32)> {
         std::iter::once((self[f].start, self[f].end))
+    }
+}
+
+/// `e` with its vertices renamed by `to`.
+fn renamed(e: &Edge2, to: impl Fn(u32) -> u32) -> Edge2 {
+    Edge2 {
+        start: to(e.start),
+        end: to(e.end),
+        mult: e.mult,
     }
 }
 
@@ -114,11 +121,7 @@ fn cut(set: &PolygonSet2, region: &[bool]) -> Cut {
         .iter()
         .zip(region)
         .filter(|(_, &r)| r)
-        .map(|(e, _)| Edge2 {
-            start: local[e.start as usize],
-            end: local[e.end as usize],
-            mult: e.mult,
-        })
+        .map(|(e, _)| renamed(e, |v| local[v as usize]))
         .collect();
     let pts = global.iter().map(|&v| set.vertex(v)).collect();
     Cut {
@@ -229,18 +232,11 @@ fn smooth_region(
         let new_edges: Vec<Edge2> = smoothed
             .edges()
             .iter()
-            .map(|e| Edge2 {
-                start: global[e.start as usize],
-                end: global[e.end as usize],
-                mult: e.mult,
-            })
+            .map(|e| renamed(e, |v| global[v as usize]))
             .collect();
         let before = flows(c.sub.edges().iter().map(|e| {
-            (
-                c.global[e.start as usize],
-                c.global[e.end as usize],
-                i64::from(e.mult),
-            )
+            let g = renamed(e, |v| c.global[v as usize]);
+            (g.start, g.end, i64::from(g.mult))
         }));
         let after = flows(
             new_edges
@@ -284,8 +280,8 @@ fn smooth_region(
 
 /// The set with the region's edges replaced by the smoothed ones, the
 /// vertices no edge uses dropped (the rest keep their order, created ones
-/// follow), and the global index of each of its vertices.
-fn put_back(set: &PolygonSet2, r: &Region) -> (PolygonSet2, Vec<u32>) {
+/// follow).
+fn put_back(set: &PolygonSet2, r: &Region) -> PolygonSet2 {
     let n = set.vertex_count();
     let mut used = vec![false; n + r.created.len()];
     let kept = set
@@ -301,11 +297,9 @@ fn put_back(set: &PolygonSet2, r: &Region) -> (PolygonSet2, Vec<u32>) {
     }
     let mut map = vec![u32::MAX; used.len()];
     let mut pts = Vec::with_capacity(used.len());
-    let mut global = Vec::with_capacity(used.len());
     for (i, &u) in used.iter().enumerate() {
         if u {
             map[i] = pts.len() as u32;
-            global.push(i as u32);
             pts.push(if i < n {
                 set.vertex(i as u32)
             } else {
@@ -314,14 +308,10 @@ fn put_back(set: &PolygonSet2, r: &Region) -> (PolygonSet2, Vec<u32>) {
         }
     }
     let edges = edges
-        .into_iter()
-        .map(|e| Edge2 {
-            start: map[e.start as usize],
-            end: map[e.end as usize],
-            mult: e.mult,
-        })
+        .iter()
+        .map(|e| renamed(e, |v| map[v as usize]))
         .collect();
-    (PolygonSet2::from_parts(pts, edges), global)
+    PolygonSet2::from_parts(pts, edges)
 }
 
 /// The vertices of `set` that straight-through removal looks at: two
@@ -408,12 +398,12 @@ pub fn smooth_polygon_set_near(
     let Some(region) = smooth_region(set, options, contacts, None)? else {
         return smooth_in_range(set, options);
     };
-    let (mut shape, _) = put_back(set, &region);
+    let mut shape = put_back(set, &region);
     let mut report = region.report;
     // Straight-through removal also joins an operand's own straight sides
     // wherever they are, far from the contacts or across the region's
-    // cut: such vertices left in the result send their edges (and one
-    // ring more) through the phases once more, on the result.
+    // cut: such vertices left in the result send their edges through the
+    // phases once more, on the result.
     let loose = straight_through(&shape);
     if !loose.is_empty() {
         let mut mark = vec![false; shape.vertex_count()];
@@ -428,7 +418,7 @@ pub fn smooth_polygon_set_near(
         let Some(second) = smooth_region(&shape, options, &[], Some(&also))? else {
             return smooth_in_range(set, options);
         };
-        shape = put_back(&shape, &second).0;
+        shape = put_back(&shape, &second);
         report.counts.add(&second.report.counts);
         report.budget_hit |= second.report.budget_hit;
         report.max_adjustments += second.report.max_adjustments;
@@ -439,35 +429,8 @@ pub fn smooth_polygon_set_near(
     if !is_simple(&shape, shape.vertex_count())? {
         return smooth_in_range(set, options);
     }
-    Ok(Smoothed {
-        shape: canonical(shape),
-        report,
-    })
-}
-
-/// The canonical form whole smoothing gives its output (`Work::into_canonical`):
-/// vertices sorted lexicographically by position, edges by (start, end),
-/// on a set whose vertices are all referenced and distinct and whose
-/// edges have multiplicity 1. Sorted in parallel: the one step whose cost
-/// is the whole result's size (besides the check's sweep).
-fn canonical(set: PolygonSet2) -> PolygonSet2 {
-    let (pts, edges) = set.into_parts();
-    let mut order: Vec<u32> = (0..pts.len() as u32).collect();
-    order
-        .par_sort_unstable_by(|&x, &y| lex_cmp(&pts[x as usize], &pts[y as usize]).then(x.cmp(&y)));
-    let mut rank = vec![0u32; pts.len()];
-    for (r, &v) in order.iter().enumerate() {
-        rank[v as usize] = r as u32;
-    }
-    let sorted: Vec<Point2> = order.iter().map(|&v| pts[v as usize]).collect();
-    let mut edges: Vec<Edge2> = edges
-        .into_iter()
-        .map(|e| Edge2 {
-            start: rank[e.start as usize],
-            end: rank[e.end as usize],
-            mult: e.mult,
-        })
-        .collect();
-    edges.par_sort_unstable_by_key(|e| (e.start, e.end, e.mult));
-    PolygonSet2::from_parts(sorted, edges)
+    // Whole smoothing's canonical order (every vertex is referenced, so
+    // nothing is counted).
+    let (shape, _) = Work::from_set(&shape).into_canonical(&mut SmoothCounts::default());
+    Ok(Smoothed { shape, report })
 }

@@ -5,6 +5,7 @@
 //! in 2D) and the removal of zero-length edges are one normalisation.
 
 use crate::SmoothCounts;
+use rayon::prelude::*;
 use robust_arith::{lex_cmp, Point2};
 use topology::{Edge2, PolygonSet2};
 
@@ -175,8 +176,11 @@ impl Work {
     /// end). Smoothing a canonical clean set returns it bit for bit.
     pub fn into_canonical(mut self, counts: &mut SmoothCounts) -> (PolygonSet2, Vec<Option<u32>>) {
         self.remove_unreferenced(counts);
+        // Parallel sorts: the one step of smoothing near contacts whose
+        // cost is the whole result's size besides the check's sweep. The
+        // index breaks ties, so the order is that of any sort.
         let mut order: Vec<u32> = (0..self.pts.len() as u32).collect();
-        order.sort_by(|&x, &y| {
+        order.par_sort_unstable_by(|&x, &y| {
             lex_cmp(&self.pts[x as usize], &self.pts[y as usize]).then(x.cmp(&y))
         });
         let mut rank = vec![0u32; self.pts.len()];
@@ -185,7 +189,7 @@ impl Work {
         }
         let pts: Vec<Point2> = order.iter().map(|&v| self.pts[v as usize]).collect();
         let mut edges = self.directed_edges(|v| rank[v as usize]);
-        edges.sort_unstable_by_key(|e| (e.start, e.end, e.mult));
+        edges.par_sort_unstable_by_key(|e| (e.start, e.end, e.mult));
         let tracked = self
             .tracked
             .iter()
