@@ -11,10 +11,10 @@ use crate::io::{
     triangles_stl, triangles_to_3mf, triangles_to_stl, welded,
     wrong_dimension_of as wrong_dimension,
 };
-use crate::report::{Boolean3Report, MeshCounts, SetCounts, SmoothFileReport};
+use crate::report::{MeshCounts, SetCounts};
 use crate::{
     layout_polygons, mesh_to_glb, mesh_to_gltf, polygon_set_to_svg, polygons_to_geojson,
-    polygons_to_wkt, CsgReport, FileKind, MeshWriteOptions, RingOrientation, UmbraError,
+    polygons_to_wkt, FileKind, MeshWriteOptions, RingOrientation, UmbraError,
 };
 use std::time::Instant;
 use topology::{Facet, PolygonMesh, PolygonSet2};
@@ -112,6 +112,9 @@ pub fn encode_polygon_set(
 /// written rather than what was computed ([`EncodedMesh::written`]).
 #[derive(Clone, Debug)]
 pub struct EncodedMesh {
+    /// The file's name as given to the encoder, under which the reports
+    /// count what it holds ([`crate::WrittenMeshReport::written_as`]).
+    pub file: String,
     /// The file's contents.
     pub bytes: Vec<u8>,
     /// For a format of `f32` coordinates (binary STL, glTF), the mesh
@@ -252,52 +255,9 @@ pub fn encode_mesh_with(
         ms,
     });
     Ok(EncodedMesh {
+        file: file.to_owned(),
         bytes,
         rounded,
         triangulated,
     })
-}
-
-impl Boolean3Report {
-    /// The report once the result was encoded for writing as `encoded`
-    /// (the output counted as the file holds it, under `output_file`):
-    /// [`Boolean3Report::rounded_to_f32`] for a format of `f32`
-    /// coordinates; for facets split into triangles
-    /// ([`EncodedMesh::triangulated`]), the output counted again and its
-    /// validity checked again; unchanged otherwise.
-    pub fn written_as(self, output_file: impl Into<String>, encoded: &EncodedMesh) -> Self {
-        match (&encoded.rounded, &encoded.triangulated) {
-            (Some(r), _) => self.rounded_to_f32(output_file, r),
-            (None, Some(t)) => self.triangulated(output_file, t),
-            (None, None) => self,
-        }
-    }
-}
-
-impl SmoothFileReport<MeshCounts> {
-    /// The report once the smoothed mesh was encoded for writing as
-    /// `encoded`, as [`Boolean3Report::written_as`] does.
-    pub fn written_as(self, output_file: impl Into<String>, encoded: &EncodedMesh) -> Self {
-        match (&encoded.rounded, &encoded.triangulated) {
-            (Some(r), _) => self.rounded_to_f32(output_file, r),
-            (None, Some(t)) => self.triangulated(output_file, t),
-            (None, None) => self,
-        }
-    }
-}
-
-impl CsgReport {
-    /// The report once the result was encoded for writing as `encoded`:
-    /// [`CsgReport::rounded_to_f32`] for a format of `f32` coordinates;
-    /// the output described again (counts, validity, manifoldness,
-    /// volume, bounds) as the file holds it when its facets were split
-    /// into triangles ([`EncodedMesh::triangulated`]); unchanged
-    /// otherwise.
-    pub fn written_as(self, encoded: &EncodedMesh) -> Self {
-        match (&encoded.rounded, &encoded.triangulated) {
-            (Some(r), _) => self.rounded_to_f32(r),
-            (None, Some(t)) => self.triangulated(t),
-            (None, None) => self,
-        }
-    }
 }

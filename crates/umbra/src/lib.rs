@@ -55,7 +55,8 @@
 //! - Output encoded in memory before anything is written:
 //!   [`encode_polygon_set`] (which also counts the rings as written) and
 //!   [`encode_mesh`] ([`encode_mesh_with`] also gives the mesh the file
-//!   holds, [`EncodedMesh::written`], which the reports count).
+//!   holds, [`EncodedMesh::written`], which the reports count through
+//!   [`WrittenMeshReport::written_as`]).
 //!
 //! # Example
 //!
@@ -131,6 +132,7 @@ pub use render::*;
 pub use report::{
     fill_rule_name, Boolean2Report, Boolean3Report, DemoReport, FileReport, MeshCounts, Operands,
     SetCounts, SimplifyReport, SmoothFileReport, SweepReport, Timings, WrittenFile,
+    WrittenMeshReport,
 };
 pub use robust_arith::{
     orient2d, orient3d, validate_coordinate, ArithError, Point2, Point3, MAX_COORDINATE,

@@ -10,7 +10,7 @@
 //! operation and that rounding's repair, never file input or output.
 
 use crate::ops::{SolidOutput, Via};
-use crate::{CsgReport, F32Rounding, RoundedMesh};
+use crate::{CsgReport, EncodedMesh, F32Rounding, RoundedMesh};
 use boolean_2d::{BooleanOutput, Timings as BooleanTimings};
 use serde::Serialize;
 use simplify_2d::{FillRule, Simplified, SweepStats};
@@ -462,51 +462,62 @@ impl Boolean3Report {
         self.timings_ms.total += smooth_ms;
         self
     }
+}
 
-    /// The report once the result was rounded to `f32` for writing
-    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output counted
-    /// again as written under `output_file`, validity checked again, the
-    /// rounding report kept, `total` including the rounding.
-    pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
-        record_rounding(
-            rounded,
-            output_file.into(),
-            &mut self.output,
-            (&mut self.topologically_valid, &mut self.topology_error),
-            &mut self.f32_rounding,
-            &mut self.timings_ms,
-        );
+/// A 3D report that counts its output as the file written holds it: for a
+/// format of `f32` coordinates the mesh as rounded and repaired (with the
+/// rounding's report and time), for facets split into triangles the
+/// triangles ([`crate::EncodedMesh`]). One rule for every report that
+/// describes a mesh file: [`Boolean3Report`], [`SmoothFileReport`] of a
+/// mesh and [`CsgReport`].
+pub trait WrittenMeshReport: Sized {
+    /// The report with its output described as `written`, the mesh the
+    /// file `file` holds: counts and validity (and for a CSG report
+    /// manifoldness, volume and bounds) again.
+    fn describe_written(self, file: &str, written: &PolygonMesh) -> Self;
+
+    /// The report with the rounding to `f32` recorded: its report kept,
+    /// its time in the timings and in `total`.
+    fn record_f32_rounding(self, rounded: &RoundedMesh) -> Self;
+
+    /// The report once the result was encoded as `encoded`: described as
+    /// the file holds it, the rounding recorded for a format of `f32`
+    /// coordinates; unchanged when the facets were written one for one.
+    fn written_as(self, encoded: &EncodedMesh) -> Self {
+        match (&encoded.rounded, &encoded.triangulated) {
+            (Some(r), _) => self
+                .describe_written(&encoded.file, &r.mesh)
+                .record_f32_rounding(r),
+            (None, Some(t)) => self.describe_written(&encoded.file, t),
+            (None, None) => self,
+        }
+    }
+}
+
+impl WrittenMeshReport for Boolean3Report {
+    fn describe_written(mut self, file: &str, written: &PolygonMesh) -> Self {
+        (self.output, self.topologically_valid, self.topology_error) = counted(file, written);
+        self
+    }
+
+    fn record_f32_rounding(mut self, rounded: &RoundedMesh) -> Self {
+        record_rounding(rounded, &mut self.f32_rounding, &mut self.timings_ms);
         self
     }
 }
 
-impl Boolean3Report {
-    /// The report once the result was written with its facets split into
-    /// triangles (`written`, as `EncodedMesh::triangulated` gives it): the
-    /// output counted again as written under `output_file`, validity
-    /// checked again.
-    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
-        self.output = MeshCounts::of_mesh(output_file, written);
-        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
-        self
-    }
+/// The counts and validity of a mesh written as `file`.
+fn counted(file: &str, written: &PolygonMesh) -> (MeshCounts, bool, Option<String>) {
+    let (valid, error) = validity(written.check_topology());
+    (MeshCounts::of_mesh(file, written), valid, error)
 }
 
-/// What rounding to `f32` for writing puts in a 3D report, shared by the
-/// report types that have these fields: the output counted again as
-/// written under `output_file`, validity checked again, the rounding
-/// report kept, `total` including the rounding.
+/// The rounding's report and time in a report's fields.
 fn record_rounding(
     rounded: &RoundedMesh,
-    output_file: String,
-    output: &mut MeshCounts,
-    validity_of: (&mut bool, &mut Option<String>),
     f32_rounding: &mut Option<F32Rounding>,
     timings: &mut Timings,
 ) {
-    let (valid, error) = validity(rounded.mesh.check_topology());
-    *output = MeshCounts::of_mesh(output_file, &rounded.mesh);
-    (*validity_of.0, *validity_of.1) = (valid, error);
     *f32_rounding = Some(rounded.report.clone());
     timings.round_f32 = Some(rounded.ms);
     timings.total += rounded.ms;
@@ -567,30 +578,14 @@ impl<C> SmoothFileReport<C> {
     }
 }
 
-impl SmoothFileReport<MeshCounts> {
-    /// The report once the smoothed mesh was rounded to `f32` for writing
-    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output counted
-    /// again as written under `output_file`, validity checked again, the
-    /// rounding report kept, `total` including the rounding.
-    pub fn rounded_to_f32(mut self, output_file: impl Into<String>, rounded: &RoundedMesh) -> Self {
-        record_rounding(
-            rounded,
-            output_file.into(),
-            &mut self.output,
-            (&mut self.topologically_valid, &mut self.topology_error),
-            &mut self.f32_rounding,
-            &mut self.timings_ms,
-        );
+impl WrittenMeshReport for SmoothFileReport<MeshCounts> {
+    fn describe_written(mut self, file: &str, written: &PolygonMesh) -> Self {
+        (self.output, self.topologically_valid, self.topology_error) = counted(file, written);
         self
     }
 
-    /// The report once the smoothed mesh was written with its facets split
-    /// into triangles (`written`, as `EncodedMesh::triangulated` gives
-    /// it): the output counted again as written under `output_file`,
-    /// validity checked again.
-    pub fn triangulated(mut self, output_file: impl Into<String>, written: &PolygonMesh) -> Self {
-        self.output = MeshCounts::of_mesh(output_file, written);
-        (self.topologically_valid, self.topology_error) = validity(written.check_topology());
+    fn record_f32_rounding(mut self, rounded: &RoundedMesh) -> Self {
+        record_rounding(rounded, &mut self.f32_rounding, &mut self.timings_ms);
         self
     }
 }

@@ -24,7 +24,7 @@ use umbra::{
     encode_mesh_with, encode_polygon_set, read_mesh, regularized_operands, smooth_set_result,
     smooth_solid_near, turned_outward, Boolean2Report, Boolean3Report, BooleanOp, Contacts,
     CsgNode, FileKind, MeshCounts, MeshReadOptions, MeshVariant, Operands, PlanarContacts,
-    PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via,
+    PolygonSet2, ReadOptions, SetCounts, SmoothOptions, UmbraError, Via, WrittenMeshReport,
 };
 
 /// Union, intersection, difference or (2D only) xor of two or more files
@@ -360,7 +360,7 @@ impl BooleanArgs {
         // coordinates, the mesh as rounded and repaired; for facets split
         // into triangles, the triangles.
         let encoded = encode_mesh_with(out_kind, &mesh, self.out.mesh_options(), &out_file)?;
-        report = report.written_as(out_file.clone(), &encoded);
+        report = report.written_as(&encoded);
         self.out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
             warn_f32_defects(&rounded.report, out_path);

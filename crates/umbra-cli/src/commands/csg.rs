@@ -11,7 +11,10 @@ use std::path::PathBuf;
 use std::process::ExitCode;
 use std::time::Instant;
 use anyhow::Context;
-use umbra::{encode_mesh_with, evaluate_csg_with_progress, read_csg_file, CsgNode, FileKind};
+use umbra::{
+    encode_mesh_with, evaluate_csg_with_progress, read_csg_file, CsgNode, FileKind,
+    WrittenMeshReport,
+};
 
 /// The script form, shown by `umbra csg --help`.
 const SCRIPT_HELP: &str = "\

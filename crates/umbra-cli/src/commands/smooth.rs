@@ -13,7 +13,7 @@ use umbra::{
     as_triangle_mesh, default_mesh_tolerance, default_set_tolerance, encode_mesh_with,
     encode_polygon_set, read_mesh, smooth_polygon_set, smooth_solid, FileKind,
     MeshCounts, MeshReadOptions, MeshVariant, ReadOptions, SetCounts, SmoothFileReport,
-    SmoothOptions, SmoothReport, UmbraError,
+    SmoothOptions, SmoothReport, UmbraError, WrittenMeshReport,
 };
 
 /// Smooth a mesh (.obj, .off, .stl, .ply, .3mf, .glb, .gltf) or a 2D file
@@ -87,7 +87,7 @@ impl SmoothArgs {
         // The report describes the file: for a format of `f32`
         // coordinates, the mesh as rounded and repaired; for facets split
         // into triangles, the triangles.
-        let report = report.written_as(out_file, &encoded);
+        let report = report.written_as(&encoded);
         self.out.write(&encoded.bytes, &report)?;
         if let Some(rounded) = &encoded.rounded {
             super::warn_f32_defects(&rounded.report, &self.out.output);

@@ -178,27 +178,20 @@ impl CsgReport {
         self.timings_ms.total += smooth_ms;
         self
     }
+}
 
-    /// The report once the result was rounded to `f32` for writing
-    /// (`rounded`, as `EncodedMesh::rounded` gives it): the output
-    /// described as written (counts, validity, manifoldness, volume,
-    /// bounds), the rounding report kept, `total` including the rounding.
-    pub fn rounded_to_f32(mut self, rounded: &RoundedMesh) -> Self {
-        self.describe(&rounded.mesh);
+impl crate::WrittenMeshReport for CsgReport {
+    /// The output described as written (counts, validity, manifoldness,
+    /// volume, bounds); a CSG report names no file.
+    fn describe_written(mut self, _file: &str, written: &PolygonMesh) -> Self {
+        self.describe(written);
+        self
+    }
+
+    fn record_f32_rounding(mut self, rounded: &RoundedMesh) -> Self {
         self.f32_rounding = Some(rounded.report.clone());
         self.timings_ms.round_f32 = Some(rounded.ms);
         self.timings_ms.total += rounded.ms;
-        self
-    }
-}
-
-impl CsgReport {
-    /// The report once the result was written with its facets split into
-    /// triangles (`written`, as `EncodedMesh::triangulated` gives it): the
-    /// output described as written (counts, validity, manifoldness,
-    /// volume, bounds).
-    pub fn triangulated(mut self, written: &PolygonMesh) -> Self {
-        self.describe(written);
         self
     }
 }

@@ -7,7 +7,7 @@
 use umbra::{
     boolean_solid, check_mesh, cuboid, encode_mesh_with, evaluate_csg, parse_3mf, parse_csg,
     parse_obj, parse_stl, transform_mesh, Boolean3Report, BooleanOp, CsgOptions, DMat4, DVec3,
-    FileKind, MeshCounts, MeshVariant, MeshWriteOptions, Operands,
+    FileKind, MeshCounts, MeshVariant, MeshWriteOptions, Operands, WrittenMeshReport,
 };
 
 /// The union of two 2-cubes overlapping in a unit cube, by the polygon
@@ -30,8 +30,7 @@ fn a_polygon_result_is_counted_as_the_file_holds_it() {
         (FileKind::Obj, text),
     ] {
         let e = encode_mesh_with(kind, &out.mesh, options, "out").unwrap();
-        let r = Boolean3Report::new(BooleanOp::Union, inputs.clone(), "out", &out)
-            .written_as("out", &e);
+        let r = Boolean3Report::new(BooleanOp::Union, inputs.clone(), "out", &out).written_as(&e);
         // What the file holds, by its reader and by hand.
         let (vertices, facets) = match kind {
             FileKind::ThreeMf => {
