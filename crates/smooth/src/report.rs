@@ -104,10 +104,13 @@ pub struct SmoothReport {
     /// sweep's epsilon, when the sweep ran). A front end adds the input's
     /// own epsilon, e.g. the Boolean's, as `Boolean2Report::smoothed` does.
     pub epsilon: f64,
-    /// Set when [`crate::SmoothOptions::guard`] handed the input back
-    /// because smoothing would have left more defects than the input had
-    /// where it changed it; the counts above are then zero (nothing
-    /// changed) and this says what was undone.
+    /// Set when [`crate::SmoothOptions::guard`] undid smoothing because it
+    /// would have left more defects than the input had where it changed
+    /// it. Undone everywhere ([`Reverted::is_partial`] false), the input
+    /// is handed back and the counts above are zero (nothing changed);
+    /// undone only at the places that were worse, the counts and bounds
+    /// above are smoothing's (they include the operations undone there).
+    /// This says what was undone.
     pub reverted: Option<Reverted>,
 }
 
@@ -185,6 +188,13 @@ impl std::fmt::Display for Reverted {
     /// assert!(r.to_string().starts_with("smoothing undone: its 0 adjustments would have left 15 intersecting facet pairs"));
     /// ```
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
+        if self.is_partial() {
+            return write!(
+                f,
+                "smoothing undone at {} of the {} places it changed: there it would have left {} where the unsmoothed mesh has {}; kept elsewhere",
+                self.undone, self.places, self.smoothed, self.input
+            );
+        }
         write!(
             f,
             "smoothing undone: its {} adjustments would have left {} where the unsmoothed mesh has {}; the mesh is kept as it was",
@@ -198,12 +208,27 @@ impl std::fmt::Display for Reverted {
 /// What the guard undid ([`SmoothReport::reverted`]).
 #[derive(Clone, Debug, Default, PartialEq, Serialize)]
 pub struct Reverted {
-    /// The defects smoothing would have left near what it changed.
+    /// The defects smoothing would have left near what it undid.
     pub smoothed: MeshDefects,
-    /// The input's defects at the same place (kept).
+    /// The input's defects at the same places (kept).
     pub input: MeshDefects,
-    /// The operations smoothing had made (undone).
+    /// The operations smoothing had made (all of them; undone where
+    /// smoothing was undone).
     pub counts: SmoothCounts,
+    /// The places smoothing changed: the connected patches of changed
+    /// facets (joined where they share a vertex position).
+    pub places: usize,
+    /// The places undone: all of them, or the ones where smoothing left
+    /// more defects than the input had there (the others keep smoothing).
+    pub undone: usize,
+}
+
+impl Reverted {
+    /// Whether smoothing was undone only at some of the places it
+    /// changed (and kept at the others).
+    pub fn is_partial(&self) -> bool {
+        self.undone < self.places
+    }
 }
 
 /// A smoothed shape and its report.

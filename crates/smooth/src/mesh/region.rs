@@ -593,18 +593,19 @@ pub fn smooth_mesh_near(
         half_edges: f.iter().map(|&(s, e)| rename(s, e)).collect(),
     }));
     let shape = PolygonMesh::new(vertices, facets);
-    if options.guard {
+    let (shape, report) = if options.guard {
         let kept = shape.facets.len() - region_out.len();
         let replaced: Vec<bool> = (0..shape.facets.len()).map(|f| f >= kept).collect();
-        if let Some(back) = guard::guard(&report, (mesh, &region), (&shape, &replaced)) {
-            return Ok(Smoothed {
-                shape: mesh.clone(),
-                report: back,
-            });
-        }
-    }
+        guard::guard(&report, (mesh, &region), (&shape, &replaced)).apply(mesh, shape, report)
+    } else {
+        (shape, report)
+    };
+    // The postconditions of a smoothing result; the guard's undone
+    // places (and an input handed back) keep the input's features.
     #[cfg(debug_assertions)]
-    crate::sanity_check_mesh(&shape, options.tolerance)?;
+    if report.reverted.is_none() {
+        crate::sanity_check_mesh(&shape, options.tolerance)?;
+    }
     Ok(Smoothed { shape, report })
 }
 
@@ -658,17 +659,18 @@ pub fn smooth_triangles_near(
         .par_iter_mut()
         .for_each(|t| *t = t.map(|v| map[v as usize]));
     let shape = TriangleMesh::new(vertices, triangles);
-    if options.guard {
+    let (shape, report) = if options.guard {
         let kept = shape.triangles.len() - region_out.len();
         let replaced: Vec<bool> = (0..shape.triangles.len()).map(|t| t >= kept).collect();
-        if let Some(back) = guard::guard(&report, (mesh, &region), (&shape, &replaced)) {
-            return Ok(Smoothed {
-                shape: mesh.clone(),
-                report: back,
-            });
-        }
-    }
+        guard::guard(&report, (mesh, &region), (&shape, &replaced)).apply(mesh, shape, report)
+    } else {
+        (shape, report)
+    };
+    // The postconditions of a smoothing result; the guard's undone
+    // places (and an input handed back) keep the input's features.
     #[cfg(debug_assertions)]
-    crate::sanity_check_triangles(&shape, options.tolerance)?;
+    if report.reverted.is_none() {
+        crate::sanity_check_triangles(&shape, options.tolerance)?;
+    }
     Ok(Smoothed { shape, report })
 }

@@ -158,11 +158,15 @@ fn smooth_error(file: &Path, source: umbra::SmoothError) -> UmbraError {
 /// One clause for a summary line: tolerance, adjustments, bound; or, when
 /// the guard undid smoothing, what it would have left.
 pub fn summary(r: &SmoothReport) -> String {
-    if let Some(undone) = &r.reverted {
-        return format!("at tolerance {:e}, {undone}", r.tolerance);
-    }
+    let undone = match &r.reverted {
+        Some(undone) if !undone.is_partial() => {
+            return format!("at tolerance {:e}, {undone}", r.tolerance)
+        }
+        Some(undone) => format!("; {undone}"),
+        None => String::new(),
+    };
     format!(
-        "smoothed at tolerance {:e}: {} adjustments, distortion bound {:e}{}",
+        "smoothed at tolerance {:e}: {} adjustments, distortion bound {:e}{}{undone}",
         r.tolerance,
         r.counts.adjustments(),
         r.distortion_bound,
