@@ -5,7 +5,7 @@
 //!
 //! Counts describe shapes as files hold them ([`SetCounts`],
 //! [`MeshCounts`]): a 3D result written to a format of `f32` coordinates
-//! is described as rounded ([`Boolean3Report::rounded_to_f32`], with the
+//! is described as rounded ([`WrittenMeshReport::written_as`], with the
 //! [`F32Rounding`] report). `timings_ms.total` ([`Timings`]) covers the
 //! operation and that rounding's repair, never file input or output.
 

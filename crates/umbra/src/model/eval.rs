@@ -127,7 +127,7 @@ pub struct CsgReport {
     #[serde(skip_serializing_if = "Option::is_none")]
     pub smoothed_near_contacts: Option<bool>,
     /// What rounding to `f32` did, when the result was written to a format
-    /// of `f32` coordinates ([`CsgReport::rounded_to_f32`]); absent
+    /// of `f32` coordinates ([`crate::WrittenMeshReport::written_as`]); absent
     /// otherwise.
     #[serde(skip_serializing_if = "Option::is_none")]
     pub f32_rounding: Option<F32Rounding>,
