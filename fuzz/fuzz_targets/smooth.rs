@@ -5,7 +5,8 @@
 //! idempotent (smoothing the result again changes nothing). Smoothing only
 //! near the Boolean's contacts keeps the closure constraints too, and
 //! where both operands need no smoothing it gives exactly what smoothing
-//! the whole result gives, in 3D and in 2D.
+//! the whole result gives, in 3D and in 2D. Guarded smoothing is closed
+//! and never worse than its input by the whole-mesh defect checks.
 #![no_main]
 
 use boolean_3d::{boolean_mesh, boolean_mesh_with_contacts, BooleanOp};
@@ -69,6 +70,34 @@ fuzz_target!(|input: SmoothInput| {
         }
     }
     let mesh = boolean_mesh(&a, &b, op).map(|o| o.mesh).unwrap_or(a);
+    // The guard (what the front ends run): a guarded result is closed and
+    // never worse than its input by the whole-mesh checks (intersecting
+    // facet pairs, then non-manifold and open edges and non-manifold
+    // vertices); undone everywhere it is the input, undone at some places
+    // it keeps smoothing's report.
+    if let Ok(g) = smooth_mesh(&mesh, &opts.guarded()) {
+        g.shape
+            .check_topology()
+            .expect("guarded smoothing not closed");
+        let defects = |m: &PolygonMesh| {
+            let pairs = topology::check_mesh(m).self_intersecting_facet_pairs;
+            let manifold = m.manifold_report().ok().map(|r| {
+                r.non_manifold_edges.len() + r.open_edges.len() + r.non_manifold_vertices.len()
+            });
+            pairs.zip(manifold)
+        };
+        if let (Some(guarded), Some(input)) = (defects(&g.shape), defects(&mesh)) {
+            assert!(guarded <= input, "guarded smoothing worse than its input");
+        }
+        match &g.report.reverted {
+            Some(r) if r.is_partial() => {
+                let plain = smooth_mesh(&mesh, &opts).expect("unguarded smoothing");
+                assert_eq!(g.report.counts, plain.report.counts, "partial undo's counts");
+            }
+            Some(_) => assert_eq!(g.shape, mesh, "undone whole, not the input"),
+            None => {}
+        }
+    }
     match smooth_mesh(&mesh, &opts) {
         Ok(out) => {
             assert!(

@@ -24,7 +24,7 @@
 use crate::mesh::region::Facets;
 use crate::{MeshDefects, Reverted, SmoothReport};
 use rayon::prelude::*;
-use rustc_hash::FxHashMap;
+use rustc_hash::{FxHashMap, FxHashSet};
 use topology::{ManifoldReport, Point3, PolygonMesh, TriangleMesh};
 
 /// A facet as the sorted list of its half-edges' end positions (bit
@@ -91,7 +91,67 @@ pub(crate) fn changed<B: Facets + ?Sized, A: Facets + ?Sized>(
             }
         }
     }
+    // A merge of vertices at one position leaves every facet's positions
+    // as they were but not its topology (two cubes at one place, welded:
+    // twelve edges then used four times each): the facets at a position
+    // whose number of vertices differs between the meshes changed too.
+    let moved = reidentified((bp, bf, bin), (ap, af, ain));
+    if !moved.is_empty() {
+        let at = |pos: &[Point3], v: u32| moved.contains(&pos[v as usize].map(f64::to_bits));
+        for f in (0..bf.count()).filter(|&f| bin[f]) {
+            before_changed[f] |= bf.starts(f).any(|v| at(bp, v));
+        }
+        for f in (0..af.count()).filter(|&f| ain[f]) {
+            after_changed[f] |= af.starts(f).any(|v| at(ap, v));
+        }
+    }
     (before_changed, after_changed)
+}
+
+/// The positions at which the candidate facets of the two meshes use a
+/// different number of distinct vertices. Positions held by one vertex on
+/// both sides (the usual case: smoothing leaves no two vertices at one
+/// position) are found with one map entry per corner; only positions held
+/// by several vertices on either side are counted exactly.
+fn reidentified<B: Facets + ?Sized, A: Facets + ?Sized>(
+    before: (&[Point3], &B, &[bool]),
+    after: (&[Point3], &A, &[bool]),
+) -> FxHashSet<[u64; 3]> {
+    /// The number of distinct vertices at each position that holds more
+    /// than one (the first vertex of every position in a map, the others
+    /// listed and counted apart: no allocation per position).
+    fn several<F: Facets + ?Sized>(
+        (pos, facets, mask): (&[Point3], &F, &[bool]),
+    ) -> FxHashMap<[u64; 3], usize> {
+        // The vertices the candidates use, each once (a vertex is a corner
+        // of about six triangles), then one map entry per vertex.
+        let mut used = vec![false; pos.len()];
+        for f in (0..facets.count()).filter(|&f| mask[f]) {
+            for v in facets.starts(f) {
+                used[v as usize] = true;
+            }
+        }
+        let mut first: FxHashMap<[u64; 3], u32> = FxHashMap::default();
+        let mut others: Vec<([u64; 3], u32)> = Vec::new();
+        for v in (0..pos.len() as u32).filter(|&v| used[v as usize]) {
+            let k = pos[v as usize].map(f64::to_bits);
+            if *first.entry(k).or_insert(v) != v {
+                others.push((k, v));
+            }
+        }
+        let mut count: FxHashMap<[u64; 3], usize> = FxHashMap::default();
+        for (k, _) in others {
+            *count.entry(k).or_insert(1) += 1;
+        }
+        count
+    }
+    let (b, a) = (several(before), several(after));
+    let held = |m: &FxHashMap<[u64; 3], usize>, k: &[u64; 3]| m.get(k).copied().unwrap_or(1);
+    b.keys()
+        .chain(a.keys())
+        .filter(|k| held(&b, k) != held(&a, k))
+        .copied()
+        .collect()
 }
 
 /// Where the defects near a focus lie: the intersecting facet pairs and
@@ -447,12 +507,12 @@ impl Places {
 }
 
 /// The result `r` with its facets `drop` replaced by the input's facets
-/// `restore`, each input vertex taken to the result's vertex at its
-/// position or appended; and the focus of the mixed mesh (its facets
+/// `restore`, each input vertex taken to the vertex of the kept facets at
+/// its position or appended; and the focus of the mixed mesh (its facets
 /// that changed: the kept changed ones, `after`, and the restored ones).
 /// `None` when positions do not name vertices one to one (two input
-/// vertices of the restored facets, or two result vertices, at one
-/// position) or the mixed mesh is not closed.
+/// vertices of the restored facets at one kept vertex, or two result
+/// vertices at one position) or the mixed mesh is not closed.
 fn mix<M: Guarded>(
     r: &M,
     drop: &[bool],
@@ -472,10 +532,19 @@ fn mix<M: Guarded>(
     let mut vertices = rp.to_vec();
     let mut facets: Vec<Vec<(u32, u32)>> = Vec::with_capacity(rf.count());
     let mut focus = Vec::with_capacity(rf.count());
+    let mut kept_uses = vec![false; rp.len()];
     for f in (0..rf.count()).filter(|&f| !drop[f]) {
         facets.push(rf.half_edges(f).collect());
         focus.push(after[f]);
+        for v in rf.starts(f) {
+            kept_uses[v as usize] = true;
+        }
     }
+    // An input vertex at the position of a vertex the kept facets use is
+    // that vertex (the cut between a place and the rest); any other is a
+    // vertex of its own, so coincident input vertices that smoothing
+    // welded come back apart (their position is the place's alone, as
+    // every facet there changed).
     let mut taken: FxHashMap<u32, u32> = FxHashMap::default();
     let mut owner: FxHashMap<[u64; 3], u32> = FxHashMap::default();
     let mut name = |v: u32, vertices: &mut Vec<Point3>| -> Option<u32> {
@@ -483,13 +552,18 @@ fn mix<M: Guarded>(
             return Some(u);
         }
         let key = bits(&ip[v as usize]);
-        if *owner.entry(key).or_insert(v) != v {
-            return None;
-        }
-        let u = *at.entry(key).or_insert_with(|| {
-            vertices.push(ip[v as usize]);
-            vertices.len() as u32 - 1
-        });
+        let u = match at.get(&key) {
+            Some(&u) if kept_uses[u as usize] => {
+                if *owner.entry(key).or_insert(v) != v {
+                    return None;
+                }
+                u
+            }
+            _ => {
+                vertices.push(ip[v as usize]);
+                vertices.len() as u32 - 1
+            }
+        };
         taken.insert(v, u);
         Some(u)
     };
@@ -604,5 +678,46 @@ mod tests {
                 vec![false, false, true, false]
             )
         );
+    }
+
+    /// A fuzzing find: two unit cubes at one place (sixteen vertices),
+    /// smoothed at a tolerance far below their size. Merging welds the
+    /// coincident vertices and changes no facet's positions, so matching
+    /// facets by position alone saw no change and kept a result with
+    /// twelve edges used four times each; the vertex counts per position
+    /// now mark those facets changed, and the guard hands the input back.
+    #[test]
+    fn welding_coincident_vertices_is_a_change_the_guard_sees() {
+        use crate::{smooth_mesh, SmoothOptions};
+        use topology::Facet;
+        let corners = (0..8u32).map(|k| [k & 1, (k >> 1) & 1, (k >> 2) & 1].map(f64::from));
+        let vertices: Vec<Point3> = corners.clone().chain(corners).collect();
+        let sides = [
+            [1, 3, 2, 0],
+            [6, 7, 5, 4],
+            [4, 5, 1, 0],
+            [3, 7, 6, 2],
+            [2, 6, 4, 0],
+            [5, 7, 3, 1],
+        ];
+        let facets = [0u32, 8]
+            .iter()
+            .flat_map(|&o| {
+                sides
+                    .iter()
+                    .map(move |l| Facet::from_loop(&l.map(|v: u32| v + o)))
+            })
+            .collect();
+        let m = PolygonMesh::new(vertices, facets);
+        let manifold = |m: &PolygonMesh| m.manifold_report().unwrap().non_manifold_edges.len();
+        let tol = 2f64.powi(-48);
+        let plain = smooth_mesh(&m, &SmoothOptions::new(tol)).unwrap();
+        assert_eq!(plain.report.counts.vertices_merged, 8);
+        assert_eq!(manifold(&plain.shape), 12);
+        let guarded = smooth_mesh(&m, &SmoothOptions::new(tol).guarded()).unwrap();
+        assert_eq!(guarded.shape, m);
+        let undone = guarded.report.reverted.unwrap();
+        assert_eq!(undone.smoothed.non_manifold_edges, 12);
+        assert_eq!(undone.input.non_manifold_edges, 0);
     }
 }
