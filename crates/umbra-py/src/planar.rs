@@ -10,10 +10,10 @@ use geo_types::{Coord, LineString, MultiPolygon, Polygon};
 use pyo3::prelude::*;
 use pyo3::types::PyList;
 use umbra::{
-    boolean, boolean_sets, boolean_via_simplify, boolean_with_contacts,
-    default_boolean_set_tolerance, fill_rule_name, from_geo, layout_polygons, regularized_operands,
-    simplify as simplify_set, smooth_set_result, FillRule, PlanarContacts, PolygonSet2, Polygons,
-    RingOrientation, Simplified, SmoothOptions, UmbraError, Via,
+    boolean_for_smoothing, boolean_sets, boolean_via_simplify, default_boolean_set_tolerance,
+    fill_rule_name, from_geo, layout_polygons, regularized_operands, simplify as simplify_set,
+    smooth_set_result, FillRule, PlanarContacts, PolygonSet2, Polygons, RingOrientation,
+    Simplified, SmoothOptions, UmbraError, Via,
 };
 
 /// The ring convention of `keep_orientation`.
@@ -170,15 +170,12 @@ pub fn boolean_2d<'py>(
                 };
                 // Smoothing looks only near the operands' contacts, found
                 // beside the Boolean, as on the command line.
-                let result = if tolerance > 0.0 && tolerance.is_finite() {
-                    boolean_with_contacts(&a, &b, op, tolerance).map(|(o, c)| (o.shape, Some(c)))
-                } else {
-                    boolean(&a, &b, op).map(|o| (o.shape, None))
-                };
-                result.map_err(|source| UmbraError::Boolean {
-                    file: String::new(),
-                    source,
-                })
+                boolean_for_smoothing(&a, &b, op, tolerance)
+                    .map(|(o, c)| (o.shape, c))
+                    .map_err(|source| UmbraError::Boolean {
+                        file: String::new(),
+                        source,
+                    })
             }
             Via::Simplify => boolean_via_simplify(&a, &b, op)
                 .map(|o| (o.shape, None))

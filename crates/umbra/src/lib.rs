@@ -148,8 +148,8 @@ pub use smooth::{
     SmoothReport, Smoothed,
 };
 pub use smoothing::{
-    default_boolean_set_tolerance, default_mesh_tolerance, default_set_tolerance,
-    smooth_csg_result, smooth_set_result, smooth_solid, smooth_solid_near,
+    boolean_for_smoothing, default_boolean_set_tolerance, default_mesh_tolerance,
+    default_set_tolerance, smooth_csg_result, smooth_set_result, smooth_solid, smooth_solid_near,
     DEFAULT_RELATIVE_TOLERANCE,
 };
 pub use topology::{

@@ -12,12 +12,13 @@
 
 use crate::ops::{as_triangle_mesh, MeshVariant};
 use crate::CsgResult;
-use boolean_2d::PlanarContacts;
+use boolean_2d::{BooleanError, BooleanOutput, PlanarContacts};
 use boolean_3d::Contacts;
 use smooth::{
     smooth_mesh, smooth_mesh_near, smooth_polygon_set, smooth_polygon_set_near, smooth_triangles,
     smooth_triangles_near, SmoothError, SmoothOptions, Smoothed,
 };
+use topology::BooleanOp;
 use topology::{PolygonMesh, PolygonSet2};
 
 /// The default smoothing tolerance, relative to the largest extent of the
@@ -195,5 +196,36 @@ pub fn smooth_set_result(
     match contacts.filter(|c| c.proximity >= options.tolerance) {
         Some(c) => smooth_polygon_set_near(shape, options, &c.boxes),
         None => smooth_polygon_set(shape, options),
+    }
+}
+
+/// The basic 2D Boolean as the front ends run it before smoothing its
+/// result at `tolerance`: with the operands' contacts at that proximity
+/// ([`boolean_with_contacts`](crate::boolean_with_contacts)) when it is
+/// positive and finite, so that [`smooth_set_result`] looks only near
+/// them; the plain Boolean (no contacts: whole smoothing, or none)
+/// otherwise.
+///
+/// ```
+/// use umbra::{boolean_for_smoothing, BooleanOp, PolygonSet2};
+/// let mut a = PolygonSet2::new();
+/// a.add_loop(&[[0.0, 0.0], [1.0, 0.0], [1.0, 1.0], [0.0, 1.0]]);
+/// let (out, contacts) = boolean_for_smoothing(&a, &a.clone(), BooleanOp::Union, 1e-9)?;
+/// assert!(contacts.is_some_and(|c| !c.boxes.is_empty()));
+/// let (_, none) = boolean_for_smoothing(&a, &a.clone(), BooleanOp::Union, 0.0)?;
+/// assert!(none.is_none());
+/// # let _ = out;
+/// # Ok::<(), Box<dyn std::error::Error>>(())
+/// ```
+pub fn boolean_for_smoothing(
+    a: &PolygonSet2,
+    b: &PolygonSet2,
+    op: BooleanOp,
+    tolerance: f64,
+) -> Result<(BooleanOutput, Option<PlanarContacts>), BooleanError> {
+    if tolerance > 0.0 && tolerance.is_finite() {
+        boolean_2d::boolean_with_contacts(a, b, op, tolerance).map(|(out, c)| (out, Some(c)))
+    } else {
+        boolean_2d::boolean(a, b, op).map(|out| (out, None))
     }
 }

@@ -19,8 +19,8 @@ use std::path::{Path, PathBuf};
 use std::process::ExitCode;
 use std::time::Instant;
 use umbra::{
-    boolean, boolean_sets, boolean_solid, boolean_solid_with_contacts, boolean_via_simplify,
-    boolean_with_contacts, default_boolean_set_tolerance, default_mesh_tolerance,
+    boolean_for_smoothing, boolean_sets, boolean_solid, boolean_solid_with_contacts,
+    boolean_via_simplify, default_boolean_set_tolerance, default_mesh_tolerance,
     encode_mesh_with, encode_polygon_set, read_mesh, regularized_operands, smooth_set_result,
     smooth_solid_near, turned_outward, Boolean2Report, Boolean3Report, BooleanOp, Contacts,
     CsgNode, FileKind, MeshCounts, MeshReadOptions, MeshVariant, Operands, PlanarContacts,
@@ -235,11 +235,7 @@ impl BooleanArgs {
                 // within its tolerance; those places come from a broad
                 // phase run beside the Boolean.
                 let tol = self.smooth.unwrap_or(tolerance);
-                let result = if tol > 0.0 && tol.is_finite() {
-                    boolean_with_contacts(a, b, op, tol).map(|(out, c)| (out, Some(c)))
-                } else {
-                    boolean(a, b, op).map(|out| (out, None))
-                };
+                let result = boolean_for_smoothing(a, b, op, tol);
                 let total = millis_since(start);
                 let (out, contacts) = result.map_err(|e| errors::boolean2(e, [a_path, b_path]))?;
                 let report = |output| {

@@ -30,8 +30,11 @@ const MANIFOLD: [&str; 4] = [
     "non_manifold_vertices",
 ];
 
-/// Two unit cubes sharing the edge x = y = 1: smoothed, one vertex each
-/// end, so the shared edge has two half-edges each way.
+/// Two unit cubes sharing the edge x = y = 1. The Boolean leaves two
+/// closed shells with coincident vertices at the edge's ends; welding
+/// them (smoothing) would give the shared edge two half-edges each way, a
+/// non-manifold edge the shells did not have, so the guard undoes it; an
+/// ASCII STL is welded by position on reading, which makes that edge.
 const EDGE_SHARING_CUBES: &str = r#"{"op": "union", "children": [
     {"box": {"size": [1, 1, 1]}},
     {"box": {"size": [1, 1, 1]}, "translate": [1, 1, 0]}]}"#;
@@ -87,14 +90,24 @@ fn csg_report_and_check_agree_on_the_file_written() {
         if ext == "obj" {
             assert_eq!(r["facets"].as_u64(), Some(obj_faces(&out) as u64), "{what}");
         }
-        let clean = script == bracket.as_path();
+        let shells = script == edge.as_path() && ext == "obj";
+        let clean = script == bracket.as_path() || shells;
         assert_eq!(r["two_manifold"], clean, "{what}");
-        if script == edge.as_path() {
-            // Two cubes, one edge shared: 8 + 8 - 2 vertices, and as an
-            // STL (welded: the raw result's coincident vertices are one)
-            // twelve triangles on them.
+        if shells {
+            // Smoothed by default, and the weld undone by the guard: two
+            // cubes of 8 vertices and 6 facets each, both closed
+            // 2-manifolds, and the report says what was undone.
+            assert_eq!(r["vertices"], 16, "{what}");
+            assert_eq!(r["facets"], 12, "{what}");
+            assert_eq!(r["non_manifold_edges"], 0, "{what}");
+            let undone = &r["smoothing"]["reverted"];
+            assert_eq!(undone["smoothed"]["non_manifold_edges"], 1, "{what}");
+            assert_eq!(undone["input"]["non_manifold_edges"], 0, "{what}");
+        } else if script == edge.as_path() {
+            // As an STL, welded on reading: 8 + 8 - 2 vertices and twelve
+            // triangles on them, the shared edge non-manifold.
             assert_eq!(r["vertices"], 14, "{what}");
-            assert_eq!(r["facets"], if ext == "obj" { 12 } else { 24 }, "{what}");
+            assert_eq!(r["facets"], 24, "{what}");
             assert_eq!(r["open_edges"], 0, "{what}");
             assert_eq!(r["non_manifold_edges"], 1, "{what}");
         }
