@@ -186,6 +186,11 @@ impl std::fmt::Display for Reverted {
     ///     ..Reverted::default()
     /// };
     /// assert!(r.to_string().starts_with("smoothing undone: its 0 adjustments would have left 15 intersecting facet pairs"));
+    /// // Undone at some of the places smoothing changed, kept at the others.
+    /// let some = Reverted { places: 3, undone: 1, ..r };
+    /// assert!(some.is_partial());
+    /// assert!(some.to_string().starts_with("smoothing undone at 1 of the 3 places it changed"));
+    /// assert!(some.to_string().ends_with("kept elsewhere"));
     /// ```
     fn fmt(&self, f: &mut std::fmt::Formatter<'_>) -> std::fmt::Result {
         if self.is_partial() {
