@@ -18,18 +18,22 @@ pub struct SmoothOptions {
     /// input size: `1000 * (vertices + half-edges) + 1_000_000`.
     pub budget: Option<u64>,
     /// Keep the input where smoothing would make a 3D mesh worse: after
-    /// smoothing, the facets it changed are checked for intersecting
-    /// facet pairs (the exact test of `topology`), non-manifold edges and
-    /// vertices, and open edges; if the result has more pairs than the
-    /// input at the same place, or as many and more of the others
-    /// ([`crate::MeshDefects::worse_than`]), the input is returned unchanged and
+    /// smoothing, the facets it changed (by position, and at positions
+    /// whose vertex count changed) are checked for intersecting facet
+    /// pairs (the exact test of `topology`), non-manifold edges and
+    /// vertices, and open edges, place by place (patches of changed
+    /// facets); where the result has more pairs than the input at the
+    /// same place, or as many and more of the others
+    /// ([`crate::MeshDefects::worse_than`]), the input's facets are put
+    /// back there, or the input is returned unchanged, and
     /// [`crate::SmoothReport::reverted`] says what smoothing would have
     /// left. Smoothing is not guaranteed to keep a clean result clean
     /// where surfaces lie within the tolerance of each other at an angle
-    /// (near-coincident rotated copies); the guard keeps such a result as
-    /// the Boolean made it. Off by default: the algorithm's postconditions
-    /// ([`crate::sanity_check_mesh`]) hold for an unguarded result, not for
-    /// an input handed back. 2D smoothing ignores it.
+    /// (near-coincident rotated copies); the guard keeps such places as
+    /// the Boolean made them. Off by default: the algorithm's
+    /// postconditions ([`crate::sanity_check_mesh`]) hold for an
+    /// unguarded result, not where the input was put back. 2D smoothing
+    /// ignores it.
     pub guard: bool,
 }
 

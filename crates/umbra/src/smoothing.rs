@@ -6,8 +6,8 @@
 //! line, Python) smooth 3D results with [`SmoothOptions::guarded`]: a
 //! result with more intersecting facet pairs than the mesh had where
 //! smoothing changed it, or as many and more non-manifold or open edges
-//! and non-manifold vertices, is dropped for the mesh as it was, and the
-//! report says so
+//! and non-manifold vertices, is dropped for the mesh as it was at the
+//! places where it is worse (or everywhere), and the report says so
 //! ([`smooth::SmoothReport::reverted`]).
 
 use crate::ops::{as_triangle_mesh, MeshVariant};
