@@ -43,17 +43,22 @@ fn key<F: Facets + ?Sized>(pos: &[Point3], facets: &F, f: usize) -> Vec<[u64; 6]
     k
 }
 
-/// The keys of the facets `f` with `mask[f]`, computed in parallel (each
-/// a sort of a facet's half-edges).
+/// The facets `f` with `mask[f]`, in order (found in parallel).
+fn marked<F: Facets + ?Sized>(facets: &F, mask: &[bool]) -> Vec<usize> {
+    (0..facets.count())
+        .into_par_iter()
+        .filter(|&f| mask[f])
+        .collect()
+}
+
+/// The keys of the facets `ids`, computed in parallel (each a sort of a
+/// facet's half-edges).
 fn keys<F: Facets + ?Sized>(
     pos: &[Point3],
     facets: &F,
-    mask: &[bool],
+    ids: &[usize],
 ) -> Vec<(usize, Vec<[u64; 6]>)> {
-    let ids: Vec<usize> = (0..facets.count()).filter(|&f| mask[f]).collect();
-    ids.into_par_iter()
-        .map(|f| (f, key(pos, facets, f)))
-        .collect()
+    ids.par_iter().map(|&f| (f, key(pos, facets, f))).collect()
 }
 
 /// The facets smoothing changed: of the candidates `before_in` of the
@@ -67,8 +72,9 @@ pub(crate) fn changed<B: Facets + ?Sized, A: Facets + ?Sized>(
 ) -> (Vec<bool>, Vec<bool>) {
     let (bp, bf, bin) = before;
     let (ap, af, ain) = after;
-    let before_keys = keys(bp, bf, bin);
-    let after_keys = keys(ap, af, ain);
+    let (b_ids, a_ids) = (marked(bf, bin), marked(af, ain));
+    let before_keys = keys(bp, bf, &b_ids);
+    let after_keys = keys(ap, af, &a_ids);
     let mut count: FxHashMap<&[[u64; 6]], i64> = FxHashMap::default();
     for (_, k) in &before_keys {
         *count.entry(k.as_slice()).or_default() += 1;
@@ -95,45 +101,42 @@ pub(crate) fn changed<B: Facets + ?Sized, A: Facets + ?Sized>(
     // as they were but not its topology (two cubes at one place, welded:
     // twelve edges then used four times each): the facets at a position
     // whose number of vertices differs between the meshes changed too.
-    let moved = reidentified((bp, bf, bin), (ap, af, ain));
+    let moved = reidentified((bp, bf, &b_ids), (ap, af, &a_ids));
     if !moved.is_empty() {
         let at = |pos: &[Point3], v: u32| moved.contains(&pos[v as usize].map(f64::to_bits));
-        for f in (0..bf.count()).filter(|&f| bin[f]) {
+        for &f in &b_ids {
             before_changed[f] |= bf.starts(f).any(|v| at(bp, v));
         }
-        for f in (0..af.count()).filter(|&f| ain[f]) {
+        for &f in &a_ids {
             after_changed[f] |= af.starts(f).any(|v| at(ap, v));
         }
     }
     (before_changed, after_changed)
 }
 
-/// The positions at which the candidate facets of the two meshes use a
-/// different number of distinct vertices. Positions held by one vertex on
-/// both sides (the usual case: smoothing leaves no two vertices at one
-/// position) are found with one map entry per corner; only positions held
-/// by several vertices on either side are counted exactly.
+/// The positions at which the candidate facets `ids` of the two meshes
+/// use a different number of distinct vertices. Positions held by one
+/// vertex on both sides (the usual case: smoothing leaves no two vertices
+/// at one position) are found with one map entry per vertex; only
+/// positions held by several vertices on either side are counted exactly.
 fn reidentified<B: Facets + ?Sized, A: Facets + ?Sized>(
-    before: (&[Point3], &B, &[bool]),
-    after: (&[Point3], &A, &[bool]),
+    before: (&[Point3], &B, &[usize]),
+    after: (&[Point3], &A, &[usize]),
 ) -> FxHashSet<[u64; 3]> {
     /// The number of distinct vertices at each position that holds more
     /// than one (the first vertex of every position in a map, the others
     /// listed and counted apart: no allocation per position).
     fn several<F: Facets + ?Sized>(
-        (pos, facets, mask): (&[Point3], &F, &[bool]),
+        (pos, facets, ids): (&[Point3], &F, &[usize]),
     ) -> FxHashMap<[u64; 3], usize> {
         // The vertices the candidates use, each once (a vertex is a corner
         // of about six triangles), then one map entry per vertex.
-        let mut used = vec![false; pos.len()];
-        for f in (0..facets.count()).filter(|&f| mask[f]) {
-            for v in facets.starts(f) {
-                used[v as usize] = true;
-            }
-        }
+        let mut used: Vec<u32> = ids.iter().flat_map(|&f| facets.starts(f)).collect();
+        used.par_sort_unstable();
+        used.dedup();
         let mut first: FxHashMap<[u64; 3], u32> = FxHashMap::default();
         let mut others: Vec<([u64; 3], u32)> = Vec::new();
-        for v in (0..pos.len() as u32).filter(|&v| used[v as usize]) {
+        for v in used {
             let k = pos[v as usize].map(f64::to_bits);
             if *first.entry(k).or_insert(v) != v {
                 others.push((k, v));

@@ -160,10 +160,12 @@ impl Occupancy {
         Some(g)
     }
 
-    /// The cell of `p` (clamped into the grid).
+    /// The cell of `p` (clamped into the grid). Truncation is the floor
+    /// of the non-negative values, and the others go to cell 0 either way
+    /// (no call to `floor`, a library call on the baseline target).
     fn cell(&self, p: &Point3) -> [usize; 3] {
         std::array::from_fn(|c| {
-            let x = ((p[c] - self.lo[c]) * self.scale[c]).floor();
+            let x = (p[c] - self.lo[c]) * self.scale[c];
             if x >= 0.0 {
                 (x as usize).min(self.dims[c] - 1)
             } else {
@@ -214,13 +216,16 @@ pub(crate) fn near_facets<F: Facets + ?Sized>(
     }
     let grid = Occupancy::new(all_lo, all_hi, &boxes);
     let index = BoxIndex::new(boxes);
+    // Most facets are found apart from the box of all contacts by their
+    // corners' codes alone.
+    let beyond = topology::sides_beyond(pos, &[all_lo, all_hi]);
     (0..facets.count())
         .into_par_iter()
         .map(|f| {
-            let (lo, hi) = grown_box(facets.starts(f).map(|v| pos[v as usize]), 0.0);
-            if (0..3).any(|c| lo[c] > all_hi[c] || hi[c] < all_lo[c]) {
+            if topology::facet_apart(&beyond, facets.starts(f)) {
                 return false;
             }
+            let (lo, hi) = grown_box(facets.starts(f).map(|v| pos[v as usize]), 0.0);
             if grid.as_ref().is_some_and(|g| !g.meets(&lo, &hi)) {
                 return false;
             }

@@ -454,7 +454,7 @@ pub fn self_intersecting_triangle_pairs_near(
     focus: &[bool],
 ) -> Option<Vec<[u32; 2]>> {
     let n = mesh.vertices.len() as u32;
-    if !mesh.triangles.iter().flatten().all(|&v| v < n) {
+    if !mesh.triangles.par_iter().all(|t| t.iter().all(|&v| v < n)) {
         return None;
     }
     pairs_near_with(
@@ -481,7 +481,7 @@ fn pairs_near_with(
     if !focus.contains(&true) {
         return Some(Vec::new());
     }
-    if !vertices.iter().flatten().all(|x| x.is_finite()) {
+    if !vertices.par_iter().all(|p| p.iter().all(|x| x.is_finite())) {
         return None;
     }
     // Facet boxes are computed where they are needed, not kept for the
@@ -502,7 +502,9 @@ fn pairs_near_with(
     };
     // The facets whose boxes meet a box of `ring` (a facet mask); a ring
     // of every facet is its own growth (no hierarchy to build: the case of
-    // a mesh whose every vertex moved).
+    // a mesh whose every vertex moved). Most facets of a large mesh are
+    // found apart from the ring's bounding box by their corners' codes
+    // alone (`sides`).
     let grow = |ring: &[bool]| -> Vec<bool> {
         if ring.iter().all(|&r| r) {
             return ring.to_vec();
@@ -523,14 +525,17 @@ fn pairs_near_with(
             },
         );
         let all = [lo, hi];
+        let codes = super::sides::sides_beyond(vertices, &all);
         ring.par_iter()
             .enumerate()
             .map_init(Vec::new, |buf, (f, &r)| {
                 r || {
-                    let b = box_of(f, buf);
-                    b[0][0] <= b[1][0]
-                        && super::bvh::overlap(&b, &all)
-                        && bvh.any_overlap(&inner, &b)
+                    buf.clear();
+                    corners(f, buf);
+                    !super::sides::facet_apart(&codes, buf.iter().copied()) && {
+                        let b = box_of(f, buf);
+                        super::bvh::overlap(&b, &all) && bvh.any_overlap(&inner, &b)
+                    }
                 }
             })
             .collect()

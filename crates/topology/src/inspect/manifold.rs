@@ -116,7 +116,7 @@ impl TriangleMesh {
     /// `t` is facet `t`), without building its whole polygon mesh.
     pub fn manifold_report_near(&self, focus: &[bool]) -> Option<ManifoldReport> {
         let n = self.vertices.len() as u32;
-        if !self.triangles.iter().flatten().all(|&v| v < n) {
+        if !self.triangles.par_iter().all(|t| t.iter().all(|&v| v < n)) {
             return None;
         }
         Some(report_near(

@@ -20,9 +20,11 @@ mod manifold;
 mod planar;
 mod report;
 mod ring;
+mod sides;
 
 pub use intersect::{self_intersecting_pairs_near, self_intersecting_triangle_pairs_near};
 pub use manifold::{EdgeUse, ManifoldCounts, ManifoldReport};
 pub use planar::{check_polygon_set, CheckReport};
 pub use report::{check_mesh, mesh_signed_volume, MeshCheckReport};
 pub use ring::{ring_side, ring_signed_area, RingIndex, RingSide};
+pub use sides::{facet_apart, sides_beyond};

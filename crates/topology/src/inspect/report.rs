@@ -7,6 +7,7 @@
 use super::intersect::self_intersecting_pairs;
 use super::manifold::{edge_census, report_of_valid};
 use crate::{HalfEdge, PolygonMesh, TopologyError, TriangleMesh};
+use rayon::prelude::*;
 use robust_arith::Point3;
 
 /// What the inspection of a mesh reports ([`check_mesh`]).
@@ -123,9 +124,8 @@ pub fn check_mesh(mesh: &PolygonMesh) -> MeshCheckReport {
 pub(super) fn indices_in_range(mesh: &PolygonMesh) -> bool {
     let n = mesh.vertices.len() as u32;
     mesh.facets
-        .iter()
-        .flat_map(|f| &f.half_edges)
-        .all(|h| h.start < n && h.end < n)
+        .par_iter()
+        .all(|f| f.half_edges.iter().all(|h| h.start < n && h.end < n))
 }
 
 /// The signed volume of a topologically valid mesh: the sum over facets of
