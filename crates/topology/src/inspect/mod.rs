@@ -6,6 +6,10 @@
 //!   non-manifold edges and vertices named ([`ManifoldReport`]), the facet
 //!   pairs that intersect improperly (exact), the signed volume and the
 //!   bounding box, and the whole report [`MeshCheckReport`].
+//! - Boxes: the sides of a box each vertex lies beyond, one byte each
+//!   ([`sides_beyond`]), and from them, exactly, whether a facet's box
+//!   is apart from it ([`facet_apart`]): the first filter of the
+//!   near-focus inspections and of smoothing's region search.
 //! - Polygon sets: validity and the exact count of crossing and
 //!   overlapping edge pairs ([`CheckReport`]); point location in a ring
 //!   ([`RingIndex`], [`ring_side`]) and a ring's signed area.

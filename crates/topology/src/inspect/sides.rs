@@ -22,6 +22,7 @@ use robust_arith::Point3;
 /// assert!(facet_apart(&codes, [0, 1])); // both corners below y = 3
 /// assert!(!facet_apart(&codes, [0, 1, 2])); // their box [0, 4]^2 meets [3, 6]^2
 /// assert!(!facet_apart(&codes, [3]));
+/// assert!(!facet_apart(&codes, [0, 99])); // no code for 99: not apart
 /// ```
 pub fn sides_beyond(vertices: &[Point3], bounds: &[Point3; 2]) -> Vec<u8> {
     let [lo, hi] = bounds;
@@ -39,12 +40,13 @@ pub fn sides_beyond(vertices: &[Point3], bounds: &[Point3; 2]) -> Vec<u8> {
 /// [`sides_beyond`]) lies apart from the box: some side has every corner
 /// beyond it. Exactly the negation of closed-box overlap (the box of the
 /// corners starts above `hi[k]` exactly when every corner lies above it);
-/// a facet without corners has an empty box, apart from everything.
+/// a facet without corners has an empty box, apart from everything. A
+/// corner without a code (an index past `codes`) counts as inside every
+/// side, so such a facet is never called apart.
 pub fn facet_apart(codes: &[u8], corners: impl IntoIterator<Item = u32>) -> bool {
-    corners
-        .into_iter()
-        .fold(0b11_1111u8, |all, v| all & codes[v as usize])
-        != 0
+    corners.into_iter().fold(0b11_1111u8, |all, v| {
+        all & codes.get(v as usize).copied().unwrap_or(0)
+    }) != 0
 }
 
 #[cfg(test)]
