@@ -129,11 +129,9 @@ fn reidentified<B: Facets + ?Sized, A: Facets + ?Sized>(
     fn several<F: Facets + ?Sized>(
         (pos, facets, ids): (&[Point3], &F, &[usize]),
     ) -> FxHashMap<[u64; 3], usize> {
-        // The vertices the candidates use, each once (a vertex is a corner
-        // of about six triangles), then one map entry per vertex.
-        let mut used: Vec<u32> = ids.iter().flat_map(|&f| facets.starts(f)).collect();
-        used.par_sort_unstable();
-        used.dedup();
+        // The vertices the candidates use, each once, then one map entry
+        // per vertex.
+        let used = distinct_corners(pos.len(), facets, ids);
         let mut first: FxHashMap<[u64; 3], u32> = FxHashMap::default();
         let mut others: Vec<([u64; 3], u32)> = Vec::new();
         for v in used {
@@ -155,6 +153,37 @@ fn reidentified<B: Facets + ?Sized, A: Facets + ?Sized>(
         .filter(|k| held(&b, k) != held(&a, k))
         .copied()
         .collect()
+}
+
+/// The vertices of the facets `ids` (indices below `n`), each once,
+/// ascending: sorted from the corners when the facets are few against the
+/// vertices (a region in a large mesh, where a flag per vertex would cost
+/// more than the facets), else by a flag per vertex.
+fn distinct_corners<F: Facets + ?Sized>(n: usize, facets: &F, ids: &[usize]) -> Vec<u32> {
+    if ids.len() < n / 16 {
+        sorted_corners(facets, ids)
+    } else {
+        flagged_corners(n, facets, ids)
+    }
+}
+
+/// [`distinct_corners`] by sorting the corners.
+fn sorted_corners<F: Facets + ?Sized>(facets: &F, ids: &[usize]) -> Vec<u32> {
+    let mut used: Vec<u32> = ids.iter().flat_map(|&f| facets.starts(f)).collect();
+    used.par_sort_unstable();
+    used.dedup();
+    used
+}
+
+/// [`distinct_corners`] by a flag per vertex.
+fn flagged_corners<F: Facets + ?Sized>(n: usize, facets: &F, ids: &[usize]) -> Vec<u32> {
+    let mut flag = vec![false; n];
+    for &f in ids {
+        for v in facets.starts(f) {
+            flag[v as usize] = true;
+        }
+    }
+    (0..n as u32).filter(|&v| flag[v as usize]).collect()
 }
 
 /// Where the defects near a focus lie: the intersecting facet pairs and
@@ -689,6 +718,22 @@ mod tests {
     /// facets by position alone saw no change and kept a result with
     /// twelve edges used four times each; the vertex counts per position
     /// now mark those facets changed, and the guard hands the input back.
+    #[test]
+    fn both_ways_of_listing_corners_agree() {
+        let mut rng = test_support::rng::SplitMix64::new(21);
+        for n in [1usize, 7, 100, 3000] {
+            let tris: Vec<[u32; 3]> = (0..2 * n)
+                .map(|_| std::array::from_fn(|_| (rng.unit() * n as f64) as u32 % n as u32))
+                .collect();
+            for keep in [0.0, 0.01, 0.3, 1.0] {
+                let ids: Vec<usize> = (0..tris.len()).filter(|_| rng.unit() < keep).collect();
+                let sorted = sorted_corners(tris.as_slice(), &ids);
+                assert_eq!(sorted, flagged_corners(n, tris.as_slice(), &ids));
+                assert_eq!(sorted, distinct_corners(n, tris.as_slice(), &ids));
+            }
+        }
+    }
+
     #[test]
     fn welding_coincident_vertices_is_a_change_the_guard_sees() {
         use crate::{smooth_mesh, SmoothOptions};
