@@ -737,25 +737,11 @@ mod tests {
     #[test]
     fn welding_coincident_vertices_is_a_change_the_guard_sees() {
         use crate::{smooth_mesh, SmoothOptions};
-        use topology::Facet;
-        let corners = (0..8u32).map(|k| [k & 1, (k >> 1) & 1, (k >> 2) & 1].map(f64::from));
-        let vertices: Vec<Point3> = corners.clone().chain(corners).collect();
-        let sides = [
-            [1, 3, 2, 0],
-            [6, 7, 5, 4],
-            [4, 5, 1, 0],
-            [3, 7, 6, 2],
-            [2, 6, 4, 0],
-            [5, 7, 3, 1],
-        ];
-        let facets = [0u32, 8]
-            .iter()
-            .flat_map(|&o| {
-                sides
-                    .iter()
-                    .map(move |l| Facet::from_loop(&l.map(|v: u32| v + o)))
-            })
-            .collect();
+        // Two unit cubes at one place, each with its own vertices.
+        let (mut vertices, mut facets) = (Vec::new(), Vec::new());
+        for _ in 0..2 {
+            test_support::shapes::push_box(&mut vertices, &mut facets, [0.0; 3], [1.0; 3], false);
+        }
         let m = PolygonMesh::new(vertices, facets);
         let manifold = |m: &PolygonMesh| m.manifold_report().unwrap().non_manifold_edges.len();
         let tol = 2f64.powi(-48);
