@@ -27,6 +27,7 @@ fuzz_target!(|input: CsgInput| {
         let options = CsgOptions {
             triangulate,
             contacts: Some(0.0),
+            raw_intermediates: false,
         };
         let Ok(out) = evaluate_csg(&tree, options) else {
             return;

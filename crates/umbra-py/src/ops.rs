@@ -324,6 +324,7 @@ pub fn csg<'py>(
         let options = CsgOptions {
             triangulate,
             contacts: smooth,
+            raw_intermediates: false,
         };
         let result = evaluate_csg(&node, options).map_err(|e| e.to_string())?;
         let Some(opts) = opts else {

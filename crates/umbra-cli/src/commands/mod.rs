@@ -111,8 +111,9 @@ pub fn smooth_result(
 }
 
 /// The evaluation options of `umbra csg` and `umbra demo`: the variant,
-/// and contacts gathered for [`smooth_result`] unless smoothing is off
-/// (`--smooth 0`).
+/// contacts gathered for [`smooth_result`] unless smoothing is off
+/// (`--smooth 0`), and intermediate results cleaned exactly (the root's
+/// result is written raw with `--smooth 0`).
 pub fn csg_options(triangulate: bool, smooth: Option<f64>) -> umbra::CsgOptions {
     umbra::CsgOptions {
         triangulate,
@@ -120,6 +121,7 @@ pub fn csg_options(triangulate: bool, smooth: Option<f64>) -> umbra::CsgOptions 
             Some(t) if t <= 0.0 => None,
             t => Some(t.unwrap_or(0.0)),
         },
+        raw_intermediates: false,
     }
 }
 

@@ -10,6 +10,7 @@
 //! whole: every vertex a Boolean of the tree created, and every sliver or
 //! gap between its operands, lies in one of those boxes.
 
+use super::clean;
 use super::error::ModelError;
 use super::primitives::{cuboid, cylinder, torus, uv_sphere};
 use super::transform::{transform_mesh, transform_triangles};
@@ -47,6 +48,16 @@ pub struct CsgOptions {
     /// smaller than the result; [`Contacts::proximity`] of the result says
     /// what was reached.
     pub contacts: Option<f64>,
+    /// Feed every Boolean's raw output to the next Boolean as it is. By
+    /// default (`false`) an intermediate result with an edge of length
+    /// zero (coincident vertices, which degenerate contacts leave) is
+    /// first cleaned exactly near its contacts: smoothing at tolerance 0,
+    /// which merges vertices at one position and removes zero-area facets
+    /// without moving any point, so that chains of operations do not
+    /// grow (the module `clean`). The root's own result is never cleaned:
+    /// with `raw_intermediates` or not, it is what the last Boolean
+    /// returned.
+    pub raw_intermediates: bool,
 }
 
 /// The least proximity at which a Boolean of a tree gathers contacts
@@ -88,6 +99,9 @@ pub struct CsgReport {
     pub booleans: usize,
     /// The number of leaves.
     pub leaves: usize,
+    /// Intermediate results cleaned exactly before they fed the next
+    /// Boolean ([`CsgOptions::raw_intermediates`]).
+    pub cleaned: usize,
     /// The rayon threads available.
     pub threads: usize,
     /// The output's vertex count.
@@ -231,7 +245,7 @@ pub struct CsgResult {
 }
 
 /// A solid in the variant being evaluated.
-enum Solid {
+pub(super) enum Solid {
     Poly(PolygonMesh),
     Tri(TriangleMesh),
 }
@@ -256,6 +270,8 @@ impl Solid {
 /// node's frame before its own transform.
 struct Part {
     solid: Solid,
+    /// A Boolean's output not yet cleaned (module `clean`).
+    raw: bool,
     /// The contact boxes ([`Contacts::boxes`]).
     boxes: Vec<[Point3; 2]>,
     /// The least distance by which those boxes are grown, measured in the
@@ -267,6 +283,7 @@ impl Part {
     fn new(solid: Solid) -> Part {
         Part {
             solid,
+            raw: false,
             boxes: Vec::new(),
             margin: f64::INFINITY,
         }
@@ -337,9 +354,29 @@ struct Ctx<'a> {
     done: AtomicUsize,
     progress: Option<&'a (dyn Fn(usize, usize) + Sync)>,
     nodes: Mutex<Vec<(Vec<usize>, NodeReport)>>,
+    /// Intermediate results cleaned (module `clean`).
+    cleaned: AtomicUsize,
 }
 
 impl Ctx<'_> {
+    /// `part` as an operand of a Boolean: a raw Boolean output with an
+    /// edge of length zero cleaned exactly near its contacts, unless
+    /// [`CsgOptions::raw_intermediates`].
+    fn operand(&self, mut part: Part) -> Part {
+        if part.raw
+            && !self.options.raw_intermediates
+            && !part.boxes.is_empty()
+            && clean::needs_cleaning(&part.solid)
+        {
+            if let Some(solid) = clean::cleaned(&part.solid, &part.boxes) {
+                part.solid = solid;
+                self.cleaned.fetch_add(1, Ordering::Relaxed);
+            }
+        }
+        part.raw = false;
+        part
+    }
+
     /// The Boolean of two parts at a node whose result reaches the root's
     /// frame through a linear part with [`inverse_norm_bound`] `inv`,
     /// gathering its contacts when asked.
@@ -355,17 +392,22 @@ impl Ctx<'_> {
             node: path_string(path),
             source,
         };
+        let (a, b) = (self.operand(a), self.operand(b));
+        let least =
+            (CONTACT_RELATIVE_PROXIMITY * a.extent().max(b.extent())).max(f64::MIN_POSITIVE);
         // The proximity here: the wanted one carried back from the root's
         // frame, and at least the relative one; none when the transforms
-        // above cannot carry a distance back.
-        let proximity = self.options.contacts.and_then(|want| {
-            // The factors keep the reached margin (below) at least `want`
-            // whatever the rounding of these products.
-            let local = (want.max(0.0) * inv * (1.0 + 1e-11))
-                .max(CONTACT_RELATIVE_PROXIMITY * a.extent().max(b.extent()))
-                .max(f64::MIN_POSITIVE);
-            (local.is_finite() && inv.is_finite()).then_some(local)
-        });
+        // above cannot carry a distance back. Without contacts asked for,
+        // the least one, for the clean-up of the result (module `clean`).
+        let proximity = match self.options.contacts {
+            Some(want) => {
+                // The factors keep the reached margin (below) at least
+                // `want` whatever the rounding of these products.
+                let local = (want.max(0.0) * inv * (1.0 + 1e-11)).max(least);
+                (local.is_finite() && inv.is_finite()).then_some(local)
+            }
+            None => (!self.options.raw_intermediates && least.is_finite()).then_some(least),
+        };
         let (solid, contacts) = match (a.solid, b.solid, proximity) {
             (Solid::Poly(x), Solid::Poly(y), None) => (
                 Solid::Poly(boolean_mesh(&x, &y, op).map_err(err)?.mesh),
@@ -407,6 +449,7 @@ impl Ctx<'_> {
         }
         Ok(Part {
             solid,
+            raw: true,
             boxes,
             margin,
         })
@@ -518,6 +561,7 @@ impl Ctx<'_> {
                 };
                 Part {
                     solid,
+                    raw: part.raw,
                     boxes: part
                         .boxes
                         .into_iter()
@@ -621,6 +665,7 @@ pub fn evaluate_csg_with_progress(
         done: AtomicUsize::new(0),
         progress,
         nodes: Mutex::new(Vec::new()),
+        cleaned: AtomicUsize::new(0),
     };
     let part = ctx.eval(root, &[], &DMat4::IDENTITY)?;
     let contacts =
@@ -644,6 +689,7 @@ pub fn evaluate_csg_with_progress(
         },
         booleans: ctx.done.load(Ordering::SeqCst),
         leaves: root.leaf_count(),
+        cleaned: ctx.cleaned.load(Ordering::SeqCst),
         threads: rayon::current_num_threads(),
         vertices: mesh.vertices.len(),
         facets: mesh.facets.len(),

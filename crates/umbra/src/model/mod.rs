@@ -5,6 +5,7 @@
 //! evaluated with the 3D Boolean ([`evaluate_csg`]), and a demo scene
 //! ([`demo_plant`]).
 
+mod clean;
 mod demo;
 mod error;
 mod eval;

@@ -9,6 +9,7 @@ mod formats;
 mod garbage;
 mod garbage_formats;
 mod inspection;
+mod model_chain_clean;
 mod model_clean;
 mod model_contacts;
 mod model_csg;

@@ -37,6 +37,7 @@ fn assert_clean(tree: &CsgNode, what: &str) -> ([f64; 2], usize) {
             CsgOptions {
                 triangulate,
                 contacts: None,
+                raw_intermediates: false,
             },
         )
         .unwrap();
@@ -157,6 +158,7 @@ fn triangle_variant_rounding_is_smoothed_away() {
         CsgOptions {
             triangulate: true,
             contacts: None,
+            raw_intermediates: false,
         },
     )
     .unwrap();

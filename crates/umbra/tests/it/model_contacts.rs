@@ -37,6 +37,7 @@ fn near_equals_whole(tree: &CsgNode, coarse: Option<f64>, what: &str) -> usize {
         let options = CsgOptions {
             triangulate,
             contacts: Some(coarse.unwrap_or(0.0)),
+            raw_intermediates: false,
         };
         let out = evaluate_csg(tree, options).unwrap();
         let what = format!("{what} (triangulate {triangulate})");
@@ -164,6 +165,7 @@ fn proximity_reaches_what_is_asked_and_small_parts_say_so() {
             CsgOptions {
                 triangulate: false,
                 contacts: Some(want),
+                raw_intermediates: false,
             },
         )
         .unwrap();
@@ -174,6 +176,7 @@ fn proximity_reaches_what_is_asked_and_small_parts_say_so() {
     let opts = CsgOptions {
         triangulate: false,
         contacts: Some(0.0),
+        raw_intermediates: false,
     };
     assert!(evaluate_csg(&leaf, opts).unwrap().contacts.is_none());
     assert!(evaluate_csg(&tree, CsgOptions::default())
@@ -299,6 +302,7 @@ fn random_trees_smooth_near_contacts_as_whole() {
                 CsgOptions {
                     triangulate,
                     contacts: Some(coarse),
+                    raw_intermediates: false,
                 },
             )
             .unwrap();

@@ -159,6 +159,7 @@ fn every_shipped_example_evaluates_to_a_valid_closed_solid() {
                 CsgOptions {
                     triangulate,
                     contacts: None,
+                    raw_intermediates: false,
                 },
             )
             .unwrap();
@@ -185,6 +186,7 @@ fn triangle_variant_agrees_with_the_polygon_variant() {
         CsgOptions {
             triangulate: true,
             contacts: None,
+            raw_intermediates: false,
         },
     )
     .unwrap();
@@ -632,7 +634,7 @@ proptest::proptest! {
         let script = format!(r#"{{"op": "{op}", "children": [{}]}}"#, children.join(","));
         let tree = parse_csg(&script).unwrap();
         for triangulate in [false, true] {
-            let out = evaluate_csg(&tree, CsgOptions { triangulate, contacts: None }).unwrap();
+            let out = evaluate_csg(&tree, CsgOptions { triangulate, contacts: None, raw_intermediates: false }).unwrap();
             proptest::prop_assert!(out.report.topologically_valid);
             // Intersection points are interpolated in f64 (eq. 4.2-4.6), so
             // the volume may differ from the exact one in the last bits.
