@@ -323,14 +323,31 @@ fn cut<F: Facets + ?Sized>(pos: &[Point3], facets: &F, region: &[bool]) -> Cut {
 /// The global index of every vertex of a smoothed region: the input
 /// vertex at the same position (smoothing keeps every surviving input
 /// vertex where it was, and leaves no two vertices at one position), or a
-/// new index from `next` for a created vertex. `None` when two input
-/// vertices of the region share a position (then positions do not name
-/// vertices and the region cannot be put back this way).
+/// new index from `next` for a created vertex. Where several input
+/// vertices of the region share a position (coincident vertices, which
+/// smoothing merges into one), the output vertex there is the one on the
+/// cut when one of them is (the frozen half-edges name it), else the one
+/// of least index; the others are no longer used. `None` when two of them
+/// are on the cut (the region cannot be put back this way: it grows).
 fn place(out: &[Point3], cut: &Cut, next: &mut u32) -> Option<Vec<u32>> {
+    let on_cut: FxHashSet<u32> = cut.frozen.iter().flat_map(|&(s, e)| [s, e]).collect();
     let mut at: HashMap<[u64; 3], u32> = HashMap::with_capacity(cut.global.len());
     for (i, p) in cut.sub.vertices.iter().enumerate() {
-        if at.insert(p.map(f64::to_bits), cut.global[i]).is_some() {
-            return None;
+        let v = cut.global[i];
+        match at.entry(p.map(f64::to_bits)) {
+            std::collections::hash_map::Entry::Vacant(slot) => {
+                slot.insert(v);
+            }
+            std::collections::hash_map::Entry::Occupied(mut slot) => {
+                let w = *slot.get();
+                let keep = match (on_cut.contains(&w), on_cut.contains(&v)) {
+                    (true, true) => return None,
+                    (true, false) => w,
+                    (false, true) => v,
+                    (false, false) => w.min(v),
+                };
+                slot.insert(keep);
+            }
         }
     }
     Some(
@@ -678,4 +695,58 @@ pub fn smooth_triangles_near(
         crate::sanity_check_triangles(&shape, options.tolerance)?;
     }
     Ok(Smoothed { shape, report })
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use boolean_3d::{boolean_triangles_with_contacts, BooleanOp};
+    use test_support::shapes::{box_triangles, uv_sphere};
+
+    fn cut_with(frozen: Vec<(u32, u32)>) -> Cut {
+        let (p, q) = ([1.0, 2.0, 3.0], [4.0, 5.0, 6.0]);
+        Cut {
+            sub: PolygonMesh::new(vec![p, q, p], Vec::new()),
+            global: vec![7, 9, 5],
+            frozen,
+        }
+    }
+
+    #[test]
+    fn coincident_input_vertices_are_placed_as_the_one_on_the_cut() {
+        let out = [[1.0, 2.0, 3.0], [4.0, 5.0, 6.0], [0.0; 3]];
+        let mut next = 100;
+        // Neither on the cut: the least index; a new position: a new one.
+        assert_eq!(
+            place(&out, &cut_with(vec![]), &mut next),
+            Some(vec![5, 9, 100])
+        );
+        let mut next = 100;
+        assert_eq!(
+            place(&out, &cut_with(vec![(7, 9)]), &mut next),
+            Some(vec![7, 9, 100])
+        );
+        // Both on the cut: the region cannot be put back by position.
+        assert_eq!(
+            place(&out, &cut_with(vec![(7, 9), (9, 5)]), &mut next),
+            None
+        );
+    }
+
+    /// The raw output of a Boolean that meets in a degenerate way (a
+    /// sphere centred on a cube's corner, its pole on the cube's edge and
+    /// its meridians in the faces) has coincident vertices; at tolerance
+    /// 0 the region merges them and is put back, without whole smoothing.
+    #[test]
+    fn a_region_with_coincident_vertices_is_put_back() {
+        let a = box_triangles([-1.0; 3], [1.0; 3]);
+        let s = uv_sphere([1.0, 1.0, -1.0], 0.3, 16, 8);
+        let (out, c) = boolean_triangles_with_contacts(&a, &s, BooleanOp::Difference, 0.0).unwrap();
+        let m = &out.mesh;
+        let mut seen = FxHashSet::default();
+        assert!(m.vertices.iter().any(|p| !seen.insert(p.map(f64::to_bits))));
+        let exact = SmoothOptions::new(0.0);
+        let outcome = smooth_region(&m.vertices, m.triangles.as_slice(), &exact, &c.boxes, true);
+        assert!(matches!(outcome, Ok(Outcome::Smoothed { .. })));
+    }
 }

@@ -13,7 +13,7 @@ use smooth::{
     smooth_triangles_near, SmoothError, SmoothOptions,
 };
 use test_support::canonical;
-use test_support::shapes::{box_mesh, box_triangles, icosphere};
+use test_support::shapes::{box_mesh, box_triangles, icosphere, uv_sphere};
 use topology::{Facet, Point3, PolygonMesh};
 
 const DELTA: f64 = 1e-5;
@@ -124,6 +124,40 @@ fn spheres_agree_with_whole_smoothing_at_several_tolerances() {
             assert_eq!(near.report.counts, whole.report.counts, "{op:?} at {tol}");
         }
     }
+}
+
+/// Exact clean-up (tolerance 0) of Booleans that meet in degenerate ways:
+/// spheres centred on a cube's corners, their poles on its edges and
+/// their meridians in its faces, so the raw outputs hold coincident
+/// vertices, which the region path merges and puts back (one of them
+/// stays, the one on the cut if any) instead of handing the mesh to whole
+/// smoothing. The result is whole smoothing's, with no point moved.
+#[test]
+fn coincident_vertices_at_degenerate_contacts_are_merged_near_them() {
+    let exact = SmoothOptions::new(0.0);
+    let mut a = box_triangles([-1.0; 3], [1.0; 3]);
+    let mut merged_somewhere = false;
+    for (k, r) in [0.3, 0.45, 0.3].into_iter().enumerate() {
+        let c = [if k % 2 == 0 { 1.0 } else { -1.0 }, 1.0, -1.0];
+        let sphere = uv_sphere(c, r, 16, 8);
+        let (out, contacts) =
+            boolean_triangles_with_contacts(&a, &sphere, BooleanOp::Difference, 0.0).unwrap();
+        let whole = smooth_triangles(&out.mesh, &exact).unwrap();
+        let near = smooth_triangles_near(&out.mesh, &exact, &contacts.boxes).unwrap();
+        sanity_check_triangles(&near.shape, 0.0).unwrap();
+        assert_eq!(
+            canonical::triangles(&near.shape),
+            canonical::triangles(&whole.shape),
+            "step {k}"
+        );
+        assert_eq!(near.report.counts, whole.report.counts, "step {k}");
+        assert_eq!(near.report.distortion_bound, 0.0);
+        let volume = |m: &topology::TriangleMesh| m.signed_volume();
+        assert!((volume(&near.shape) - volume(&out.mesh)).abs() <= 1e-12 * volume(&out.mesh));
+        merged_somewhere |= near.report.counts.vertices_merged > 0;
+        a = near.shape;
+    }
+    assert!(merged_somewhere, "the contacts were not degenerate");
 }
 
 #[test]

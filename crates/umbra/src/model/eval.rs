@@ -270,9 +270,12 @@ impl Solid {
 /// node's frame before its own transform.
 struct Part {
     solid: Solid,
-    /// A Boolean's output not yet cleaned (module `clean`).
-    raw: bool,
-    /// The contact boxes ([`Contacts::boxes`]).
+    /// For a Boolean's output not yet cleaned (module `clean`), the
+    /// contact boxes of that Boolean alone: everything it created lies
+    /// in them, and the parts below were cleaned before it ran.
+    raw: Option<Vec<[Point3; 2]>>,
+    /// The contact boxes of every Boolean below ([`Contacts::boxes`]),
+    /// when [`CsgOptions::contacts`] asked for them.
     boxes: Vec<[Point3; 2]>,
     /// The least distance by which those boxes are grown, measured in the
     /// root's frame (infinite when no Boolean ran below).
@@ -283,7 +286,7 @@ impl Part {
     fn new(solid: Solid) -> Part {
         Part {
             solid,
-            raw: false,
+            raw: None,
             boxes: Vec::new(),
             margin: f64::INFINITY,
         }
@@ -363,17 +366,17 @@ impl Ctx<'_> {
     /// edge of length zero cleaned exactly near its contacts, unless
     /// [`CsgOptions::raw_intermediates`].
     fn operand(&self, mut part: Part) -> Part {
-        if part.raw
-            && !self.options.raw_intermediates
-            && !part.boxes.is_empty()
-            && clean::needs_cleaning(&part.solid)
-        {
-            if let Some(solid) = clean::cleaned(&part.solid, &part.boxes) {
-                part.solid = solid;
-                self.cleaned.fetch_add(1, Ordering::Relaxed);
+        if let Some(fresh) = part.raw.take() {
+            if !self.options.raw_intermediates
+                && !fresh.is_empty()
+                && clean::needs_cleaning(&part.solid)
+            {
+                if let Some(solid) = clean::cleaned(&part.solid, &fresh) {
+                    part.solid = solid;
+                    self.cleaned.fetch_add(1, Ordering::Relaxed);
+                }
             }
         }
-        part.raw = false;
         part
     }
 
@@ -436,10 +439,14 @@ impl Ctx<'_> {
         // Without contacts (not asked, or the transforms above are
         // singular) the margin is 0: the result's contacts serve nothing.
         let mut margin = a.margin.min(b.margin);
+        let mut fresh = None;
         match contacts {
             Some(c) => {
                 margin = margin.min(c.proximity / inv * (1.0 - 1e-12));
-                boxes.extend(c.boxes);
+                if self.options.contacts.is_some() {
+                    boxes.extend_from_slice(&c.boxes);
+                }
+                fresh = Some(c.boxes);
             }
             None => margin = 0.0,
         }
@@ -449,7 +456,7 @@ impl Ctx<'_> {
         }
         Ok(Part {
             solid,
-            raw: true,
+            raw: fresh,
             boxes,
             margin,
         })
@@ -561,7 +568,9 @@ impl Ctx<'_> {
                 };
                 Part {
                     solid,
-                    raw: part.raw,
+                    raw: part
+                        .raw
+                        .map(|fresh| fresh.into_iter().map(|b| transform_box(&m, b)).collect()),
                     boxes: part
                         .boxes
                         .into_iter()
