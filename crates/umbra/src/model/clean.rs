@@ -13,58 +13,96 @@
 //! (a cube whose corners are carved by 40 spheres, one at a time: 1,866
 //! triangles against the 524 of the shape).
 //!
-//! The clean-up is data smoothing (Appendix A) at tolerance 0, only near
-//! the Boolean's contacts: vertices at one position are merged, edges are
-//! cracked at vertices exactly on them, zero-length edges, empty and
-//! opposite coincident facets are removed. No point moves (the distortion
-//! bound is 0), so the shape is the same point set, and smoothing keeps
-//! the closure constraints of section 4.2. It runs only when the result
-//! has a zero-length edge, which a Boolean without such coincidences never
-//! leaves; the check is one pass over the facets.
+//! The clean-up is data smoothing (Appendix A) only near the Boolean's
+//! contacts, at the rounding tolerance `16 u L` (`u` the unit roundoff,
+//! `L` the largest coordinate magnitude): vertices at one position are
+//! merged, edges are cracked at vertices on them, zero-length edges,
+//! empty and opposite coincident facets (the touching faces of parts
+//! united face to face) are removed. At tolerance 0 the merges alone
+//! happen: the facets' fitted planes put exactly coplanar points a few
+//! roundings away, so touching faces would stay, joined at merged
+//! vertices into non-manifold edges. No point moves by more than that
+//! tolerance, below the error bound of the Boolean's own intersection
+//! points (`sqrt(153) u L`, section 8.3), so the solid is the same up to
+//! the Boolean's rounding, and smoothing keeps the closure constraints of
+//! section 4.2. It runs only when the result has two vertices at one
+//! position, which a Boolean without such coincidences never leaves; the
+//! check is one hashing pass over the vertices.
 
 use super::eval::Solid;
 use crate::{smooth_mesh_near, smooth_triangles_near, SmoothOptions};
 use robust_arith::Point3;
+use rustc_hash::FxHashSet;
 use topology::{PolygonMesh, TriangleMesh};
 
-/// Whether vertices `a` and `b` of `vertices` lie at one position (an
-/// index past the vertices is at none).
-fn same_position(vertices: &[Point3], a: u32, b: u32) -> bool {
-    match (vertices.get(a as usize), vertices.get(b as usize)) {
-        (Some(p), Some(q)) => p == q,
-        _ => false,
-    }
+/// Whether two vertices lie at one position (`-0.0` and `0.0` are one
+/// coordinate: they are at distance 0 for smoothing).
+fn coincident_vertices(vertices: &[Point3]) -> bool {
+    let mut seen: FxHashSet<[u64; 3]> =
+        FxHashSet::with_capacity_and_hasher(vertices.len(), Default::default());
+    vertices
+        .iter()
+        .any(|p| !seen.insert(p.map(|x| (x + 0.0).to_bits())))
 }
 
-/// Whether a triangle has two corners at one position.
-fn triangles_have_zero_length_edge(mesh: &TriangleMesh) -> bool {
-    let same = |a, b| same_position(&mesh.vertices, a, b);
+/// Whether a triangle has a corner twice.
+fn triangles_repeat_a_corner(mesh: &TriangleMesh) -> bool {
     mesh.triangles
         .iter()
-        .any(|&[a, b, c]| same(a, b) || same(b, c) || same(c, a))
+        .any(|&[a, b, c]| a == b || b == c || c == a)
 }
 
-/// Whether a half-edge runs between two vertices at one position.
-fn polygons_have_zero_length_edge(mesh: &PolygonMesh) -> bool {
+/// Whether a half-edge runs from a vertex to itself.
+fn polygons_have_a_loop(mesh: &PolygonMesh) -> bool {
     mesh.facets
         .iter()
         .flat_map(|f| f.half_edges.iter())
-        .any(|h| same_position(&mesh.vertices, h.start, h.end))
+        .any(|h| h.start == h.end)
 }
 
-/// Whether `solid` has an edge of length zero: what the clean-up removes.
+/// Whether `solid` has two vertices at one position or an edge from a
+/// vertex to itself: what the clean-up removes. Degenerate contacts leave
+/// both: coincident vertices joined by zero-length edges where a vertex
+/// lies on the other operand's edge or facet, and unjoined ones where
+/// facets touch (parts sharing a face come out of a union as two shells,
+/// the touching faces kept).
 pub(super) fn needs_cleaning(solid: &Solid) -> bool {
     match solid {
-        Solid::Poly(m) => polygons_have_zero_length_edge(m),
-        Solid::Tri(m) => triangles_have_zero_length_edge(m),
+        Solid::Poly(m) => coincident_vertices(&m.vertices) || polygons_have_a_loop(m),
+        Solid::Tri(m) => coincident_vertices(&m.vertices) || triangles_repeat_a_corner(m),
     }
 }
 
-/// `solid` smoothed at tolerance 0 near `contacts` (module docs), or
-/// `None` when smoothing refused it (the raw result then goes on: it is a
-/// valid operand as it is).
+/// The clean-up's tolerance for coordinates of magnitude at most `max`:
+/// `16 u max` (`u` the unit roundoff), below the error bound of the
+/// Boolean's own intersection points (`sqrt(153) u L`, section 8.3) when
+/// `L` is the least power of two at least `max`.
+fn rounding_tolerance(max: f64) -> f64 {
+    let t = 8.0 * f64::EPSILON * max;
+    if t.is_finite() {
+        t
+    } else {
+        0.0
+    }
+}
+
+/// The largest coordinate magnitude of `vertices` (0 for none).
+fn max_abs(vertices: &[Point3]) -> f64 {
+    vertices
+        .iter()
+        .flatten()
+        .fold(0.0f64, |m, &x| m.max(x.abs()))
+}
+
+/// `solid` smoothed near `contacts` at the rounding tolerance
+/// ([`rounding_tolerance`], module docs), or `None` when smoothing refused
+/// it (the raw result then goes on: it is a valid operand as it is).
 pub(super) fn cleaned(solid: &Solid, contacts: &[[Point3; 2]]) -> Option<Solid> {
-    let exact = SmoothOptions::new(0.0);
+    let vertices = match solid {
+        Solid::Poly(m) => &m.vertices,
+        Solid::Tri(m) => &m.vertices,
+    };
+    let exact = SmoothOptions::new(rounding_tolerance(max_abs(vertices)));
     match solid {
         Solid::Poly(m) => smooth_mesh_near(m, &exact, contacts)
             .ok()
@@ -81,23 +119,28 @@ mod tests {
     use topology::Facet;
 
     #[test]
-    fn zero_length_edges_are_found_by_position_not_by_index() {
+    fn coincident_vertices_and_loops_are_found() {
         let mut t = TriangleMesh {
-            vertices: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0], [1.0, 0.0, 0.0]],
+            vertices: vec![[0.0; 3], [1.0, 0.0, 0.0], [0.0, 1.0, 0.0]],
             triangles: vec![[0, 1, 2]],
         };
-        assert!(!triangles_have_zero_length_edge(&t));
-        t.triangles.push([1, 3, 2]);
-        assert!(triangles_have_zero_length_edge(&t));
-        // An index past the vertices is no edge of length zero.
-        t.triangles = vec![[0, 9, 10]];
-        assert!(!triangles_have_zero_length_edge(&t));
+        assert!(!needs_cleaning(&Solid::Tri(t.clone())));
+        // A second vertex at a position, joined to nothing: found.
+        t.vertices.push([1.0, 0.0, 0.0]);
+        assert!(needs_cleaning(&Solid::Tri(t.clone())));
+        // -0.0 and 0.0 are one coordinate.
+        t.vertices[3] = [-0.0, 0.0, 0.0];
+        assert!(needs_cleaning(&Solid::Tri(t.clone())));
+        t.vertices[3] = [0.5, 0.5, 0.0];
+        assert!(!needs_cleaning(&Solid::Tri(t.clone())));
+        t.triangles.push([1, 1, 2]);
+        assert!(needs_cleaning(&Solid::Tri(t.clone())));
         let mut p = PolygonMesh {
             vertices: t.vertices.clone(),
             facets: vec![Facet::from_loop(&[0, 1, 2])],
         };
-        assert!(!polygons_have_zero_length_edge(&p));
-        p.facets.push(Facet::from_loop(&[0, 1, 3, 2]));
-        assert!(polygons_have_zero_length_edge(&p));
+        assert!(!needs_cleaning(&Solid::Poly(p.clone())));
+        p.facets.push(Facet::from_loop(&[0, 3, 3, 2]));
+        assert!(needs_cleaning(&Solid::Poly(p)));
     }
 }

@@ -49,11 +49,12 @@ pub struct CsgOptions {
     /// what was reached.
     pub contacts: Option<f64>,
     /// Feed every Boolean's raw output to the next Boolean as it is. By
-    /// default (`false`) an intermediate result with an edge of length
-    /// zero (coincident vertices, which degenerate contacts leave) is
-    /// first cleaned exactly near its contacts: smoothing at tolerance 0,
-    /// which merges vertices at one position and removes zero-area facets
-    /// without moving any point, so that chains of operations do not
+    /// default (`false`) an intermediate result with two vertices at one
+    /// position (what degenerate contacts leave) is first cleaned near
+    /// the contacts of the Boolean that made it: smoothing at the rounding
+    /// tolerance `16 u L`, which merges coincident vertices and removes
+    /// zero-area and touching facets while moving no point by more than
+    /// the Boolean's own rounding, so that chains of operations do not
     /// grow (the module `clean`). The root's own result is never cleaned:
     /// with `raw_intermediates` or not, it is what the last Boolean
     /// returned.

@@ -9,7 +9,8 @@
 //! Oracles: the same shape computed directly (the cube minus only the
 //! large spheres) has the real complexity of the result, and the raw
 //! chain (every Boolean's output fed on as it is) has the same volume as
-//! the cleaned one, since the clean-up moves no point.
+//! the cleaned one, since the clean-up moves no point by more than the
+//! Boolean's own rounding.
 
 use umbra::{check_mesh, evaluate_csg, parse_csg, CsgOptions, CsgResult};
 
@@ -120,5 +121,34 @@ fn chains_without_degenerate_contacts_are_not_touched() {
         let raw = evaluate(&node, triangulate, true);
         assert_eq!(cleaned.report.cleaned, 0);
         assert_eq!(cleaned.mesh, raw.mesh);
+    }
+}
+
+#[test]
+fn parts_united_face_to_face_lose_their_touching_faces_between_booleans() {
+    // A 4 x 4 grid of unit cubes, one union node: every Boolean of the
+    // balanced tree unites parts that share faces, which the raw outputs
+    // keep as separate shells with their touching faces.
+    let cubes: Vec<String> = (0..16)
+        .map(|k| {
+            format!(
+                r#"{{"box": {{"size": [1, 1, 1]}}, "translate": [{}, {}, 0]}}"#,
+                k % 4,
+                k / 4
+            )
+        })
+        .collect();
+    let script = format!(r#"{{"op": "union", "children": [{}]}}"#, cubes.join(", "));
+    for triangulate in [true, false] {
+        let cleaned = evaluate(&script, triangulate, false);
+        let raw = evaluate(&script, triangulate, true);
+        assert_eq!(cleaned.report.cleaned, 14, "every Boolean but the root's");
+        assert_eq!(raw.mesh.facets.len(), 16 * if triangulate { 12 } else { 6 });
+        // The root unites two cleaned 4 x 2 slabs, whose inner faces are
+        // gone: at most two thirds of the raw tree's facets.
+        let (c, r) = (cleaned.mesh.facets.len(), raw.mesh.facets.len());
+        assert!(c * 3 <= r * 2, "cleaned {c}, raw {r}");
+        assert_eq!(cleaned.report.volume, 16.0);
+        assert_eq!(check_mesh(&cleaned.mesh).two_manifold, Some(true));
     }
 }
