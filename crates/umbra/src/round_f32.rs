@@ -206,9 +206,11 @@ fn collisions(exact: &[Point3], rounded: &[Point3]) -> Vec<[u32; 2]> {
 }
 
 /// The pairs of vertices at one position (each vertex paired with the
-/// first at its position; `-0.0` and `0.0` alike, as readers weld).
-fn coincident_pairs(vertices: &[Point3]) -> usize {
-    let mut seen = std::collections::HashSet::with_capacity(vertices.len());
+/// first at its position; `-0.0` and `0.0` alike, as readers weld and as
+/// smoothing merges). Also the CSG clean-up's trigger (`model/clean.rs`).
+pub(crate) fn coincident_pairs(vertices: &[Point3]) -> usize {
+    let mut seen: rustc_hash::FxHashSet<[u64; 3]> =
+        rustc_hash::FxHashSet::with_capacity_and_hasher(vertices.len(), Default::default());
     vertices
         .iter()
         .filter(|p| !seen.insert(p.map(|x| (x + 0.0).to_bits())))

@@ -112,8 +112,8 @@ pub fn smooth_result(
 
 /// The evaluation options of `umbra csg` and `umbra demo`: the variant,
 /// contacts gathered for [`smooth_result`] unless smoothing is off
-/// (`--smooth 0`), and intermediate results cleaned exactly (the root's
-/// result is written raw with `--smooth 0`).
+/// (`--smooth 0`), and intermediate results with coincident vertices
+/// cleaned (the root's result is written raw with `--smooth 0`).
 pub fn csg_options(triangulate: bool, smooth: Option<f64>) -> umbra::CsgOptions {
     umbra::CsgOptions {
         triangulate,

@@ -1,5 +1,5 @@
-//! The exact clean-up of a Boolean's result before it feeds the next
-//! Boolean of a CSG tree.
+//! The clean-up of a Boolean's result before it feeds the next Boolean of
+//! a CSG tree.
 //!
 //! Where the operands of a Boolean meet in a degenerate way (a vertex on
 //! the other's facet, an edge through the other's edge, coplanar facets:
@@ -30,20 +30,10 @@
 //! check is one hashing pass over the vertices.
 
 use super::eval::Solid;
+use crate::round_f32::coincident_pairs;
 use crate::{smooth_mesh_near, smooth_triangles_near, SmoothOptions};
 use robust_arith::Point3;
-use rustc_hash::FxHashSet;
 use topology::{PolygonMesh, TriangleMesh};
-
-/// Whether two vertices lie at one position (`-0.0` and `0.0` are one
-/// coordinate: they are at distance 0 for smoothing).
-fn coincident_vertices(vertices: &[Point3]) -> bool {
-    let mut seen: FxHashSet<[u64; 3]> =
-        FxHashSet::with_capacity_and_hasher(vertices.len(), Default::default());
-    vertices
-        .iter()
-        .any(|p| !seen.insert(p.map(|x| (x + 0.0).to_bits())))
-}
 
 /// Whether a triangle has a corner twice.
 fn triangles_repeat_a_corner(mesh: &TriangleMesh) -> bool {
@@ -68,8 +58,8 @@ fn polygons_have_a_loop(mesh: &PolygonMesh) -> bool {
 /// the touching faces kept).
 pub(super) fn needs_cleaning(solid: &Solid) -> bool {
     match solid {
-        Solid::Poly(m) => coincident_vertices(&m.vertices) || polygons_have_a_loop(m),
-        Solid::Tri(m) => coincident_vertices(&m.vertices) || triangles_repeat_a_corner(m),
+        Solid::Poly(m) => coincident_pairs(&m.vertices) > 0 || polygons_have_a_loop(m),
+        Solid::Tri(m) => coincident_pairs(&m.vertices) > 0 || triangles_repeat_a_corner(m),
     }
 }
 
@@ -86,23 +76,18 @@ fn rounding_tolerance(max: f64) -> f64 {
     }
 }
 
-/// The largest coordinate magnitude of `vertices` (0 for none).
-fn max_abs(vertices: &[Point3]) -> f64 {
-    vertices
-        .iter()
-        .flatten()
-        .fold(0.0f64, |m, &x| m.max(x.abs()))
-}
-
 /// `solid` smoothed near `contacts` at the rounding tolerance
 /// ([`rounding_tolerance`], module docs), or `None` when smoothing refused
 /// it (the raw result then goes on: it is a valid operand as it is).
 pub(super) fn cleaned(solid: &Solid, contacts: &[[Point3; 2]]) -> Option<Solid> {
-    let vertices = match solid {
-        Solid::Poly(m) => &m.vertices,
-        Solid::Tri(m) => &m.vertices,
+    let bounds = match solid {
+        Solid::Poly(m) => m.bounding_box(),
+        Solid::Tri(m) => m.bounding_box(),
     };
-    let exact = SmoothOptions::new(rounding_tolerance(max_abs(vertices)));
+    let max = bounds.map_or(0.0, |[lo, hi]| {
+        lo.iter().chain(&hi).fold(0.0f64, |m, &x| m.max(x.abs()))
+    });
+    let exact = SmoothOptions::new(rounding_tolerance(max));
     match solid {
         Solid::Poly(m) => smooth_mesh_near(m, &exact, contacts)
             .ok()

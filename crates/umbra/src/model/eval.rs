@@ -100,8 +100,8 @@ pub struct CsgReport {
     pub booleans: usize,
     /// The number of leaves.
     pub leaves: usize,
-    /// Intermediate results cleaned exactly before they fed the next
-    /// Boolean ([`CsgOptions::raw_intermediates`]).
+    /// Intermediate results cleaned before they fed the next Boolean
+    /// ([`CsgOptions::raw_intermediates`]).
     pub cleaned: usize,
     /// The rayon threads available.
     pub threads: usize,
@@ -363,9 +363,9 @@ struct Ctx<'a> {
 }
 
 impl Ctx<'_> {
-    /// `part` as an operand of a Boolean: a raw Boolean output with an
-    /// edge of length zero cleaned exactly near its contacts, unless
-    /// [`CsgOptions::raw_intermediates`].
+    /// `part` as an operand of a Boolean: a raw Boolean output with
+    /// coincident vertices cleaned near its contacts (module `clean`),
+    /// unless [`CsgOptions::raw_intermediates`].
     fn operand(&self, mut part: Part) -> Part {
         if let Some(fresh) = part.raw.take() {
             if !self.options.raw_intermediates

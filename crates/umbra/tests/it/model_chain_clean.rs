@@ -1,4 +1,4 @@
-//! The exact clean-up of intermediate results in CSG chains
+//! The clean-up of intermediate results in CSG chains
 //! (`CsgOptions::raw_intermediates`): a cube whose corners are carved by
 //! spheres centred on them, one difference at a time, first small ones
 //! and then larger ones that take every earlier crater away. The spheres'
